@@ -1,0 +1,53 @@
+#pragma once
+// A bat: a free-free beam cut into N slices of equal thickness L/N (physics.md §1-2).
+// Plain data plus the geometry and mass properties that follow from it; no I/O here.
+#include <string>
+#include <vector>
+
+namespace sweetspot {
+
+struct Material {
+  double density = 0;            // kg/m^3
+  double youngs_modulus = 0;     // Pa
+  double shear_modulus = 0;      // Pa
+  double shear_coefficient = 1;  // kappa; N2000 folds it into S (kappa = 1)
+};
+
+struct Bat {
+  std::string name;
+  double length = 0;                   // m
+  Material material;
+  std::vector<double> outer_diameter;  // m, one per slice, knob first
+  std::vector<double> inner_diameter;  // m, one per slice; empty for a solid bat
+
+  int slices() const { return static_cast<int>(outer_diameter.size()); }
+  double slice_thickness() const { return length / slices(); }
+  double slice_center(int i) const { return (i + 0.5) * slice_thickness(); }
+  bool hollow() const { return !inner_diameter.empty(); }
+
+  double area(int i) const;           // cross-section area of slice i
+  double second_moment(int i) const;  // area moment of inertia of slice i about its diameter
+  double slice_mass(int i) const { return material.density * area(i) * slice_thickness(); }
+  // Rotary inertia of slice i about its own transverse axis, as the Timoshenko model has it.
+  double slice_rotary_inertia(int i) const {
+    return material.density * second_moment(i) * slice_thickness();
+  }
+};
+
+// The same bat cut into n slices. Each new slice takes the overlap-weighted mean diameter of
+// the old slices it covers, so refining by a whole factor leaves the geometry exactly as it was.
+Bat resample(const Bat& bat, int n);
+
+// Mass properties of the sliced bat: the slices' masses at their centres plus their own rotary
+// inertia, which is exactly the inertia the Timoshenko rigid modes carry.
+struct MassProperties {
+  double mass = 0;               // kg
+  double z_cm = 0;               // m from the knob
+  double moment_of_inertia_cm = 0;  // kg m^2 about the centre of mass
+  double radius_of_gyration() const;  // about the centre of mass, m
+  double moment_of_inertia_about(double z) const;  // parallel-axis theorem
+};
+
+MassProperties mass_properties(const Bat& bat);
+
+}  // namespace sweetspot

@@ -1,0 +1,42 @@
+#pragma once
+// The normal modes of a free-free bat (physics.md §2): Timoshenko (symmetric K x = w^2 M x on
+// the slices) or Euler-Bernoulli (Hermite beam elements). Modes are mass-orthonormal; modes 0 and
+// 1 are the exact rigid modes (translation, rotation about the centre of mass) with omega = 0.
+#include <Eigen/Dense>
+#include <vector>
+
+#include "sweetspot/bat.hpp"
+
+namespace sweetspot {
+
+enum class BeamTheory { timoshenko, euler_bernoulli };
+
+struct ModalBasis {
+  BeamTheory theory = BeamTheory::timoshenko;
+  std::vector<double> z;   // slice centres, m from the knob
+  Eigen::VectorXd omega;   // angular frequencies, rad/s, ascending; omega(0) = omega(1) = 0
+  Eigen::MatrixXd psi;     // psi(i, n): transverse displacement of mode n at slice centre i
+  // Modal velocities of the rigid motion y' = 1 (unit translation) and y' = z - z_cm, phi' = -1
+  // (unit rotation about the centre of mass): a_n'(0) = v_cm * translation(n) + Omega * rotation(n).
+  Eigen::VectorXd translation;
+  Eigen::VectorXd rotation;
+  // Mass properties of the discretised bat, consistent with the rigid modes.
+  double mass = 0;
+  double z_cm = 0;
+  double moment_of_inertia_cm = 0;
+
+  int count() const { return static_cast<int>(omega.size()); }
+  int slices() const { return static_cast<int>(z.size()); }
+  // Vibrational frequencies in Hz (modes 2, 3, ...), ascending.
+  std::vector<double> vibrational_frequencies_hz() const;
+  // Zeros of psi_n between slice centres, found by linear interpolation, m from the knob.
+  std::vector<double> nodes(int n) const;
+};
+
+ModalBasis compute_modes(const Bat& bat, BeamTheory theory);
+
+const char* to_string(BeamTheory theory);
+// Throws InputError for anything but "timoshenko" or "euler-bernoulli".
+BeamTheory parse_beam_theory(const std::string& text);
+
+}  // namespace sweetspot
