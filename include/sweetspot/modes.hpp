@@ -16,6 +16,9 @@ struct ModalBasis {
   std::vector<double> z;   // slice centres, m from the knob
   Eigen::VectorXd omega;   // angular frequencies, rad/s, ascending; omega(0) = omega(1) = 0
   Eigen::MatrixXd psi;     // psi(i, n): transverse displacement of mode n at slice centre i
+  // Full mode vectors over the discretisation's degrees of freedom: Timoshenko (y_i, phi_i) per
+  // slice; Euler-Bernoulli (w_j, w'_j) per slice boundary. vectors^T M vectors = identity.
+  Eigen::MatrixXd vectors;
   // Modal velocities of the rigid motion y' = 1 (unit translation) and y' = z - z_cm, phi' = -1
   // (unit rotation about the centre of mass): a_n'(0) = v_cm * translation(n) + Omega * rotation(n).
   Eigen::VectorXd translation;
@@ -34,6 +37,9 @@ struct ModalBasis {
 };
 
 ModalBasis compute_modes(const Bat& bat, BeamTheory theory);
+
+// The discretisation's mass matrix M (diagonal for Timoshenko, consistent for Euler-Bernoulli).
+Eigen::MatrixXd beam_mass_matrix(const Bat& bat, BeamTheory theory);
 
 const char* to_string(BeamTheory theory);
 // Throws InputError for anything but "timoshenko" or "euler-bernoulli".

@@ -1,0 +1,66 @@
+#pragma once
+// The collision of a ball with a modal system (physics.md §4): the ball's nonlinear spring drives
+// modes a_n'' + omega_n^2 a_n = -F psi_n. The same integrator serves the bat (its kept modes at
+// the impact point), the rigid immovable wall (no modes at all) and the toy model of N2000 App. A.
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "sweetspot/ball.hpp"
+
+namespace sweetspot {
+
+// What the ball sees of the struck body. Modal coordinates are mass-orthonormal, so the energy is
+// sum 1/2 (a_n'^2 + omega_n^2 a_n^2); modes with omega = 0 are rigid motions.
+struct ModalContact {
+  Eigen::VectorXd omega;      // rad/s
+  Eigen::VectorXd psi;        // mode shapes at the contact point
+  Eigen::VectorXd velocity0;  // a_n'(0) at first touch (a_n(0) = 0)
+
+  int count() const { return static_cast<int>(omega.size()); }
+};
+
+struct CollisionOptions {
+  double dt = 5e-6;                // s, the RK4 step (N2000)
+  double window = 5e-3;            // s of free flight followed after each separation
+  double max_contact_time = 0.05;  // s; a contact lasting longer is reported as no separation
+  bool record_force = false;       // keep the force samples F(t) in the result
+};
+
+enum class CollisionStatus { ok, no_separation, non_finite, refused_step };
+const char* to_string(CollisionStatus status);
+
+struct ForceSample {
+  double t;      // s since first touch
+  double force;  // N
+  double rate;   // dF/dt, N/s
+};
+
+struct Collision {
+  CollisionStatus status = CollisionStatus::ok;
+  std::string message;         // why, when the status is not ok
+  double ball_velocity = 0;    // final, m/s, positive away from the bat
+  Eigen::VectorXd a, a_dot;    // final modal state
+  double contact_time = 0;     // s in contact, summed over contacts
+  double collision_time = 0;   // s from first touch until 99 % of the impulse is delivered
+  double u_max = 0;            // largest compression, m
+  double peak_force = 0;       // N
+  double impulse = 0;          // N s delivered to the ball
+  double dissipated = 0;       // J lost in the ball (loop areas of all contacts)
+  int contacts = 0;
+  double first_separation = 0;     // s, end of the first contact
+  std::vector<ForceSample> force;  // only with record_force
+
+  // Energy of mode n: 1/2 (a_n'^2 + omega_n^2 a_n^2).
+  double mode_energy(const ModalContact& body, int n) const;
+};
+
+// The largest stable RK4 step is 2.8 / omega_max; a larger one is refused, never integrated.
+inline constexpr double rk4_stability_limit = 2.8;
+
+Collision collide(const ModalContact& body, const Ball& ball, double ball_speed, const CollisionOptions& options);
+
+// Time at which a fraction of the impulse is delivered, from the force samples (cubic Hermite).
+double impulse_time(const std::vector<ForceSample>& force, double fraction);
+
+}  // namespace sweetspot

@@ -1,0 +1,45 @@
+#pragma once
+// One impact of a ball on a bat: the scene in, a plain result out (physics.md §4-5). Never throws
+// for a bad physical outcome: the status says what went wrong.
+#include <string>
+#include <vector>
+
+#include "sweetspot/collision.hpp"
+#include "sweetspot/modes.hpp"
+#include "sweetspot/scene.hpp"
+
+namespace sweetspot {
+
+// Energies in J. initial = ball + bat_translation + bat_rotation + vibration + ball_dissipated +
+// residual; the residual measures the integration error.
+struct ImpactEnergy {
+  double initial = 0;
+  double ball = 0;
+  double bat_translation = 0;
+  double bat_rotation = 0;
+  double vibration = 0;
+  double ball_dissipated = 0;
+  double residual = 0;
+};
+
+struct ImpactResult {
+  CollisionStatus status = CollisionStatus::ok;
+  std::string message;
+  double z = 0;               // snapped impact location, m from the knob
+  double vf = 0;              // exit speed, m/s, positive away from the bat
+  double e_eff = 0;           // effective COR
+  double contact_time = 0;    // s
+  double collision_time = 0;  // s, 99 % of the impulse
+  double u_max = 0;           // m
+  double peak_force = 0;      // N
+  double impulse = 0;         // N s
+  ImpactEnergy energy;
+  std::vector<double> mode_energy;  // J per kept vibrational mode (of the held bat when pivoted)
+  int contacts = 0;
+  std::vector<ForceSample> force;   // only when the scene records the force
+};
+
+// Validates the scene (InputError for bad input), then runs the collision.
+ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& scene);
+
+}  // namespace sweetspot

@@ -1,0 +1,48 @@
+#pragma once
+// One impact scene (physics.md §4, §6): where the ball hits, the ball, the bat's swing, whether the
+// bat is pivoted, which modes are kept and how the collision is integrated.
+#include "sweetspot/ball.hpp"
+#include "sweetspot/collision.hpp"
+#include "sweetspot/modes.hpp"
+
+namespace sweetspot {
+
+// The bat's rigid motion at first touch: v_bat(z) = V_cm + Omega (z - z_cm), +y toward the ball.
+// Given either by the centre-of-mass speed or by the point at rest (the rotation centre).
+struct Swing {
+  double omega = 0;           // rad/s
+  bool about_center = false;  // true: `center` is at rest; false: `cm_speed` is given
+  double cm_speed = 0;        // m/s
+  double center = 0;          // m from the knob
+};
+
+inline constexpr int all_modes = -1;
+
+struct ImpactScene {
+  double z = 0.7;             // impact location, m from the knob (snapped to a slice centre)
+  Ball ball;
+  double ball_speed = 40;     // m/s toward the bat
+  Swing swing;
+  bool pivoted = false;       // held at swing.center by a constraint force (N2000 Fig. 16)
+  int vibrational_modes = 18; // kept vibrational modes, or all_modes
+  CollisionOptions integrator;
+};
+
+// Throws InputError naming the offending scene value (z outside the bat, speeds not finite,
+// e0 outside (0, 1], a <= 0, k1 <= 0, dt <= 0, too many modes, pivot without a centre).
+void validate(const ImpactScene& scene, const ModalBasis& basis);
+
+// The scene as the collision sees it.
+struct SceneGeometry {
+  int slice = 0;            // struck slice
+  double z = 0;             // its centre: the snapped impact location
+  double pivot = 0;         // held point (pivoted scenes), m from the knob
+  double cm_speed = 0;      // V_cm, m/s
+  double bat_speed = 0;     // v_bat at the impact point, m/s
+  double recoil = 0;        // R0 of the rigid bat, free or pivoted (physics.md §5)
+  ModalContact contact;     // kept modes; for a pivoted bat, the modes of the constrained bat
+};
+
+SceneGeometry scene_geometry(const ImpactScene& scene, const ModalBasis& basis);
+
+}  // namespace sweetspot

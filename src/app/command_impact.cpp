@@ -1,0 +1,141 @@
+// sweetspot impact: one ball on one bat, everything N2000 derives from a collision.
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "commands.hpp"
+#include "json.hpp"
+#include "sweetspot/bat_file.hpp"
+#include "sweetspot/impact.hpp"
+#include "sweetspot/input_error.hpp"
+
+namespace sweetspot::app {
+
+namespace {
+
+struct ImpactOptions {
+  std::string bat_file;
+  std::string theory = "timoshenko";
+  int slices = 0;
+  std::optional<double> cm_speed, center;
+  std::string modes = "18";
+  bool json = false;
+  ImpactScene scene;
+};
+
+int parse_modes(const std::string& text) {
+  if (text == "all") return all_modes;
+  try {
+    std::size_t used = 0;
+    const int n = std::stoi(text, &used);
+    if (used == text.size() && n >= 0) return n;
+  } catch (const std::exception&) {
+  }
+  throw InputError("--modes " + text + ": expected a number of vibrational modes (0, 1, 2, ...) or 'all'");
+}
+
+Json energy_json(const ImpactEnergy& e) {
+  return Json::Object()
+      .add("initial", e.initial)
+      .add("ball", e.ball)
+      .add("bat_translation", e.bat_translation)
+      .add("bat_rotation", e.bat_rotation)
+      .add("vibration", e.vibration)
+      .add("ball_dissipated", e.ball_dissipated)
+      .add("residual", e.residual);
+}
+
+void print_json(const ImpactResult& r) {
+  Json::Object out;
+  out.add("status", to_string(r.status));
+  if (!r.message.empty()) out.add("message", r.message);
+  out.add("z", r.z)
+      .add("vf", r.vf)
+      .add("e_eff", r.e_eff)
+      .add("contact_time", r.contact_time)
+      .add("collision_time", r.collision_time)
+      .add("u_max", r.u_max)
+      .add("peak_force", r.peak_force)
+      .add("impulse", r.impulse)
+      .add("energy", energy_json(r.energy))
+      .add("mode_energy", Json::numbers(r.mode_energy))
+      .add("contacts", Json::integer(r.contacts));
+  std::printf("%s\n", Json(out).text().c_str());
+}
+
+void print_text(const ImpactResult& r) {
+  std::printf("status          %s%s%s\n", to_string(r.status), r.message.empty() ? "" : ": ", r.message.c_str());
+  std::printf("impact at z     %.4f m from the knob\n", r.z);
+  std::printf("exit speed vf   %.6g m/s\n", r.vf);
+  std::printf("e_eff           %.6g\n", r.e_eff);
+  std::printf("contact time    %.4g ms (%d contact%s)\n", 1e3 * r.contact_time, r.contacts, r.contacts == 1 ? "" : "s");
+  std::printf("collision time  %.4g ms (99 %% of the impulse)\n", 1e3 * r.collision_time);
+  std::printf("max compression %.4g mm, peak force %.5g N, impulse %.5g N s\n", 1e3 * r.u_max, r.peak_force, r.impulse);
+  const ImpactEnergy& e = r.energy;
+  std::printf("energy/J        initial %.6g = ball %.6g + bat translation %.6g + rotation %.6g\n", e.initial, e.ball,
+              e.bat_translation, e.bat_rotation);
+  std::printf("                + vibration %.6g + dissipated in the ball %.6g + residual %.3g\n", e.vibration,
+              e.ball_dissipated, e.residual);
+  std::printf("vibration/J by mode:");
+  for (std::size_t n = 0; n < r.mode_energy.size(); ++n) std::printf("%s%zu: %.4g", n % 6 ? ", " : "\n  ", n + 1, r.mode_energy[n]);
+  std::printf("\n");
+}
+
+void run_impact(ImpactOptions& o) {
+  Bat bat = load_bat(o.bat_file);
+  if (o.slices > 0) bat = resample(bat, o.slices);
+  o.scene.vibrational_modes = parse_modes(o.modes);
+  o.scene.swing.about_center = o.center.has_value();
+  o.scene.swing.center = o.center.value_or(0);
+  o.scene.swing.cm_speed = o.cm_speed.value_or(0);
+  const ModalBasis basis = compute_modes(bat, parse_beam_theory(o.theory));
+  const ImpactResult r = simulate_impact(basis, o.scene);
+  if (r.status == CollisionStatus::refused_step) throw InputError("--dt: " + r.message);
+  if (o.json) print_json(r);
+  else print_text(r);
+}
+
+}  // namespace
+
+void add_ball_options(CLI::App& cmd, Ball& ball) {
+  cmd.add_option("--e0", ball.e0, "coefficient of restitution on a rigid wall, in (0, 1]")->capture_default_str();
+  cmd.add_option("--ball-mass", ball.mass, "ball mass, kg")->capture_default_str();
+  cmd.add_option("--ball-radius", ball.radius, "ball radius, m")->capture_default_str();
+  cmd.add_option("--k1", ball.k1, "ball stiffness k1, N/m^a")->capture_default_str();
+  cmd.add_option("--a", ball.a, "ball compression exponent a")->capture_default_str();
+}
+
+void add_integrator_options(CLI::App& cmd, CollisionOptions& options) {
+  cmd.add_option("--dt", options.dt, "RK4 step, s")->capture_default_str();
+  cmd.add_option("--window", options.window, "free flight followed after a separation, s")->capture_default_str();
+}
+
+void add_impact_command(CLI::App& app) {
+  auto o = std::make_shared<ImpactOptions>();
+  CLI::App* cmd = app.add_subcommand("impact", "One ball on one bat: exit speed, times, energies");
+  cmd->add_option("--bat", o->bat_file, "bat file (TOML)")->required();
+  cmd->add_option("--theory", o->theory, "beam theory")
+      ->check(CLI::IsMember({"timoshenko", "euler-bernoulli"}))
+      ->capture_default_str();
+  cmd->add_option("--slices", o->slices, "slice count N (default: the profile's own)")->check(CLI::Range(4, 4096));
+  cmd->add_option("--z", o->scene.z, "impact location, m from the knob (snapped to a slice centre)")->required();
+  cmd->add_option("--ball-speed", o->scene.ball_speed, "ball speed toward the bat, m/s")->required();
+  auto* cm = cmd->add_option("--cm-speed", o->cm_speed, "bat centre-of-mass speed toward the ball, m/s");
+  auto* center = cmd->add_option("--center", o->center, "rotation centre (the point at rest), m from the knob");
+  cm->excludes(center);
+  center->excludes(cm);
+  cmd->add_option("--omega", o->scene.swing.omega, "bat angular velocity, rad/s")->capture_default_str();
+  cmd->add_flag("--pivot", o->scene.pivoted, "hold the bat at the rotation centre (N2000 Fig. 16)");
+  cmd->add_option("--modes", o->modes, "vibrational modes kept: a number or 'all'")->capture_default_str();
+  add_ball_options(*cmd, o->scene.ball);
+  add_integrator_options(*cmd, o->scene.integrator);
+  cmd->add_flag("--json", o->json, "print one JSON object");
+  cmd->callback([o] {
+    if (!o->cm_speed && !o->center) throw InputError("impact: give the swing as --cm-speed or as --center");
+    run_impact(*o);
+  });
+}
+
+}  // namespace sweetspot::app

@@ -1,0 +1,89 @@
+// sweetspot modes: the normal modes and mass properties of one bat (N2000 Table II).
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "commands.hpp"
+#include "json.hpp"
+#include "sweetspot/bat_file.hpp"
+#include "sweetspot/input_error.hpp"
+#include "sweetspot/modes.hpp"
+
+namespace sweetspot::app {
+
+namespace {
+
+struct ModesOptions {
+  std::string bat_file;
+  std::string theory = "timoshenko";
+  int slices = 0;  // 0: the profile's own
+  int count = 10;
+  bool json = false;
+};
+
+void print_table(const Bat& bat, const MassProperties& mp, const ModalBasis& basis, int count) {
+  std::printf("bat %s: L = %.4g m, %d slices, %s\n", bat.name.c_str(), bat.length, bat.slices(),
+              to_string(basis.theory));
+  std::printf("mass %.4f kg, centre of mass %.4f m from the knob, radius of gyration %.4f m\n", mp.mass,
+              mp.z_cm, mp.radius_of_gyration());
+  std::printf("moment of inertia %.5f kg m^2 about the CM, %.5f kg m^2 about the knob\n\n",
+              mp.moment_of_inertia_cm, mp.moment_of_inertia_about(0));
+  std::printf("%5s %12s   %s\n", "mode", "frequency/Hz", "nodes/cm from the knob");
+  const auto f = basis.vibrational_frequencies_hz();
+  for (int mode = 1; mode <= count; ++mode) {
+    std::printf("%5d %12.1f  ", mode, f[mode - 1]);
+    for (double z : basis.nodes(mode + 1)) std::printf(" %5.1f", 100 * z);
+    std::printf("\n");
+  }
+}
+
+void print_json(const Bat& bat, const MassProperties& mp, const ModalBasis& basis, int count) {
+  const auto all = basis.vibrational_frequencies_hz();
+  std::vector<Json> nodes;
+  for (int mode = 1; mode <= count; ++mode) nodes.push_back(Json::numbers(basis.nodes(mode + 1)));
+  const Json out = Json::Object()
+                       .add("bat", bat.name)
+                       .add("theory", to_string(basis.theory))
+                       .add("slices", Json::integer(bat.slices()))
+                       .add("length_m", bat.length)
+                       .add("mass_kg", mp.mass)
+                       .add("z_cm_m", mp.z_cm)
+                       .add("r_g_m", mp.radius_of_gyration())
+                       .add("moment_of_inertia_cm_kg_m2", mp.moment_of_inertia_cm)
+                       .add("frequencies_hz", Json::numbers({all.begin(), all.begin() + count}))
+                       .add("nodes_m", Json::array(nodes));
+  std::printf("%s\n", out.text().c_str());
+}
+
+void run_modes(const ModesOptions& o) {
+  Bat bat = load_bat(o.bat_file);
+  if (o.slices > 0) bat = resample(bat, o.slices);
+  const ModalBasis basis = compute_modes(bat, parse_beam_theory(o.theory));
+  const int available = basis.count() - 2;
+  if (o.count > available)
+    throw InputError("--count " + std::to_string(o.count) + ": the bat has only " + std::to_string(available) +
+                     " vibrational modes at " + std::to_string(bat.slices()) + " slices");
+  const MassProperties mp = mass_properties(bat);
+  if (o.json) print_json(bat, mp, basis, o.count);
+  else print_table(bat, mp, basis, o.count);
+}
+
+}  // namespace
+
+void add_modes_command(CLI::App& app) {
+  auto options = std::make_shared<ModesOptions>();
+  CLI::App* cmd = app.add_subcommand("modes", "Normal modes and mass properties of a bat (N2000 Table II)");
+  cmd->add_option("bat", options->bat_file, "bat file (TOML)")->required();
+  cmd->add_option("--theory", options->theory, "beam theory")
+      ->check(CLI::IsMember({"timoshenko", "euler-bernoulli"}))
+      ->capture_default_str();
+  cmd->add_option("--slices", options->slices, "slice count N (default: the profile's own)")
+      ->check(CLI::Range(4, 4096));
+  cmd->add_option("--count", options->count, "vibrational modes to print")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_flag("--json", options->json, "print one JSON object");
+  cmd->callback([options] { run_modes(*options); });
+}
+
+}  // namespace sweetspot::app

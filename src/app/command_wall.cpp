@@ -1,0 +1,59 @@
+// sweetspot wall: the ball on a rigid, immovable wall (N2000 Fig. 3).
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "commands.hpp"
+#include "json.hpp"
+#include "sweetspot/input_error.hpp"
+#include "sweetspot/wall.hpp"
+
+namespace sweetspot::app {
+
+namespace {
+
+struct WallOptions {
+  Ball ball;
+  double speed = 0;
+  CollisionOptions integrator;
+  bool json = false;
+};
+
+void run_wall(const WallOptions& o) {
+  if (!(o.speed > 0) || !std::isfinite(o.speed))
+    throw InputError("wall: speed = " + std::to_string(o.speed) + ": must be a positive finite number (m/s)");
+  if (!(o.ball.e0 > 0 && o.ball.e0 <= 1)) throw InputError("wall: e0 = " + std::to_string(o.ball.e0) + ": must lie in (0, 1]");
+  if (!(o.ball.a > 0) || !(o.ball.k1 > 0) || !(o.integrator.dt > 0))
+    throw InputError("wall: a, k1 and dt must be positive");
+  const WallResult r = hit_wall(o.ball, o.speed, o.integrator);
+  if (o.json) {
+    const Json out = Json::Object()
+                         .add("status", to_string(r.status))
+                         .add("speed", o.speed)
+                         .add("restitution", r.restitution)
+                         .add("collision_time", r.collision_time)
+                         .add("contact_time", r.contact_time)
+                         .add("u_max", r.u_max)
+                         .add("peak_force", r.peak_force);
+    std::printf("%s\n", out.text().c_str());
+    return;
+  }
+  std::printf("status %s\nrestitution %.9g\ncollision time %.4g ms (99 %% of the impulse)\n", to_string(r.status),
+              r.restitution, 1e3 * r.collision_time);
+  std::printf("contact time %.4g ms\nmax compression %.4g mm\npeak force %.5g N\n", 1e3 * r.contact_time,
+              1e3 * r.u_max, r.peak_force);
+}
+
+}  // namespace
+
+void add_wall_command(CLI::App& app) {
+  auto o = std::make_shared<WallOptions>();
+  CLI::App* cmd = app.add_subcommand("wall", "The ball on a rigid, immovable wall (N2000 Fig. 3)");
+  cmd->add_option("--speed", o->speed, "ball speed, m/s")->required();
+  add_ball_options(*cmd, o->ball);
+  add_integrator_options(*cmd, o->integrator);
+  cmd->add_flag("--json", o->json, "print one JSON object");
+  cmd->callback([o] { run_wall(*o); });
+}
+
+}  // namespace sweetspot::app

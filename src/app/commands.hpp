@@ -1,0 +1,19 @@
+#pragma once
+// The program's subcommands. Each adds itself to the command line and runs when chosen.
+#include <CLI/CLI.hpp>
+
+#include "sweetspot/ball.hpp"
+#include "sweetspot/collision.hpp"
+
+namespace sweetspot::app {
+
+void add_modes_command(CLI::App& app);
+void add_impact_command(CLI::App& app);
+void add_wall_command(CLI::App& app);
+void add_toy_command(CLI::App& app);
+
+// Options shared by the commands that run a collision.
+void add_ball_options(CLI::App& cmd, Ball& ball);
+void add_integrator_options(CLI::App& cmd, CollisionOptions& options);
+
+}  // namespace sweetspot::app

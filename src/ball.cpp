@@ -1,0 +1,27 @@
+#include "sweetspot/ball.hpp"
+
+#include <cmath>
+
+namespace sweetspot {
+
+double ContactForce::operator()(double u) const {
+  if (u <= 0) return 0;  // also guards round-off: no tension, no pow of a negative number
+  return expanding_ ? f_max_ * std::pow(u / u_max_, b_) : ball_.k1 * std::pow(u, ball_.a);
+}
+
+double ContactForce::stiffness(double u) const {
+  if (u <= 0) return 0;
+  return (expanding_ ? b_ : ball_.a) * (*this)(u) / u;
+}
+
+void ContactForce::start_expansion(double u_max) {
+  u_max_ = u_max;
+  f_max_ = ball_.k1 * std::pow(u_max, ball_.a);
+  expanding_ = true;
+}
+
+double ContactForce::loop_energy() const {
+  return f_max_ * u_max_ * (1 / (ball_.a + 1) - 1 / (b_ + 1));
+}
+
+}  // namespace sweetspot

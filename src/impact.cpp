@@ -1,0 +1,61 @@
+#include "sweetspot/impact.hpp"
+
+#include "sweetspot/formulas.hpp"
+
+namespace sweetspot {
+
+namespace {
+
+// Splits the final energy of the bat among rigid translation, rotation and vibration. A pivoted
+// bat has one rigid mode, rotation about the pivot: its energy 1/2 I_p W^2 splits into the CM's
+// translation 1/2 M (W d)^2 and rotation 1/2 I_cm W^2 in the ratio M d^2 : I_cm.
+void bat_energies(const ImpactScene& scene, const SceneGeometry& g, const ModalBasis& basis, const Collision& c,
+                  ImpactResult& r) {
+  const int rigid = scene.pivoted ? 1 : 2;
+  for (int n = rigid; n < g.contact.count(); ++n) {
+    r.mode_energy.push_back(c.mode_energy(g.contact, n));
+    r.energy.vibration += r.mode_energy.back();
+  }
+  if (scene.pivoted) {
+    const double arm = basis.z_cm - g.pivot;
+    const double translation_share = basis.mass * arm * arm / (basis.moment_of_inertia_cm + basis.mass * arm * arm);
+    r.energy.bat_translation = translation_share * c.mode_energy(g.contact, 0);
+    r.energy.bat_rotation = (1 - translation_share) * c.mode_energy(g.contact, 0);
+  } else {
+    r.energy.bat_translation = c.mode_energy(g.contact, 0);
+    r.energy.bat_rotation = c.mode_energy(g.contact, 1);
+  }
+}
+
+}  // namespace
+
+ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& scene) {
+  validate(scene, basis);
+  const SceneGeometry g = scene_geometry(scene, basis);
+  const Collision c = collide(g.contact, scene.ball, scene.ball_speed, scene.integrator);
+
+  ImpactResult r;
+  r.status = c.status;
+  r.message = c.message;
+  r.z = g.z;
+  if (c.status == CollisionStatus::refused_step) return r;
+  r.vf = c.ball_velocity;
+  r.e_eff = effective_cor(r.vf, g.recoil, scene.ball_speed, g.bat_speed);
+  r.contact_time = c.contact_time;
+  r.collision_time = c.collision_time;
+  r.u_max = c.u_max;
+  r.peak_force = c.peak_force;
+  r.impulse = c.impulse;
+  r.contacts = c.contacts;
+  r.force = c.force;
+
+  ImpactEnergy& e = r.energy;
+  e.initial = 0.5 * scene.ball.mass * scene.ball_speed * scene.ball_speed + 0.5 * g.contact.velocity0.squaredNorm();
+  e.ball = 0.5 * scene.ball.mass * r.vf * r.vf;
+  bat_energies(scene, g, basis, c, r);
+  e.ball_dissipated = c.dissipated;
+  e.residual = e.initial - (e.ball + e.bat_translation + e.bat_rotation + e.vibration + e.ball_dissipated);
+  return r;
+}
+
+}  // namespace sweetspot

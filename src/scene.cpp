@@ -1,0 +1,117 @@
+#include "sweetspot/scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "sweetspot/input_error.hpp"
+
+namespace sweetspot {
+
+namespace {
+
+[[noreturn]] void reject(const std::string& key, double value, const std::string& expected) {
+  std::ostringstream text;
+  text << "impact: " << key << " = " << value << ": " << expected;
+  throw InputError(text.str());
+}
+
+void require_finite(const std::string& key, double value) {
+  if (!std::isfinite(value)) reject(key, value, "must be a finite number");
+}
+
+void require_positive(const std::string& key, double value) {
+  if (!(value > 0) || !std::isfinite(value)) reject(key, value, "must be a positive finite number");
+}
+
+int nearest_slice(const ModalBasis& basis, double z) {
+  const double dz = basis.z.size() > 1 ? basis.z[1] - basis.z[0] : 1.0;
+  return std::clamp(static_cast<int>(std::floor(z / dz)), 0, basis.slices() - 1);
+}
+
+// Mode shapes at any z, linear between slice centres (constant beyond the end centres).
+Eigen::VectorXd shapes_at(const ModalBasis& basis, double z, int kept) {
+  const double dz = basis.z[1] - basis.z[0];
+  const double x = std::clamp((z - basis.z[0]) / dz, 0.0, basis.slices() - 1.0);
+  const int i = std::min(static_cast<int>(x), basis.slices() - 2);
+  const double w = x - i;
+  return ((1 - w) * basis.psi.row(i).head(kept) + w * basis.psi.row(i + 1).head(kept)).transpose();
+}
+
+int kept_modes(const ImpactScene& scene, const ModalBasis& basis) {
+  return scene.vibrational_modes == all_modes ? basis.count() : 2 + scene.vibrational_modes;
+}
+
+// A bat held at a point: the constraint psi_p . a = 0 removes one direction from modal space.
+// The constrained bat's own modes diagonalise Omega^2 on the rest, so the collision integrates
+// them like any free modal system, and free flight stays exact.
+ModalContact constrained_modes(const ModalContact& free, const Eigen::VectorXd& psi_pivot) {
+  const int n = free.count();
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(psi_pivot);
+  const Eigen::MatrixXd complement =
+      (qr.householderQ() * Eigen::MatrixXd::Identity(n, n)).rightCols(n - 1);
+  const Eigen::MatrixXd stiffness =
+      complement.transpose() * free.omega.array().square().matrix().asDiagonal() * complement;
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(stiffness);
+  const Eigen::MatrixXd modes = complement * eig.eigenvectors();
+  ModalContact held;
+  held.omega = eig.eigenvalues().cwiseMax(0.0).cwiseSqrt();
+  held.omega(0) = 0;  // rotation about the pivot; round-off otherwise
+  held.psi = modes.transpose() * free.psi;
+  held.velocity0 = modes.transpose() * free.velocity0;
+  return held;
+}
+
+}  // namespace
+
+void validate(const ImpactScene& scene, const ModalBasis& basis) {
+  const double length = basis.z.back() + basis.z.front();
+  if (!(scene.z >= 0 && scene.z <= length)) reject("z", scene.z, "must lie on the bat (0 to " + std::to_string(length) + " m)");
+  require_finite("ball_speed", scene.ball_speed);
+  require_finite("omega", scene.swing.omega);
+  require_finite(scene.swing.about_center ? "center" : "cm_speed",
+                 scene.swing.about_center ? scene.swing.center : scene.swing.cm_speed);
+  require_positive("ball.mass", scene.ball.mass);
+  require_positive("ball.radius", scene.ball.radius);
+  require_positive("k1", scene.ball.k1);
+  require_positive("a", scene.ball.a);
+  if (!(scene.ball.e0 > 0 && scene.ball.e0 <= 1)) reject("e0", scene.ball.e0, "must lie in (0, 1]");
+  require_positive("dt", scene.integrator.dt);
+  require_positive("window", scene.integrator.window);
+  if (scene.pivoted && !scene.swing.about_center)
+    reject("pivot", 1, "a pivoted bat is held at its rotation centre: give the centre, not the CM speed");
+  if (scene.vibrational_modes != all_modes &&
+      (scene.vibrational_modes < 0 || scene.vibrational_modes > basis.count() - 2))
+    reject("modes", scene.vibrational_modes,
+           "must be 'all' or between 0 and " + std::to_string(basis.count() - 2) + " at this slice count");
+}
+
+SceneGeometry scene_geometry(const ImpactScene& scene, const ModalBasis& basis) {
+  SceneGeometry g;
+  g.slice = nearest_slice(basis, scene.z);
+  g.z = basis.z[g.slice];
+  const Swing& swing = scene.swing;
+  g.pivot = swing.center;
+  g.cm_speed = swing.about_center ? swing.omega * (basis.z_cm - swing.center) : swing.cm_speed;
+  g.bat_speed = g.cm_speed + swing.omega * (g.z - basis.z_cm);
+
+  const double m = scene.ball.mass, arm = g.z - basis.z_cm;
+  if (scene.pivoted) {
+    const double lever = g.z - g.pivot, pivot_arm = g.pivot - basis.z_cm;
+    g.recoil = m * lever * lever / (basis.moment_of_inertia_cm + basis.mass * pivot_arm * pivot_arm);
+  } else {
+    g.recoil = m * (1 / basis.mass + arm * arm / basis.moment_of_inertia_cm);
+  }
+
+  const int kept = kept_modes(scene, basis);
+  ModalContact free;
+  free.omega = basis.omega.head(kept);
+  free.psi = basis.psi.row(g.slice).head(kept).transpose();
+  free.velocity0 = g.cm_speed * basis.translation.head(kept) + swing.omega * basis.rotation.head(kept);
+  g.contact = scene.pivoted
+                  ? constrained_modes(free, shapes_at(basis, g.pivot, kept))
+                  : free;
+  return g;
+}
+
+}  // namespace sweetspot

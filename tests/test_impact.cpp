@@ -1,0 +1,233 @@
+// One impact: exact identities (rigid bat, lossless ball, energy balance) and the physics of
+// N2000's scenes (physics.md §4-6).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <numeric>
+
+#include "program.hpp"
+#include "sweetspot/bat_file.hpp"
+#include "sweetspot/formulas.hpp"
+#include "sweetspot/impact.hpp"
+#include "sweetspot/input_error.hpp"
+
+using namespace sweetspot;
+
+namespace {
+
+const ModalBasis& r161_modes() {
+  static const ModalBasis basis = compute_modes(load_bat(source_path("studies/bats/r161.toml")), BeamTheory::timoshenko);
+  return basis;
+}
+
+// N2000 Figs. 10-12: ball 40 m/s, bat rotating at 51 rad/s about a point 9 cm from the knob.
+ImpactScene high_impact(double z, int modes = 18) {
+  ImpactScene s;
+  s.z = z;
+  s.ball.e0 = 0.5;
+  s.ball_speed = 40;
+  s.swing = {51, true, 0, 0.09};
+  s.vibrational_modes = modes;
+  return s;
+}
+
+// N2000 Figs. 7-9: ball 1 m/s on the bat at rest, e0 = 0.66.
+ImpactScene low_impact(double z, int modes = 18) {
+  ImpactScene s;
+  s.z = z;
+  s.ball.e0 = 0.66;
+  s.ball_speed = 1;
+  s.swing = {0, false, 0, 0};
+  s.vibrational_modes = modes;
+  return s;
+}
+
+double rigid_vf(const ImpactScene& scene) {
+  const SceneGeometry g = scene_geometry(scene, r161_modes());
+  return rigid_exit_speed(scene.ball.e0, g.recoil, scene.ball_speed, g.bat_speed);
+}
+
+double vf(const ImpactScene& scene) {
+  const ImpactResult r = simulate_impact(r161_modes(), scene);
+  REQUIRE(r.status == CollisionStatus::ok);
+  return r.vf;
+}
+
+// Impact locations of every slice centre in [from, to].
+std::vector<double> slice_centres(double from, double to) {
+  std::vector<double> z;
+  for (double c : r161_modes().z)
+    if (c >= from - 1e-9 && c <= to + 1e-9) z.push_back(c);
+  return z;
+}
+
+double argmax(const std::vector<double>& z, const std::vector<double>& v) {
+  return z[std::max_element(v.begin(), v.end()) - v.begin()];
+}
+
+}  // namespace
+
+TEST_CASE("With only the rigid modes, v_f is the rigid-bat formula (free and pivoted)", "[impact]") {
+  for (bool pivoted : {false, true})
+    for (double z : {0.305, 0.555, 0.705, 0.805})
+      for (double speed : {1.0, 40.0})
+        for (double e0 : {0.5, 0.66, 1.0}) {
+          ImpactScene s = high_impact(z, 0);
+          s.pivoted = pivoted;
+          s.swing = {56, true, 0, 0.15};
+          s.ball_speed = speed;
+          s.ball.e0 = e0;
+          INFO("pivoted " << pivoted << ", z " << z << ", speed " << speed << ", e0 " << e0);
+          CHECK(vf(s) == Approx(rigid_vf(s)).epsilon(1e-7));
+        }
+}
+
+TEST_CASE("A lossless ball (e0 = 1) gives the exit speed of the R_n formula", "[impact]") {
+  // g(omega) comes from the force profile alone; dt = 1 us keeps its quadrature below 1e-7.
+  for (double z : {0.605, 0.705, 0.785}) {
+    ImpactScene s = high_impact(z, 18);
+    s.ball.e0 = 1;
+    s.integrator.dt = 1e-6;
+    s.integrator.record_force = true;
+    const ImpactResult r = simulate_impact(r161_modes(), s);
+    REQUIRE(r.status == CollisionStatus::ok);
+    REQUIRE(r.contacts == 1);
+    const SceneGeometry g = scene_geometry(s, r161_modes());
+    const auto responses = mode_responses(g.contact, s.ball.mass, r.force);
+    const double sum = std::accumulate(responses.begin(), responses.end(), 0.0);
+    INFO("z " << z);
+    CHECK(r.vf == Approx(lossless_exit_speed(sum, s.ball_speed, g.bat_speed)).epsilon(1e-6));
+    CHECK(r.energy.ball_dissipated == Approx(0).margin(1e-9));
+  }
+}
+
+TEST_CASE("Energy balance closes at 5 us and converges at fourth order in the step", "[impact]") {
+  std::vector<double> residuals;
+  for (double dt : {10e-6, 5e-6, 2.5e-6}) {
+    ImpactScene s = high_impact(0.605, 18);
+    s.integrator.dt = dt;
+    const ImpactResult r = simulate_impact(r161_modes(), s);
+    REQUIRE(r.status == CollisionStatus::ok);
+    residuals.push_back(std::abs(r.energy.residual) / r.energy.initial);
+    if (dt == 5e-6) CHECK(residuals.back() < 1e-5);
+  }
+  const double order = std::log2(residuals[1] / residuals[2]);
+  WARN("energy residual / initial: " << residuals[0] << ", " << residuals[1] << ", " << residuals[2]
+                                     << " at 10, 5, 2.5 us: observed order " << order);
+  CHECK(residuals[2] < residuals[1]);
+  CHECK(residuals[1] < residuals[0]);
+  CHECK(order > 3.0);
+}
+
+TEST_CASE("High-impact scene: v_f peaks near 71 cm, falls below rigid away from it", "[impact][scene]") {
+  const auto z = slice_centres(0.55, 0.82);
+  std::vector<double> flexible, one_mode, rigid;
+  for (double zi : z) {
+    flexible.push_back(vf(high_impact(zi, 18)));
+    one_mode.push_back(vf(high_impact(zi, 1)));
+    rigid.push_back(rigid_vf(high_impact(zi)));
+  }
+  const double peak = argmax(z, flexible);
+  CHECK(peak >= 0.69);
+  CHECK(peak <= 0.73);
+  const std::size_t at_peak = std::max_element(flexible.begin(), flexible.end()) - flexible.begin();
+  CHECK(flexible[at_peak] == Approx(rigid[at_peak]).epsilon(0.01));
+  const std::size_t at_60 = std::find_if(z.begin(), z.end(), [](double c) { return c > 0.6; }) - z.begin();
+  const double drop = 1 - flexible[at_60] / rigid[at_60];
+  INFO("at " << z[at_60] << " m: 18 modes " << flexible[at_60] << ", 1 mode " << one_mode[at_60] << ", rigid "
+             << rigid[at_60]);
+  CHECK(drop > 0.15);
+  CHECK(drop < 0.30);
+  CHECK(one_mode[at_60] < rigid[at_60]);
+  CHECK(one_mode[at_60] > flexible[at_60]);
+}
+
+TEST_CASE("Low-impact scene: flexible peak toward the handle from the node, rigid peak at the CM", "[impact][scene]") {
+  const auto z = slice_centres(0.40, 0.80);
+  std::vector<double> flexible, rigid;
+  for (double zi : z) {
+    flexible.push_back(vf(low_impact(zi)));
+    rigid.push_back(rigid_vf(low_impact(zi)));
+  }
+  const double flexible_peak = argmax(z, flexible), rigid_peak = argmax(z, rigid);
+  INFO("flexible peak " << flexible_peak << " m, rigid peak " << rigid_peak << " m");
+  CHECK(flexible_peak >= 0.60);
+  CHECK(flexible_peak <= 0.68);
+  CHECK(std::abs(rigid_peak - r161_modes().z_cm) <= 0.02);
+}
+
+TEST_CASE("Pivoted and free bats give the same v_f from 52 cm outward (Fig. 16)", "[impact][scene]") {
+  // Between 48 and 52 cm the held bat catches the ball again (2-4 contacts) and the curves part.
+  for (double z : slice_centres(0.52, 0.84)) {
+    ImpactScene s = high_impact(z, 18);
+    s.swing = {56, true, 0, 0.15};
+    const double free_vf = vf(s);
+    s.pivoted = true;
+    INFO("z " << z);
+    CHECK(vf(s) == Approx(free_vf).epsilon(0.01));
+  }
+}
+
+TEST_CASE("An RK4 step unstable for the fastest kept mode is refused", "[impact]") {
+  ImpactScene s = high_impact(0.705, all_modes);
+  const ImpactResult r = simulate_impact(r161_modes(), s);
+  CHECK(r.status == CollisionStatus::refused_step);
+  CHECK_THAT(r.message, Catch::Contains("omega*dt must stay below 2.8"));
+  const ProgramRun run = run_program("impact --bat " + source_path("studies/bats/r161.toml") +
+                                     " --z 0.7 --ball-speed 40 --center 0.09 --omega 51 --modes all");
+  CHECK(run.exit_code == 2);
+  CHECK_THAT(run.output, Catch::Contains("unstable"));
+}
+
+TEST_CASE("Bad impact input is rejected naming the value", "[impact][input]") {
+  const auto rejects = [](ImpactScene s, const std::string& key) {
+    INFO(key);
+    CHECK_THROWS_WITH(validate(s, r161_modes()), Catch::Contains(key));
+  };
+  ImpactScene s = high_impact(0.7);
+  s.z = 0.9;
+  rejects(s, "z = 0.9");
+  s = high_impact(0.7), s.z = -0.01;
+  rejects(s, "z = -0.01");
+  s = high_impact(0.7), s.ball_speed = std::nan("");
+  rejects(s, "ball_speed = nan");
+  s = high_impact(0.7), s.ball_speed = INFINITY;
+  rejects(s, "ball_speed = inf");
+  s = high_impact(0.7), s.ball.e0 = 0;
+  rejects(s, "e0 = 0");
+  s = high_impact(0.7), s.ball.e0 = 1.2;
+  rejects(s, "e0 = 1.2");
+  s = high_impact(0.7), s.ball.a = 0;
+  rejects(s, "a = 0");
+  s = high_impact(0.7), s.ball.k1 = -1;
+  rejects(s, "k1 = -1");
+  s = high_impact(0.7), s.integrator.dt = 0;
+  rejects(s, "dt = 0");
+  s = high_impact(0.7, 500);
+  rejects(s, "modes = 500");
+}
+
+TEST_CASE("The impact command rejects bad input with exit status 2", "[impact][input][program]") {
+  const std::string bat = "--bat " + source_path("studies/bats/r161.toml");
+  const std::string swing = " --center 0.09 --omega 51";
+  struct Case {
+    std::string arguments, expected;
+  };
+  const Case cases[] = {
+      {bat + " --z 0.95 --ball-speed 40" + swing, "z = 0.95"},
+      {bat + " --z 0.7 --ball-speed nan" + swing, "ball_speed = nan"},
+      {bat + " --z 0.7 --ball-speed 40 --e0 1.5" + swing, "e0 = 1.5"},
+      {bat + " --z 0.7 --ball-speed 40 --a -1" + swing, "a = -1"},
+      {bat + " --z 0.7 --ball-speed 40 --k1 0" + swing, "k1 = 0"},
+      {bat + " --z 0.7 --ball-speed 40 --dt 0" + swing, "dt = 0"},
+      {bat + " --z 0.7 --ball-speed 40 --modes lots" + swing, "--modes lots"},
+      {bat + " --z 0.7 --ball-speed 40 --omega 51", "--cm-speed or as --center"},
+      {bat + " --z 0.7 --ball-speed 40 --frobnicate 3" + swing, "frobnicate"},
+  };
+  for (const Case& c : cases) {
+    const ProgramRun run = run_program("impact " + c.arguments);
+    INFO(c.arguments << "\n" << run.output);
+    CHECK(run.exit_code != 0);
+    CHECK_THAT(run.output, Catch::Contains(c.expected));
+  }
+}
