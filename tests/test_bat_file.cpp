@@ -11,6 +11,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "program.hpp"
 #include "sweetspot/bat.hpp"
 #include "sweetspot/bat_file.hpp"
 #include "sweetspot/input_error.hpp"
@@ -77,8 +78,19 @@ struct BatDir {
   }
 };
 
-// load_bat must throw an InputError whose single-line message contains every fragment.
+// The program must refuse the bat with exit status 2 and the same one-line message.
+void require_program_error(const fs::path& toml, std::initializer_list<std::string_view> fragments) {
+  const ProgramRun run = run_program("modes '" + toml.string() + "'");
+  INFO("program output: " << run.output);
+  CHECK(run.exit_code == 2);
+  CHECK_THAT(run.output, Catch::StartsWith("sweetspot: error: "));
+  for (const std::string_view fragment : fragments) CHECK_THAT(run.output, Catch::Contains(std::string(fragment)));
+}
+
+// load_bat must throw an InputError whose single-line message contains every fragment, and the
+// program must exit with status 2 printing it.
 void require_input_error(const fs::path& toml, std::initializer_list<std::string_view> fragments) {
+  require_program_error(toml, fragments);
   try {
     load_bat(toml);
   } catch (const InputError& e) {

@@ -1,0 +1,19 @@
+// Time to build the normal modes of the R161 bat at N = 84, 168, 336, 672 slices (median).
+#include <cstdio>
+
+#include "sweetspot/bat_file.hpp"
+#include "sweetspot/modes.hpp"
+#include "timing.hpp"
+
+int main(int argc, char** argv) {
+  using namespace sweetspot;
+  const Bat bat = load_bat(argc > 1 ? argv[1] : "studies/bats/r161.toml");
+  std::printf("%8s %16s %16s\n", "slices", "timoshenko/ms", "euler-bern./ms");
+  for (int n : {84, 168, 336, 672}) {
+    const Bat sliced = resample(bat, n);
+    const int repeats = n <= 168 ? 21 : n <= 336 ? 5 : 3;
+    const double t = median_seconds(repeats, [&] { compute_modes(sliced, BeamTheory::timoshenko); });
+    const double e = median_seconds(repeats, [&] { compute_modes(sliced, BeamTheory::euler_bernoulli); });
+    std::printf("%8d %16.2f %16.2f\n", n, 1e3 * t, 1e3 * e);
+  }
+}

@@ -1,0 +1,33 @@
+// The program's commands end to end: what they print and how they exit.
+#include <catch2/catch.hpp>
+
+#include "program.hpp"
+
+TEST_CASE("modes --json prints the mass properties and Table II of the R161 bat", "[program]") {
+  const ProgramRun run = run_program("modes " + source_path("studies/bats/r161.toml") + " --json --count 3");
+  REQUIRE(run.exit_code == 0);
+  for (const char* key : {"\"mass_kg\": 0.869", "\"z_cm_m\": 0.56", "\"r_g_m\": 0.229", "\"frequencies_hz\": [17",
+                          "\"nodes_m\": [[0.16"})
+    CHECK_THAT(run.output, Catch::Contains(key));
+}
+
+TEST_CASE("modes rejects bad options with a non-zero exit", "[program]") {
+  const std::string bat = source_path("studies/bats/r161.toml");
+  CHECK(run_program("modes " + bat + " --theory beam").exit_code != 0);
+  CHECK(run_program("modes " + bat + " --slices 0").exit_code != 0);
+  CHECK(run_program("modes " + bat + " --unknown").exit_code != 0);
+  const ProgramRun too_many = run_program("modes " + bat + " --count 500");
+  CHECK(too_many.exit_code == 2);
+  CHECK_THAT(too_many.output, Catch::Contains("--count 500"));
+}
+
+TEST_CASE("wall and toy commands print JSON with their results", "[program]") {
+  const ProgramRun wall = run_program("wall --speed 67 --e0 0.5 --json");
+  REQUIRE(wall.exit_code == 0);
+  CHECK_THAT(wall.output, Catch::Contains("\"restitution\": 0.49999"));
+  const ProgramRun toy = run_program("toy --omega-tau 20 --json");
+  REQUIRE(toy.exit_code == 0);
+  CHECK_THAT(toy.output, Catch::Contains("\"exit_ratio\": 0.71"));
+  CHECK(run_program("wall --speed -3").exit_code == 2);
+  CHECK(run_program("toy --omega-tau 0").exit_code == 2);
+}
