@@ -156,15 +156,23 @@ TEST_CASE("Low-impact scene: flexible peak toward the handle from the node, rigi
   CHECK(std::abs(rigid_peak - r161_modes().z_cm) <= 0.02);
 }
 
-TEST_CASE("Pivoted and free bats give the same v_f from 52 cm outward (Fig. 16)", "[impact][scene]") {
-  // Between 48 and 52 cm the held bat catches the ball again (2-4 contacts) and the curves part.
-  for (double z : slice_centres(0.52, 0.84)) {
+TEST_CASE("Pivoted and free bats give the same v_f from 50 cm outward (Fig. 16)", "[impact][scene]") {
+  // The first contact is over before the bending pulse returns from the pivot, so its exit speed
+  // is the same for held and free bats from 50 cm out (here down to 48 cm). Between 48 and 52 cm
+  // the held bat, effectively heavier there once the pulse returns, catches the ball again
+  // (2-4 contacts), which N2000 does not follow; with all contacts the curves agree from 52 cm.
+  for (double z : slice_centres(0.48, 0.84)) {
     ImpactScene s = high_impact(z, 18);
     s.swing = {56, true, 0, 0.15};
-    const double free_vf = vf(s);
-    s.pivoted = true;
-    INFO("z " << z);
-    CHECK(vf(s) == Approx(free_vf).epsilon(0.01));
+    for (double window : {1e-9, 5e-3}) {
+      if (window > 1e-3 && z < 0.52) continue;
+      s.integrator.window = window;
+      s.pivoted = false;
+      const double free_vf = vf(s);
+      s.pivoted = true;
+      INFO("z " << z << ", window " << window);
+      CHECK(vf(s) == Approx(free_vf).epsilon(0.01));
+    }
   }
 }
 
