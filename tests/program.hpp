@@ -1,5 +1,6 @@
 #pragma once
-// Runs the sweetspot program from a test and captures what it prints and how it exits.
+// Runs commands (the sweetspot program, mpirun, Debian's python3) from a test and captures what
+// they print and how they exit.
 #include <array>
 #include <cstdio>
 #include <string>
@@ -10,10 +11,9 @@ struct ProgramRun {
   std::string output;  // stdout and stderr together
 };
 
-inline ProgramRun run_program(const std::string& arguments) {
-  const std::string command = std::string(SWEETSPOT_PROGRAM) + " " + arguments + " 2>&1";
+inline ProgramRun run_command(const std::string& command) {
   ProgramRun run;
-  FILE* pipe = popen(command.c_str(), "r");
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
   if (!pipe) return run;
   std::array<char, 4096> buffer;
   while (std::fgets(buffer.data(), buffer.size(), pipe)) run.output += buffer.data();
@@ -22,6 +22,21 @@ inline ProgramRun run_program(const std::string& arguments) {
   return run;
 }
 
+inline ProgramRun run_program(const std::string& arguments) {
+  return run_command(std::string(SWEETSPOT_PROGRAM) + " " + arguments);
+}
+
+// The program under mpirun with `ranks` ranks of `threads` OpenMP threads, oversubscribing the
+// machine's cores when asked for more (Open MPI refuses root without the two variables).
+inline ProgramRun run_program_mpi(int ranks, int threads, const std::string& arguments) {
+  return run_command("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=" +
+                     std::to_string(threads) + " mpirun -np " + std::to_string(ranks) +
+                     " --oversubscribe --bind-to none " + SWEETSPOT_PROGRAM + " " + arguments);
+}
+
 inline std::string source_path(const std::string& relative) {
   return std::string(SWEETSPOT_SOURCE_DIR) + "/" + relative;
 }
+
+// Debian's interpreter, which has h5py, xarray and h5netcdf; the first python3 on PATH may not.
+inline const char* python = "/usr/bin/python3";

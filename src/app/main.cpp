@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   sweetspot::app::add_impact_command(app);
   sweetspot::app::add_wall_command(app);
   sweetspot::app::add_toy_command(app);
+  sweetspot::app::add_run_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -21,6 +22,9 @@ int main(int argc, char** argv) {
   } catch (const sweetspot::InputError& e) {
     std::fprintf(stderr, "sweetspot: error: %s\n", e.what());
     return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "sweetspot: error: %s\n", e.what());
+    return 1;
   }
   return 0;
 }

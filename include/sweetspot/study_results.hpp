@@ -1,0 +1,38 @@
+#pragma once
+// What a study stores per grid point, and how the points become one dataset: one variable per
+// requested output over the study's axes (mode_energy adds a `mode` dimension), each axis a
+// coordinate, and the modal frequencies of each bat over (bat, mode).
+#include <string>
+#include <vector>
+
+#include "sweetspot/dataset.hpp"
+#include "sweetspot/impact.hpp"
+#include "sweetspot/study.hpp"
+
+namespace sweetspot {
+
+// Where each requested output sits in a point's row of values.
+struct OutputLayout {
+  std::vector<std::string> names;
+  std::vector<int> offsets, widths;
+  int width = 0;  // values per point
+
+  explicit OutputLayout(const Study& study);
+  // Fills one row from an impact result (NaN for what a failed point could not give).
+  void extract(const ImpactResult& result, double* row) const;
+};
+
+struct RunInfo {
+  int ranks = 1;
+  int threads = 1;
+  double wall_time = 0;
+};
+
+// Rows of every point (row-major over the axes) and the vibrational frequencies (Hz) of each bat.
+Dataset make_dataset(const Study& study, const OutputLayout& layout, const std::vector<double>& rows,
+                     const std::vector<std::vector<double>>& bat_frequencies_hz, const RunInfo& info);
+
+// How many modes the dataset's `mode` dimension has.
+int dataset_mode_count(const Study& study);
+
+}  // namespace sweetspot

@@ -1,0 +1,195 @@
+#include "sweetspot/study_results.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "sweetspot/version.hpp"
+
+namespace sweetspot {
+
+namespace {
+
+constexpr double missing = std::numeric_limits<double>::quiet_NaN();
+
+struct Description {
+  const char* units;
+  const char* long_name;
+};
+
+const std::map<std::string, Description>& descriptions() {
+  static const std::map<std::string, Description> d = {
+      {"vf", {"m/s", "exit speed of the ball, positive away from the bat"}},
+      {"e_eff", {"1", "effective coefficient of restitution"}},
+      {"contact_time", {"s", "time the ball is in contact with the bat, summed over contacts"}},
+      {"collision_time", {"s", "time from first touch until 99 % of the impulse is delivered"}},
+      {"u_max", {"m", "largest compression of the ball"}},
+      {"peak_force", {"N", "largest contact force"}},
+      {"impulse", {"N s", "impulse delivered to the ball"}},
+      {"contacts", {"1", "number of separate contacts"}},
+      {"status", {"1", "outcome of the impact"}},
+      {"energy_initial", {"J", "initial kinetic energy of ball and bat"}},
+      {"energy_ball", {"J", "final kinetic energy of the ball"}},
+      {"energy_bat_translation", {"J", "final kinetic energy of the bat's centre of mass"}},
+      {"energy_bat_rotation", {"J", "final rotational energy of the bat about its centre of mass"}},
+      {"energy_vibration", {"J", "final vibrational energy of the bat"}},
+      {"energy_ball_dissipated", {"J", "energy dissipated in the ball"}},
+      {"energy_residual", {"J", "energy balance residual (integration error)"}},
+      {"mode_energy", {"J", "final energy of each vibrational mode"}},
+      {"z", {"m", "impact location from the knob"}},
+      {"ball_speed", {"m/s", "ball speed toward the bat"}},
+      {"e0", {"1", "coefficient of restitution of the ball on a rigid wall"}},
+      {"ball_mass", {"kg", "ball mass"}},
+      {"ball_radius", {"m", "ball radius"}},
+      {"k1", {"N m^-a", "ball stiffness k1"}},
+      {"a", {"1", "ball compression exponent"}},
+      {"cm_speed", {"m/s", "bat centre-of-mass speed toward the ball"}},
+      {"center", {"m", "rotation centre of the swing from the knob"}},
+      {"omega", {"rad/s", "bat angular velocity"}},
+      {"pivot", {"1", "bat held at the rotation centre (1) or free (0)"}},
+      {"modes", {"1", "vibrational modes kept (-1: all)"}},
+      {"slices", {"1", "slices of the bat"}},
+      {"dt", {"s", "integration step"}},
+      {"window", {"s", "free flight followed after a separation"}},
+      {"bat", {"1", "bat"}},
+      {"theory", {"1", "beam theory"}},
+      {"mode", {"1", "vibrational mode number"}},
+      {"frequency", {"Hz", "frequency of each vibrational mode of each bat"}},
+  };
+  return d;
+}
+
+Description describe(const std::string& name) {
+  const auto it = descriptions().find(name);
+  return it == descriptions().end() ? Description{"1", ""} : it->second;
+}
+
+double energy_value(const ImpactEnergy& e, const std::string& name) {
+  if (name == "energy_initial") return e.initial;
+  if (name == "energy_ball") return e.ball;
+  if (name == "energy_bat_translation") return e.bat_translation;
+  if (name == "energy_bat_rotation") return e.bat_rotation;
+  if (name == "energy_vibration") return e.vibration;
+  if (name == "energy_ball_dissipated") return e.ball_dissipated;
+  return e.residual;
+}
+
+double scalar_value(const ImpactResult& r, const std::string& name) {
+  if (name == "status") return static_cast<double>(r.status);
+  if (r.status != CollisionStatus::ok) return missing;
+  if (name == "vf") return r.vf;
+  if (name == "e_eff") return r.e_eff;
+  if (name == "contact_time") return r.contact_time;
+  if (name == "collision_time") return r.collision_time;
+  if (name == "u_max") return r.u_max;
+  if (name == "peak_force") return r.peak_force;
+  if (name == "impulse") return r.impulse;
+  if (name == "contacts") return r.contacts;
+  return energy_value(r.energy, name);
+}
+
+Coordinate axis_coordinate(const Study& study, const Axis& axis) {
+  const Description d = describe(axis.name);
+  Coordinate c{axis.name, d.units, d.long_name, {}, {}};
+  if (axis.name == "bat")
+    for (double index : axis.values) c.labels.push_back(study.bat_names[static_cast<std::size_t>(index)]);
+  else if (axis.name == "theory")
+    c.labels = axis.labels;
+  else
+    c.values = axis.values;
+  return c;
+}
+
+Variable output_variable(const std::string& name, std::vector<std::string> dims, std::vector<double> values) {
+  const Description d = describe(name);
+  Variable v{name, d.units, d.long_name, std::move(dims), {}, {}, {}};
+  if (name == "status" || name == "contacts") {
+    std::vector<std::int32_t> ints(values.size());
+    std::transform(values.begin(), values.end(), ints.begin(),
+                   [](double x) { return std::isfinite(x) ? static_cast<std::int32_t>(x) : -1; });
+    v.values = std::move(ints);
+  } else {
+    v.values = std::move(values);
+  }
+  if (name == "status") {
+    v.int_attributes.push_back({"flag_values", {0, 1, 2, 3}});
+    v.text_attributes.push_back({"flag_meanings", "ok no_separation non_finite refused_step"});
+  }
+  return v;
+}
+
+}  // namespace
+
+OutputLayout::OutputLayout(const Study& study) : names(study.outputs) {
+  for (const std::string& name : names) {
+    offsets.push_back(width);
+    widths.push_back(name == "mode_energy" ? study.base.vibrational_modes : 1);
+    width += widths.back();
+  }
+}
+
+void OutputLayout::extract(const ImpactResult& result, double* row) const {
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (names[i] != "mode_energy") {
+      row[offsets[i]] = scalar_value(result, names[i]);
+      continue;
+    }
+    for (int n = 0; n < widths[i]; ++n)
+      row[offsets[i] + n] = result.status == CollisionStatus::ok && n < static_cast<int>(result.mode_energy.size())
+                                ? result.mode_energy[n]
+                                : missing;
+  }
+}
+
+int dataset_mode_count(const Study& study) {
+  const bool per_mode = std::ranges::count(study.outputs, "mode_energy") > 0;
+  return per_mode ? study.base.vibrational_modes : 10;
+}
+
+Dataset make_dataset(const Study& study, const OutputLayout& layout, const std::vector<double>& rows,
+                     const std::vector<std::vector<double>>& bat_frequencies_hz, const RunInfo& info) {
+  Dataset d;
+  std::vector<std::string> dims;
+  bool has_bat_axis = false;
+  for (const Axis& axis : study.axes) {
+    d.coordinates.push_back(axis_coordinate(study, axis));
+    dims.push_back(axis.name);
+    has_bat_axis = has_bat_axis || axis.name == "bat";
+  }
+  if (!has_bat_axis) d.coordinates.push_back({"bat", "1", "bat", {}, {study.bat_names.front()}});
+  const int modes = dataset_mode_count(study);
+  Coordinate mode{"mode", "1", describe("mode").long_name, {}, {}};
+  for (int n = 1; n <= modes; ++n) mode.values.push_back(n);
+  d.coordinates.push_back(mode);
+
+  const std::size_t points = study.points();
+  for (std::size_t i = 0; i < layout.names.size(); ++i) {
+    std::vector<double> values(points * layout.widths[i]);
+    for (std::size_t p = 0; p < points; ++p)
+      std::copy_n(rows.begin() + p * layout.width + layout.offsets[i], layout.widths[i],
+                  values.begin() + p * layout.widths[i]);
+    std::vector<std::string> variable_dims = dims;
+    if (layout.names[i] == "mode_energy") variable_dims.push_back("mode");
+    d.variables.push_back(output_variable(layout.names[i], variable_dims, std::move(values)));
+  }
+
+  std::vector<double> frequencies;
+  for (const auto& f : bat_frequencies_hz)
+    for (int n = 0; n < modes; ++n) frequencies.push_back(n < static_cast<int>(f.size()) ? f[n] : missing);
+  d.variables.push_back(output_variable("frequency", {"bat", "mode"}, std::move(frequencies)));
+
+  d.text_attributes = {{"title", study.title},
+                       {"study_file", study.file.string()},
+                       {"study", study.text},
+                       {"program", "sweetspot"},
+                       {"program_version", version},
+                       {"git_commit", git_commit},
+                       {"references", "A. M. Nathan, Am. J. Phys. 68, 979 (2000)"}};
+  d.number_attributes = {{"mpi_ranks", static_cast<double>(info.ranks)},
+                         {"omp_threads", static_cast<double>(info.threads)},
+                         {"wall_time_s", info.wall_time}};
+  return d;
+}
+
+}  // namespace sweetspot

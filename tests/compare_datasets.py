@@ -1,0 +1,25 @@
+#!/usr/bin/python3
+"""Compares two sweetspot datasets variable by variable, bit for bit (global attributes such as
+the wall time and the rank count may differ). Prints "identical" and exits 0 when they are.
+
+Usage: /usr/bin/python3 tests/compare_datasets.py A.h5 B.h5
+"""
+import sys
+
+import h5py
+import numpy as np
+
+
+def names(f):
+    out = []
+    f.visit(lambda name: out.append(name) if isinstance(f[name], h5py.Dataset) else None)
+    return sorted(out)
+
+
+with h5py.File(sys.argv[1], "r") as a, h5py.File(sys.argv[2], "r") as b:
+    assert names(a) == names(b), (names(a), names(b))
+    for name in names(a):
+        x, y = a[name][()], b[name][()]
+        assert x.dtype == y.dtype and x.shape == y.shape, name
+        assert x.tobytes() == y.tobytes(), f"{name} differs"
+print("identical")

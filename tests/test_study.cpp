@@ -1,0 +1,530 @@
+// Study files: the shipped studies load, the grid runs row-major over the axes in the order
+// written, defaults and overrides land where they should, and every kind of bad study fails
+// before any work with one InputError line naming the file, the key and the value.
+#include <atomic>
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <random>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "program.hpp"
+#include "sweetspot/input_error.hpp"
+#include "sweetspot/study.hpp"
+
+namespace fs = std::filesystem;
+using namespace sweetspot;
+
+namespace {
+
+// A valid study; bad studies are this with one line changed.
+constexpr std::string_view good_study = R"(title = "test"
+[scene]
+bat = "bats/r161.toml"
+z = 0.7
+ball_speed = 40
+center = 0.09
+omega = 51
+e0 = 0.5
+[axes]
+z = [0.5, 0.6, 0.7]
+[output]
+variables = ["vf", "e_eff"]
+)";
+
+// `text` with its first occurrence of `from` replaced by `to` (which must be there).
+std::string with(std::string_view text, std::string_view from, std::string_view to) {
+  std::string out(text);
+  const auto at = out.find(from);
+  REQUIRE(at != std::string::npos);
+  return out.replace(at, from.size(), to);
+}
+
+// A fresh directory with a copy of studies/bats, for study files that name bats relative to
+// themselves; removed afterwards.
+struct StudyDir {
+  fs::path dir;
+
+  StudyDir() {
+    static std::atomic<int> counter = 0;
+    dir = fs::temp_directory_path() /
+          ("sweetspot_study_" + std::to_string(std::random_device{}()) + "_" + std::to_string(counter++));
+    fs::create_directories(dir);
+    fs::copy(source_path("studies/bats"), dir / "bats", fs::copy_options::recursive);
+  }
+  ~StudyDir() {
+    std::error_code ignored;
+    fs::remove_all(dir, ignored);
+  }
+  StudyDir(const StudyDir&) = delete;
+  StudyDir& operator=(const StudyDir&) = delete;
+
+  fs::path write(const std::string& name, std::string_view text) const {
+    std::ofstream(dir / name, std::ios::binary) << text;
+    return dir / name;
+  }
+  Study load(std::string_view text) const { return load_study(write("study.toml", text)); }
+};
+
+// load_study must throw an InputError whose single line names the study file and contains every
+// fragment (the key, the value, what was expected).
+void require_error(std::string_view text, std::initializer_list<std::string_view> fragments) {
+  const StudyDir dir;
+  const fs::path file = dir.write("study.toml", text);
+  try {
+    load_study(file);
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    INFO("message: " << message);
+    CHECK(message.find('\n') == std::string::npos);
+    CHECK_THAT(message, Catch::StartsWith(file.string()));
+    for (const std::string_view fragment : fragments) CHECK_THAT(message, Catch::Contains(std::string(fragment)));
+    return;
+  }
+  FAIL("load_study did not throw for:\n" << text);
+}
+
+void require_error(std::string_view from, std::string_view to, std::initializer_list<std::string_view> fragments) {
+  require_error(with(good_study, from, to), fragments);
+}
+
+std::vector<double> axis_values(const Study& study, std::string_view name) {
+  for (const Axis& axis : study.axes)
+    if (axis.name == name) return axis.values;
+  FAIL("no axis " << name);
+  return {};
+}
+
+}  // namespace
+
+TEST_CASE("every shipped study loads", "[study]") {
+  const std::vector<std::pair<std::string, std::size_t>> expected = {
+      {"low_impact.toml", 54}, {"high_impact.toml", 3 * 44}, {"e_eff_full.toml", 44},
+      {"e_eff_half.toml", 44}, {"pivot.toml", 2 * 54},       {"design_space.toml", 2 * 44 * 11 * 11}};
+  std::set<std::string> found;
+  for (const auto& entry : fs::directory_iterator(source_path("studies"))) {
+    if (entry.path().extension() != ".toml") continue;
+    INFO(entry.path());
+    const Study study = load_study(entry.path());
+    found.insert(entry.path().filename().string());
+    CHECK(study.points() >= 1);
+    CHECK(!study.title.empty());
+    CHECK(study.text.starts_with('#'));  // each says what it reproduces
+    CHECK(study.bats.size() == study.bat_names.size());
+    std::vector<std::size_t> order = task_order(study);
+    std::ranges::sort(order);
+    for (std::size_t i = 0; i < order.size(); ++i) REQUIRE(order[i] == i);
+    CHECK_NOTHROW(grid_point(study, study.points() - 1));
+  }
+  for (const auto& [name, points] : expected) {
+    INFO(name);
+    REQUIRE(found.count(name));
+    CHECK(load_study(source_path("studies/" + name)).points() == points);
+  }
+}
+
+TEST_CASE("the grid is row-major over the axes in the order written", "[study]") {
+  const StudyDir dir;
+  const Study study = dir.load(with(good_study, "z = [0.5, 0.6, 0.7]\n",
+                                    "z = [0.5, 0.6, 0.7]\nball_speed = [20.0, 40.0]\n"
+                                    "bat = [\"bats/r161.toml\", \"bats/torpedo.toml\"]\n"));
+  REQUIRE(study.axes.size() == 3);
+  CHECK(study.axes[0].name == "z");
+  CHECK(study.axes[1].name == "ball_speed");
+  CHECK(study.axes[2].name == "bat");
+  CHECK(study.axes[2].values == std::vector<double>{0, 1});
+  CHECK(study.axes[2].labels == std::vector<std::string>{"bats/r161.toml", "bats/torpedo.toml"});
+  CHECK(study.bat_names == std::vector<std::string>{"R161", "torpedo"});
+  REQUIRE(study.bats.size() == 2);
+  CHECK(study.bats[1] == (dir.dir / "bats" / "torpedo.toml").lexically_normal());
+  REQUIRE(study.points() == 12);
+
+  const GridPoint p = grid_point(study, 7);  // 7 = (1 * 2 + 1) * 2 + 1
+  CHECK(p.coords == std::vector<std::size_t>{1, 1, 1});
+  CHECK(p.scene.z == 0.6);
+  CHECK(p.scene.ball_speed == 40.0);
+  CHECK(p.bat == 1);
+  const GridPoint q = grid_point(study, 4);  // (1, 0, 0)
+  CHECK(q.coords == std::vector<std::size_t>{1, 0, 0});
+  CHECK(q.scene.ball_speed == 20.0);
+  CHECK(q.bat == 0);
+  CHECK(grid_point(study, 11).coords == std::vector<std::size_t>{2, 1, 1});
+  CHECK_THROWS_AS(grid_point(study, 12), std::out_of_range);
+}
+
+TEST_CASE("defaults fill what the study leaves out", "[study]") {
+  const StudyDir dir;
+  const Study study = dir.load("[scene]\nbat = \"bats/r161.toml\"\nz = 0.7\nball_speed = 40\ncenter = 0.09\n");
+  const ImpactScene& s = study.base;
+  CHECK(study.title.empty());
+  CHECK(study.points() == 1);
+  CHECK(study.axes.empty());
+  CHECK(study.outputs == std::vector<std::string>{"vf", "e_eff", "contact_time", "collision_time", "status"});
+  CHECK(study.outputs == default_outputs());
+  CHECK(study.theory == BeamTheory::timoshenko);
+  CHECK(study.slices == 0);
+  CHECK(study.integrator == Integrator::rk4);
+  CHECK(s.z == 0.7);
+  CHECK(s.ball_speed == 40);
+  CHECK(s.ball.e0 == 0.5);
+  CHECK(s.ball.mass == 0.145);
+  CHECK(s.ball.radius == 0.0366);
+  CHECK(s.ball.k1 == 6.53e7);
+  CHECK(s.ball.a == 1.84);
+  CHECK(s.swing.about_center);
+  CHECK(s.swing.center == 0.09);
+  CHECK(s.swing.omega == 0);
+  CHECK_FALSE(s.pivoted);
+  CHECK(s.vibrational_modes == 18);
+  CHECK(s.integrator.dt == 5e-6);
+  CHECK(s.integrator.window == 5e-3);
+  const GridPoint p = grid_point(study, 0);
+  CHECK(p.coords.empty());
+  CHECK(p.scene.z == 0.7);
+  CHECK(p.bat == 0);
+  CHECK(study.bat_names == std::vector<std::string>{"R161"});
+}
+
+TEST_CASE("every scene key is read, and an axis overrides [scene]", "[study]") {
+  const StudyDir dir;
+  const Study study = dir.load(R"(
+[scene]
+bat = "bats/torpedo.toml"
+theory = "euler-bernoulli"
+slices = 40
+z = 0.7
+ball_speed = 30
+e0 = 0.6
+ball_mass = 0.15
+ball_radius = 0.037
+k1 = 7e7
+a = 2
+cm_speed = 20
+omega = 40
+pivot = false
+modes = "all"
+integrator = "rk4"
+dt = 2e-6
+window = 1e-3
+[axes]
+z = [0.6, 0.8]
+omega = [10, 20]
+)");
+  const ImpactScene& s = study.base;
+  CHECK(study.theory == BeamTheory::euler_bernoulli);
+  CHECK(study.slices == 40);
+  CHECK(study.bat_names == std::vector<std::string>{"torpedo"});
+  CHECK(s.z == 0.7);  // the base keeps [scene]'s value; the points take the axis's
+  CHECK(s.ball_speed == 30);
+  CHECK(s.ball.e0 == 0.6);
+  CHECK(s.ball.mass == 0.15);
+  CHECK(s.ball.radius == 0.037);
+  CHECK(s.ball.k1 == 7e7);
+  CHECK(s.ball.a == 2);
+  CHECK_FALSE(s.swing.about_center);
+  CHECK(s.swing.cm_speed == 20);
+  CHECK(s.vibrational_modes == all_modes);
+  CHECK(s.integrator.dt == 2e-6);
+  CHECK(s.integrator.window == 1e-3);
+  const GridPoint p = grid_point(study, 3);
+  CHECK(p.scene.z == 0.8);
+  CHECK(p.scene.swing.omega == 20);
+  CHECK(p.slices == 40);
+  CHECK(p.theory == BeamTheory::euler_bernoulli);
+  CHECK(p.scene.ball.e0 == 0.6);
+}
+
+TEST_CASE("a key given only as an axis needs no [scene] entry", "[study]") {
+  const StudyDir dir;
+  const Study study = dir.load(R"(
+[scene]
+bat = "bats/r161.toml"
+[axes]
+center = [0.09, 0.15]
+ball_speed = [40]
+z = [0.7]
+)");
+  CHECK(study.points() == 2);
+  CHECK(study.base.swing.about_center);
+  const GridPoint p = grid_point(study, 1);
+  CHECK(p.scene.swing.about_center);
+  CHECK(p.scene.swing.center == 0.15);
+}
+
+TEST_CASE("ranges, booleans, names and 'all' make axes", "[study]") {
+  const StudyDir dir;
+  const auto axis = [&](std::string_view line) {
+    return axis_values(dir.load(with(good_study, "z = [0.5, 0.6, 0.7]", line)), line.substr(0, line.find(' ')));
+  };
+  SECTION("step: stop included when it lands on a point, values as a reader writes them") {
+    const std::vector<double> z = axis("z = { start = 0.305, stop = 0.835, step = 0.01 }");
+    REQUIRE(z.size() == 54);
+    CHECK(z[3] == 0.335);
+    CHECK(z.back() == 0.835);
+    CHECK(axis("z = { start = 0.3, stop = 0.35, step = 0.02 }") == std::vector<double>{0.3, 0.32, 0.34});
+    CHECK(axis("z = { start = 0.7, stop = 0.5, step = -0.1 }") == std::vector<double>{0.7, 0.6, 0.5});
+    CHECK(axis("z = { start = 0.7, stop = 0.7, step = 0.1 }") == std::vector<double>{0.7});
+  }
+  SECTION("count: both ends included") {
+    CHECK(axis("e0 = { start = 0.3, stop = 0.6, count = 4 }") == std::vector<double>{0.3, 0.4, 0.5, 0.6});
+    CHECK(axis("e0 = { start = 0.3, stop = 0.6, count = 1 }") == std::vector<double>{0.3});
+  }
+  SECTION("integer axes") {
+    CHECK(axis("slices = { start = 20, stop = 40, step = 10 }") == std::vector<double>{20, 30, 40});
+    CHECK(axis("modes = [0, 1, 18, \"all\"]") == std::vector<double>{0, 1, 18, all_modes});
+    CHECK(axis("modes = { start = 0, stop = 4, count = 5 }") == std::vector<double>{0, 1, 2, 3, 4});
+  }
+  SECTION("pivot: booleans as 0 and 1") {
+    const Study study = dir.load(with(good_study, "z = [0.5, 0.6, 0.7]", "pivot = [false, true]"));
+    CHECK(axis_values(study, "pivot") == std::vector<double>{0, 1});
+    CHECK_FALSE(grid_point(study, 0).scene.pivoted);
+    CHECK(grid_point(study, 1).scene.pivoted);
+  }
+  SECTION("theory: names as labels, BeamTheory as values") {
+    const Study study =
+        dir.load(with(good_study, "z = [0.5, 0.6, 0.7]", "theory = [\"euler-bernoulli\", \"timoshenko\"]"));
+    CHECK(study.axes[0].labels == std::vector<std::string>{"euler-bernoulli", "timoshenko"});
+    CHECK(grid_point(study, 0).theory == BeamTheory::euler_bernoulli);
+    CHECK(grid_point(study, 1).theory == BeamTheory::timoshenko);
+  }
+}
+
+TEST_CASE("tasks run model-major: each (bat, slices, theory) in one contiguous run", "[study]") {
+  const StudyDir dir;
+  const Study study = dir.load(with(good_study, "z = [0.5, 0.6, 0.7]\n",
+                                    "z = [0.5, 0.6, 0.7]\nbat = [\"bats/r161.toml\", \"bats/torpedo.toml\"]\n"
+                                    "e0 = [0.4, 0.5]\nslices = [42, 84]\n"));
+  REQUIRE(study.points() == 24);
+  REQUIRE(models(study) == 4);
+  const std::vector<std::size_t> order = task_order(study);
+  for (std::size_t model = 0; model < 4; ++model) {
+    const GridPoint first = grid_point(study, order[model * 6]);
+    CHECK(first.bat == model / 2);
+    CHECK(first.slices == (model % 2 ? 84 : 42));
+    for (std::size_t t = model * 6; t < model * 6 + 6; ++t) {
+      const GridPoint p = grid_point(study, order[t]);
+      CHECK(p.bat == first.bat);
+      CHECK(p.slices == first.slices);
+      CHECK(p.theory == first.theory);
+    }
+  }
+  // Within a model the other axes stay row-major: z slowest, e0 fastest.
+  CHECK(grid_point(study, order[1]).scene.ball.e0 == 0.5);
+  CHECK(grid_point(study, order[2]).scene.z == 0.6);
+  std::vector<std::size_t> sorted = order;
+  std::ranges::sort(sorted);
+  for (std::size_t i = 0; i < sorted.size(); ++i) CHECK(sorted[i] == i);
+}
+
+TEST_CASE("outputs: any ImpactResult field, mode_energy with a fixed mode count", "[study]") {
+  const StudyDir dir;
+  const Study study = dir.load(with(good_study, "[\"vf\", \"e_eff\"]", "[\"status\", \"mode_energy\", \"u_max\"]"));
+  CHECK(study.outputs == std::vector<std::string>{"status", "mode_energy", "u_max"});
+  CHECK(study.base.vibrational_modes == 18);
+  std::string all;
+  for (const std::string& name : output_names()) all += (all.empty() ? "\"" : ", \"") + name + "\"";
+  CHECK(dir.load(with(good_study, "[\"vf\", \"e_eff\"]", "[" + all + "]")).outputs == output_names());
+}
+
+TEST_CASE("bad studies: the file and its syntax", "[study]") {
+  SECTION("missing file") {
+    const StudyDir dir;
+    const fs::path file = dir.dir / "nowhere.toml";
+    CHECK_THROWS_WITH(load_study(file), Catch::Contains(file.string()) && Catch::Contains("not found"));
+  }
+  SECTION("syntax error") { require_error("omega = 51", "omega = = 51", {"study.toml:7:", "TOML syntax error"}); }
+  SECTION("title not a string") { require_error("title = \"test\"", "title = 3", {"key 'title' = 3", "string"}); }
+  SECTION("section not a table") {
+    require_error(
+        with(with(good_study, "[output]\nvariables = [\"vf\", \"e_eff\"]", ""), "title = \"test\"", "output = 3"),
+        {"key 'output' = 3", "table"});
+  }
+}
+
+TEST_CASE("bad studies: unknown keys", "[study]") {
+  SECTION("top level") {
+    require_error("title = \"test\"", "colour = \"red\"", {"key 'colour' = \"red\"", "unknown key"});
+  }
+  SECTION("[scene]") {
+    require_error("omega = 51", "omgea = 51", {"study.toml:7:", "key 'scene.omgea' = 51", "unknown key", "omega"});
+  }
+  SECTION("[axes]") {
+    require_error("z = [0.5, 0.6, 0.7]", "height = [1]", {"key 'axes.height' = [...]", "unknown key"});
+  }
+  SECTION("not an axis") {
+    require_error("z = [0.5, 0.6, 0.7]", "integrator = [\"rk4\"]", {"key 'axes.integrator'", "cannot be an axis"});
+  }
+  SECTION("axis table") {
+    require_error("z = [0.5, 0.6, 0.7]", "z = { start = 0.5, stop = 0.7, stepp = 0.1 }",
+                  {"key 'axes.z.stepp' = 0.1", "unknown key"});
+  }
+  SECTION("[output]") { require_error("variables =", "vars =", {"key 'output.vars' = [...]", "unknown key"}); }
+}
+
+TEST_CASE("bad studies: wrong types", "[study]") {
+  SECTION("string for a number") {
+    require_error("e0 = 0.5", "e0 = \"0.5\"", {"key 'scene.e0' = \"0.5\" (string)", "number"});
+  }
+  SECTION("float for an integer") {
+    require_error("e0 = 0.5", "slices = 84.5", {"key 'scene.slices' = 84.5", "integer"});
+  }
+  SECTION("list element") {
+    require_error("z = [0.5, 0.6, 0.7]", "ball_speed = [20, \"fast\"]",
+                  {"key 'axes.ball_speed[1]' = \"fast\"", "number"});
+  }
+  SECTION("scalar for an axis") {
+    require_error("z = [0.5, 0.6, 0.7]", "z = 0.5", {"key 'axes.z' = 0.5", "a list of"});
+  }
+  SECTION("range for booleans") {
+    require_error("z = [0.5, 0.6, 0.7]", "pivot = { start = 0, stop = 1, step = 1 }",
+                  {"key 'axes.pivot' = {...}", "true or false"});
+  }
+  SECTION("pivot not a boolean") { require_error("e0 = 0.5", "pivot = 1", {"key 'scene.pivot' = 1", "true or false"}); }
+  SECTION("modes") { require_error("e0 = 0.5", "modes = \"some\"", {"key 'scene.modes' = \"some\"", "\"all\""}); }
+  SECTION("theory") {
+    require_error("e0 = 0.5", "theory = \"bernoulli\"", {"key 'scene.theory' = \"bernoulli\"", "euler-bernoulli"});
+  }
+  SECTION("integrator") {
+    require_error("e0 = 0.5", "integrator = \"euler\"", {"key 'scene.integrator' = \"euler\"", "rk4"});
+  }
+  SECTION("range bound") {
+    require_error("z = [0.5, 0.6, 0.7]", "z = { start = \"a\", stop = 0.7, step = 0.1 }",
+                  {"key 'axes.z.start' = \"a\"", "number"});
+  }
+  SECTION("range missing stop") {
+    require_error("z = [0.5, 0.6, 0.7]", "z = { start = 0.5, step = 0.1 }",
+                  {"key 'axes.z.stop' is missing", "start, stop"});
+  }
+}
+
+TEST_CASE("bad studies: empty axes", "[study]") {
+  const auto axis = [](std::string_view line, std::initializer_list<std::string_view> fragments) {
+    require_error("z = [0.5, 0.6, 0.7]", line, fragments);
+  };
+  SECTION("empty list") { axis("z = []", {"key 'axes.z' = []", "at least one value"}); }
+  SECTION("count 0") { axis("z = { start = 0.5, stop = 0.7, count = 0 }", {"key 'axes.z.count' = 0", "count"}); }
+  SECTION("stop below start") {
+    axis("z = { start = 0.7, stop = 0.5, step = 0.1 }", {"key 'axes.z.step' = 0.1", "sign"});
+  }
+  SECTION("step 0") { axis("z = { start = 0.5, stop = 0.7, step = 0 }", {"key 'axes.z.step' = 0", "not 0"}); }
+  SECTION("step and count") {
+    axis("z = { start = 0.5, stop = 0.7, step = 0.1, count = 3 }", {"key 'axes.z'", "exactly one of step and count"});
+  }
+  SECTION("too many values") {
+    axis("z = { start = 0.5, stop = 0.7, step = 1e-9 }", {"key 'axes.z.step' = 1e-09", "at most"});
+  }
+  SECTION("repeated value") { axis("z = [0.5, 0.6, 0.5]", {"key 'axes.z' = 0.5", "twice"}); }
+  SECTION("repeated bat") {
+    axis("bat = [\"bats/r161.toml\", \"bats/../bats/r161.toml\"]", {"key 'axes.bat'", "r161.toml", "twice"});
+  }
+  SECTION("integer range off the integers") {
+    axis("slices = { start = 20, stop = 30, count = 4 }", {"key 'axes.slices' = 23.3333", "integer"});
+  }
+}
+
+TEST_CASE("bad studies: the swing", "[study]") {
+  SECTION("both") {
+    require_error("omega = 51", "omega = 51\ncm_speed = 24",
+                  {"key 'scene.center' = 0.09", "exactly one", "scene.cm_speed"});
+  }
+  SECTION("both, one an axis") {
+    require_error("z = [0.5, 0.6, 0.7]", "cm_speed = [20, 24]",
+                  {"key 'scene.center' = 0.09", "exactly one", "axes.cm_speed"});
+  }
+  SECTION("neither") { require_error("center = 0.09\n", "", {"key 'scene.center' is missing", "cm_speed"}); }
+  SECTION("pivot needs the centre") {
+    require_error(
+        with(with(good_study, "center = 0.09", "cm_speed = 24"), "z = [0.5, 0.6, 0.7]", "pivot = [false, true]"),
+        {"key 'axes.pivot' = true", "rotation centre"});
+  }
+}
+
+TEST_CASE("bad studies: values", "[study]") {
+  SECTION("e0 above 1") { require_error("e0 = 0.5", "e0 = 1.5", {"study.toml:8:", "key 'scene.e0' = 1.5", "(0, 1]"}); }
+  SECTION("e0 0 in an axis") {
+    require_error("z = [0.5, 0.6, 0.7]", "e0 = [0.5, 0]", {"key 'axes.e0[1]' = 0", "(0, 1]"});
+  }
+  SECTION("e0 range leaving (0, 1]") {
+    require_error("z = [0.5, 0.6, 0.7]", "e0 = { start = 0.8, stop = 1.2, step = 0.2 }",
+                  {"key 'axes.e0' = 1.2", "(0, 1]"});
+  }
+  SECTION("a") { require_error("e0 = 0.5", "a = 0", {"key 'scene.a' = 0", "> 0"}); }
+  SECTION("k1") { require_error("e0 = 0.5", "k1 = -6.53e7", {"key 'scene.k1' = -65300000", "> 0"}); }
+  SECTION("dt") { require_error("e0 = 0.5", "dt = 0", {"key 'scene.dt' = 0", "> 0"}); }
+  SECTION("window") { require_error("e0 = 0.5", "window = -1", {"key 'scene.window' = -1", "> 0"}); }
+  SECTION("ball mass") { require_error("e0 = 0.5", "ball_mass = 0", {"key 'scene.ball_mass' = 0", "> 0"}); }
+  SECTION("nan") { require_error("ball_speed = 40", "ball_speed = nan", {"key 'scene.ball_speed' = nan", "finite"}); }
+  SECTION("inf in an axis") {
+    require_error("z = [0.5, 0.6, 0.7]", "omega = [51, inf]", {"key 'axes.omega[1]' = inf", "finite"});
+  }
+  SECTION("slices") { require_error("e0 = 0.5", "slices = 2", {"key 'scene.slices' = 2", "4 to 4096"}); }
+  SECTION("negative modes") { require_error("e0 = 0.5", "modes = -1", {"key 'scene.modes' = -1", "modes"}); }
+  SECTION("z negative") { require_error("z = [0.5, 0.6, 0.7]", "z = [-0.1]", {"key 'axes.z[0]' = -0.1", ">= 0"}); }
+  SECTION("z beyond a bat") {
+    require_error("z = [0.5, 0.6, 0.7]", "z = [0.7, 0.845]\nbat = [\"bats/torpedo.toml\", \"bats/r161.toml\"]",
+                  {"key 'axes.z' = 0.845", "every bat", "R161", "0.84"});
+  }
+  SECTION("more modes than the slices give") {
+    require_error("e0 = 0.5", "slices = 4", {"key 'scene.modes' = 18 (the default)", "6 vibrational modes"});
+    require_error("e0 = 0.5", "slices = 4\nmodes = 7", {"key 'scene.modes' = 7", "R161", "6 vibrational modes"});
+  }
+  SECTION("required keys") {
+    require_error("ball_speed = 40\n", "", {"key 'scene.ball_speed' is missing", "[axes]"});
+    require_error(with(with(good_study, "z = 0.7\n", ""), "z = [0.5, 0.6, 0.7]", "e0 = [0.5]"),
+                  {"key 'scene.z' is missing"});
+  }
+}
+
+TEST_CASE("bad studies: bats", "[study]") {
+  SECTION("missing bat file") {
+    require_error("bat = \"bats/r161.toml\"", "bat = \"bats/nope.toml\"",
+                  {"study.toml:3:", "key 'scene.bat' = \"bats/nope.toml\"", "file not found"});
+  }
+  SECTION("missing bat in an axis") {
+    require_error("z = [0.5, 0.6, 0.7]", "bat = [\"bats/r161.toml\", \"nope.toml\"]",
+                  {"key 'axes.bat' = \"nope.toml\"", "file not found"});
+  }
+  SECTION("bad bat file") {
+    const StudyDir dir;
+    dir.write("bats/broken.toml", "name = \"broken\"\nlength = -1\n");
+    const fs::path file = dir.write("study.toml", with(good_study, "bats/r161.toml", "bats/broken.toml"));
+    CHECK_THROWS_WITH(load_study(file), Catch::Contains("key 'scene.bat' = \"bats/broken.toml\"") &&
+                                            Catch::Contains("broken.toml: key 'length'"));
+  }
+  SECTION("two bats of one name") {
+    const StudyDir dir;
+    fs::copy_file(dir.dir / "bats" / "r161.toml", dir.dir / "bats" / "copy.toml");
+    const fs::path file = dir.write(
+        "study.toml", with(good_study, "z = [0.5, 0.6, 0.7]", "bat = [\"bats/r161.toml\", \"bats/copy.toml\"]"));
+    CHECK_THROWS_WITH(load_study(file),
+                      Catch::Contains("key 'axes.bat' = \"bats/copy.toml\"") && Catch::Contains("own name"));
+  }
+  SECTION("no bat") { require_error("bat = \"bats/r161.toml\"\n", "", {"key 'scene.bat' is missing"}); }
+  SECTION("empty path") { require_error("bat = \"bats/r161.toml\"", "bat = \"\"", {"key 'scene.bat' = \"\"", "path"}); }
+}
+
+TEST_CASE("bad studies: outputs", "[study]") {
+  const auto outputs = [](std::string_view list, std::initializer_list<std::string_view> fragments) {
+    require_error("[\"vf\", \"e_eff\"]", list, fragments);
+  };
+  SECTION("unknown name") {
+    outputs("[\"vf\", \"speed\"]", {"key 'output.variables[1]' = \"speed\"", "expected one of", "e_eff"});
+  }
+  SECTION("duplicate") { outputs("[\"vf\", \"e_eff\", \"vf\"]", {"key 'output.variables[2]' = \"vf\"", "twice"}); }
+  SECTION("empty") { outputs("[]", {"key 'output.variables' = [...]", "non-empty"}); }
+  SECTION("not a string") { outputs("[\"vf\", 3]", {"key 'output.variables[1]' = 3", "expected one of"}); }
+  SECTION("mode_energy with a modes axis") {
+    require_error(
+        with(with(good_study, "z = [0.5, 0.6, 0.7]", "modes = [0, 18]"), "[\"vf\", \"e_eff\"]", "[\"mode_energy\"]"),
+        {"key 'output.variables[0]' = \"mode_energy\"", "fixed number of modes"});
+  }
+  SECTION("mode_energy with all modes") {
+    require_error(with(with(good_study, "e0 = 0.5", "modes = \"all\""), "[\"vf\", \"e_eff\"]", "[\"mode_energy\"]"),
+                  {"key 'output.variables[0]' = \"mode_energy\"", "fixed number of modes"});
+  }
+}
