@@ -23,6 +23,14 @@ namespace {
 enum Tag { tag_work = 1, tag_result = 2, tag_stop = 3 };
 using Clock = std::chrono::steady_clock;
 
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+void log_rank_summary(int rank, int solves, double impact_seconds, Clock::time_point start) {
+  const double total = seconds_since(start);
+  spdlog::info("rank {}: {} eigen-solves; {:.3f} s of {:.3f} s in impacts ({:.1f} % elsewhere)", rank, solves,
+               impact_seconds, total, 100 * (1 - impact_seconds / total));
+}
+
 // The modal bases this rank has computed, one per (bat, slices, theory).
 class ModalCache {
  public:
@@ -44,9 +52,10 @@ class ModalCache {
   int solves_ = 0;
 };
 
-// Computes a chunk of points with the OpenMP threads; rows in the order of `points`.
+// Computes a chunk of points with the OpenMP threads; rows in the order of `points`. Adds the
+// wall time of the impacts alone to `impact_seconds`, to tell the engine's overhead from them.
 std::vector<double> compute_chunk(const Study& study, const OutputLayout& layout, ModalCache& cache,
-                                  const std::vector<std::uint64_t>& points) {
+                                  const std::vector<std::uint64_t>& points, double& impact_seconds) {
   std::vector<GridPoint> grid(points.size());
   std::vector<const ModalBasis*> bases(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {  // modes first, serially: the cache is not shared
@@ -54,9 +63,11 @@ std::vector<double> compute_chunk(const Study& study, const OutputLayout& layout
     bases[i] = &cache.get(grid[i]);
   }
   std::vector<double> rows(points.size() * layout.width);
+  const auto start = Clock::now();
 #pragma omp parallel for schedule(dynamic)
   for (std::size_t i = 0; i < points.size(); ++i)
     layout.extract(simulate_impact(*bases[i], grid[i].scene), rows.data() + i * layout.width);
+  impact_seconds += seconds_since(start);
   return rows;
 }
 
@@ -95,6 +106,8 @@ class Coordinator {
       if (!done_[point]) todo_.push_back(point);
     const std::size_t threads = static_cast<std::size_t>(omp_get_max_threads());
     chunk_ = std::clamp<std::size_t>(todo_.size() / (ranks * threads * 16), 4 * threads, 4096);
+    // Rank 0 answers requests only between its own chunks: small ones keep the workers' wait short.
+    own_chunk_ = ranks > 1 ? std::max<std::size_t>(threads, chunk_ / 64) : chunk_;
   }
 
   static std::filesystem::path journal_path(const RunOptions& o) { return o.output.string() + ".journal"; }
@@ -104,19 +117,20 @@ class Coordinator {
     while (active > 0 || next_ < todo_.size()) {
       serve_requests(active, next_ >= todo_.size());
       if (next_ < todo_.size()) {
-        const std::vector<std::uint64_t> chunk = take_chunk();
-        finish(chunk, compute_chunk(study_, layout_, cache_, chunk));
+        const std::vector<std::uint64_t> chunk = take_chunk(own_chunk_);
+        finish(chunk, compute_chunk(study_, layout_, cache_, chunk, impact_seconds_));
       }
     }
-    spdlog::info("rank 0: {} eigen-solves", cache_.solves());
   }
+
+  void log_summary(Clock::time_point start) const { log_rank_summary(0, cache_.solves(), impact_seconds_, start); }
 
   const std::vector<double>& rows() const { return rows_; }
   void remove_journal() { journal_.remove(); }
 
  private:
-  std::vector<std::uint64_t> take_chunk() {
-    const std::size_t end = std::min(next_ + chunk_, todo_.size());
+  std::vector<std::uint64_t> take_chunk(std::size_t size) {
+    const std::size_t end = std::min(next_ + size, todo_.size());
     std::vector<std::uint64_t> chunk(todo_.begin() + next_, todo_.begin() + end);
     next_ = end;
     return chunk;
@@ -131,7 +145,7 @@ class Coordinator {
       else MPI_Iprobe(MPI_ANY_SOURCE, tag_result, MPI_COMM_WORLD, &waiting, &status);
       if (!waiting) return;
       receive_result(status);
-      const std::vector<std::uint64_t> chunk = next_ < todo_.size() ? take_chunk() : std::vector<std::uint64_t>{};
+      const std::vector<std::uint64_t> chunk = next_ < todo_.size() ? take_chunk(chunk_) : std::vector<std::uint64_t>{};
       if (chunk.empty()) {
         MPI_Send(nullptr, 0, MPI_UINT64_T, status.MPI_SOURCE, tag_stop, MPI_COMM_WORLD);
         --active;
@@ -173,10 +187,13 @@ class Coordinator {
   std::vector<bool> done_;
   Progress progress_;
   std::vector<std::uint64_t> todo_;
-  std::size_t next_ = 0, chunk_ = 1;
+  std::size_t next_ = 0, chunk_ = 1, own_chunk_ = 1;
+  double impact_seconds_ = 0;
 };
 
 void work(const Study& study, const OutputLayout& layout, int rank) {
+  const auto start = Clock::now();
+  double impact_seconds = 0;
   ModalCache cache(study);
   std::vector<double> message;  // first request: no result
   while (true) {
@@ -188,11 +205,11 @@ void work(const Study& study, const OutputLayout& layout, int rank) {
     std::vector<std::uint64_t> chunk(count);
     MPI_Recv(chunk.data(), count, MPI_UINT64_T, 0, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
     if (status.MPI_TAG == tag_stop) break;
-    const std::vector<double> rows = compute_chunk(study, layout, cache, chunk);
+    const std::vector<double> rows = compute_chunk(study, layout, cache, chunk, impact_seconds);
     message.assign(chunk.begin(), chunk.end());
     message.insert(message.end(), rows.begin(), rows.end());
   }
-  spdlog::info("rank {}: {} eigen-solves", rank, cache.solves());
+  log_rank_summary(rank, cache.solves(), impact_seconds, start);
 }
 
 std::vector<std::vector<double>> bat_frequencies(const Study& study) {
@@ -221,10 +238,12 @@ void run_study(const Study& study, const RunOptions& options) {
                omp_get_max_threads());
   Coordinator coordinator(study, layout, options, ranks);
   coordinator.run();
-  const RunInfo info{ranks, omp_get_max_threads(), std::chrono::duration<double>(Clock::now() - start).count()};
+  const RunInfo info{ranks, omp_get_max_threads(), seconds_since(start)};
   write_dataset(options.output, make_dataset(study, layout, coordinator.rows(), bat_frequencies(study), info));
   coordinator.remove_journal();
-  spdlog::info("wrote {} in {:.2f} s", options.output.string(), info.wall_time);
+  coordinator.log_summary(start);
+  spdlog::info("wrote {}: {} points in {:.3f} s, {:.0f} points/s", options.output.string(), study.points(),
+               info.wall_time, study.points() / info.wall_time);
 }
 
 }  // namespace sweetspot

@@ -105,7 +105,7 @@ std::vector<double> axis_values(const Study& study, std::string_view name) {
 TEST_CASE("every shipped study loads", "[study]") {
   const std::vector<std::pair<std::string, std::size_t>> expected = {
       {"low_impact.toml", 54}, {"high_impact.toml", 3 * 44}, {"e_eff_full.toml", 44},
-      {"e_eff_half.toml", 44}, {"pivot.toml", 2 * 54},       {"design_space.toml", 2 * 44 * 11 * 11}};
+      {"e_eff_half.toml", 44}, {"pivot.toml", 2 * 54},       {"design_space.toml", 2 * 44 * 21 * 21}};
   std::set<std::string> found;
   for (const auto& entry : fs::directory_iterator(source_path("studies"))) {
     if (entry.path().extension() != ".toml") continue;
