@@ -29,18 +29,16 @@ void bat_energies(const ImpactScene& scene, const SceneGeometry& g, const ModalB
 
 }  // namespace
 
-ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& scene) {
-  validate(scene, basis);
-  const SceneGeometry g = scene_geometry(scene, basis);
-  const Collision c = collide(g.contact, scene.ball, scene.ball_speed, scene.integrator);
+void close_balance(ImpactEnergy& e) {
+  e.residual = e.initial - (e.ball + e.bat_translation + e.bat_rotation + e.vibration + e.ball_dissipated);
+}
 
+ImpactResult collision_result(const Collision& c) {
   ImpactResult r;
   r.status = c.status;
   r.message = c.message;
-  r.z = g.z;
   if (c.status == CollisionStatus::refused_step) return r;
   r.vf = c.ball_velocity;
-  r.e_eff = effective_cor(r.vf, g.recoil, scene.ball_speed, g.bat_speed);
   r.contact_time = c.contact_time;
   r.collision_time = c.collision_time;
   r.u_max = c.u_max;
@@ -48,13 +46,25 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& scene) 
   r.impulse = c.impulse;
   r.contacts = c.contacts;
   r.force = c.force;
+  r.energy.ball_dissipated = c.dissipated;
+  return r;
+}
+
+ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& scene) {
+  validate(scene, basis);
+  const SceneGeometry g = scene_geometry(scene, basis);
+  const Collision c = collide(g.contact, scene.ball, scene.ball_speed, scene.integrator);
+
+  ImpactResult r = collision_result(c);
+  r.z = g.z;
+  if (c.status == CollisionStatus::refused_step) return r;
+  r.e_eff = effective_cor(r.vf, g.recoil, scene.ball_speed, g.bat_speed);
 
   ImpactEnergy& e = r.energy;
   e.initial = 0.5 * scene.ball.mass * scene.ball_speed * scene.ball_speed + 0.5 * g.contact.velocity0.squaredNorm();
   e.ball = 0.5 * scene.ball.mass * r.vf * r.vf;
   bat_energies(scene, g, basis, c, r);
-  e.ball_dissipated = c.dissipated;
-  e.residual = e.initial - (e.ball + e.bat_translation + e.bat_rotation + e.vibration + e.ball_dissipated);
+  close_balance(e);
   return r;
 }
 

@@ -12,8 +12,8 @@
 #include <tuple>
 
 #include "sweetspot/bat_file.hpp"
-#include "sweetspot/impact.hpp"
 #include "sweetspot/journal.hpp"
+#include "sweetspot/study_point.hpp"
 #include "sweetspot/study_results.hpp"
 
 namespace sweetspot {
@@ -57,16 +57,16 @@ class ModalCache {
 std::vector<double> compute_chunk(const Study& study, const OutputLayout& layout, ModalCache& cache,
                                   const std::vector<std::uint64_t>& points, double& impact_seconds) {
   std::vector<GridPoint> grid(points.size());
-  std::vector<const ModalBasis*> bases(points.size());
+  std::vector<const ModalBasis*> bases(points.size(), nullptr);  // none for the wall and the toy
   for (std::size_t i = 0; i < points.size(); ++i) {  // modes first, serially: the cache is not shared
     grid[i] = grid_point(study, points[i]);
-    bases[i] = &cache.get(grid[i]);
+    if (has_bat(grid[i].kind)) bases[i] = &cache.get(grid[i]);
   }
   std::vector<double> rows(points.size() * layout.width);
   const auto start = Clock::now();
 #pragma omp parallel for schedule(dynamic)
   for (std::size_t i = 0; i < points.size(); ++i)
-    layout.extract(simulate_impact(*bases[i], grid[i].scene), rows.data() + i * layout.width);
+    layout.extract(simulate_point(grid[i], bases[i]), rows.data() + i * layout.width);
   impact_seconds += seconds_since(start);
   return rows;
 }
@@ -212,6 +212,7 @@ void work(const Study& study, const OutputLayout& layout, int rank) {
   log_rank_summary(rank, cache.solves(), impact_seconds, start);
 }
 
+// The vibrational frequencies (Hz) of each bat, none for the kinds without a bat.
 std::vector<std::vector<double>> bat_frequencies(const Study& study) {
   std::vector<std::vector<double>> f;
   for (const auto& file : study.bats) {
@@ -234,8 +235,8 @@ void run_study(const Study& study, const RunOptions& options) {
     return;
   }
   const auto start = Clock::now();
-  spdlog::info("study {}: {} points on {} rank(s) x {} thread(s)", study.file.string(), study.points(), ranks,
-               omp_get_max_threads());
+  spdlog::info("study {} ({}): {} points on {} rank(s) x {} thread(s)", study.file.string(), to_string(study.kind),
+               study.points(), ranks, omp_get_max_threads());
   Coordinator coordinator(study, layout, options, ranks);
   coordinator.run();
   const RunInfo info{ranks, omp_get_max_threads(), seconds_since(start)};

@@ -84,18 +84,30 @@ struct Where {
   throw InputError(text);
 }
 
-// ---- The scene keys ----------------------------------------------------------------------------
+// ---- The scene keys and outputs of each kind of study ----------------------------------------
 
-enum class Kind { number, integer, boolean, bat, theory, modes, integrator };
+// A set of study kinds, one bit each: which kinds a key or an output belongs to.
+using KindSet = unsigned;
+constexpr KindSet bit(StudyKind kind) { return 1u << static_cast<unsigned>(kind); }
+constexpr KindSet impact = bit(StudyKind::impact), wall = bit(StudyKind::wall), toy = bit(StudyKind::toy);
+constexpr KindSet ball_kinds = impact | wall;  // the kinds with the nonlinear ball and its integrator
+constexpr KindSet every_kind = impact | wall | toy;
 
-// One key of [scene]: how its value is read, the rule validate() in scene.cpp applies to it, and
-// how it sets a grid point. Every value is a number here (see Axis in study.hpp).
+std::string kind_text(StudyKind kind) { return quote(to_string(kind)); }
+
+enum class Type { number, integer, boolean, bat, theory, modes, integrator };
+
+// One key of [scene]: how its value is read, the rule validate() in scene.cpp applies to it, how
+// it sets a grid point, and the kinds of study it belongs to and must be given in. Every value
+// is a number here (see Axis in study.hpp).
 struct KeySpec {
   std::string_view name;
-  Kind kind;
+  Type type;
   std::string_view expected;
   bool (*valid)(double);
   void (*set)(GridPoint&, double);
+  KindSet kinds = impact;
+  KindSet required = 0;
   bool axis = true;
 };
 
@@ -108,42 +120,48 @@ bool slice_count(double x) { return x >= 4 && x <= 4096; }  // as `impact --slic
 bool mode_count(double x) { return x >= 0 && x <= 1e6; }    // "all" is not checked
 
 constexpr KeySpec keys[] = {
-    {"bat", Kind::bat, "a bat file path (relative to the study file)", any,
-     [](GridPoint& p, double x) { p.bat = static_cast<std::size_t>(x); }},
-    {"theory", Kind::theory, "\"timoshenko\" or \"euler-bernoulli\"", any,
+    {"bat", Type::bat, "a bat file path (relative to the study file)", any,
+     [](GridPoint& p, double x) { p.bat = static_cast<std::size_t>(x); }, impact, impact},
+    {"theory", Type::theory, "\"timoshenko\" or \"euler-bernoulli\"", any,
      [](GridPoint& p, double x) { p.theory = static_cast<BeamTheory>(x); }},
-    {"slices", Kind::integer, "an integer slice count from 4 to 4096", slice_count,
+    {"slices", Type::integer, "an integer slice count from 4 to 4096", slice_count,
      [](GridPoint& p, double x) { p.slices = static_cast<int>(x); }},
-    {"z", Kind::number, "a finite number >= 0 (m from the knob)", on_bat,
-     [](GridPoint& p, double x) { p.scene.z = x; }},
-    {"ball_speed", Kind::number, "a finite number (m/s)", finite,
-     [](GridPoint& p, double x) { p.scene.ball_speed = x; }},
-    {"e0", Kind::number, "a number in (0, 1]", unit_interval, [](GridPoint& p, double x) { p.scene.ball.e0 = x; }},
-    {"ball_mass", Kind::number, "a finite number > 0 (kg)", positive,
-     [](GridPoint& p, double x) { p.scene.ball.mass = x; }},
-    {"ball_radius", Kind::number, "a finite number > 0 (m)", positive,
-     [](GridPoint& p, double x) { p.scene.ball.radius = x; }},
-    {"k1", Kind::number, "a finite number > 0 (N/m^a)", positive, [](GridPoint& p, double x) { p.scene.ball.k1 = x; }},
-    {"a", Kind::number, "a finite number > 0", positive, [](GridPoint& p, double x) { p.scene.ball.a = x; }},
-    {"center", Kind::number, "a finite number (m from the knob)", finite,
+    {"z", Type::number, "a finite number >= 0 (m from the knob)", on_bat,
+     [](GridPoint& p, double x) { p.scene.z = x; }, impact, impact},
+    // The wall takes only speeds > 0: check_wall_speeds.
+    {"ball_speed", Type::number, "a finite number (m/s)", finite,
+     [](GridPoint& p, double x) { p.scene.ball_speed = x; }, ball_kinds, ball_kinds},
+    {"e0", Type::number, "a number in (0, 1]", unit_interval, [](GridPoint& p, double x) { p.scene.ball.e0 = x; },
+     ball_kinds},
+    {"ball_mass", Type::number, "a finite number > 0 (kg)", positive,
+     [](GridPoint& p, double x) { p.scene.ball.mass = x; }, ball_kinds},
+    {"ball_radius", Type::number, "a finite number > 0 (m)", positive,
+     [](GridPoint& p, double x) { p.scene.ball.radius = x; }, ball_kinds},
+    {"k1", Type::number, "a finite number > 0 (N/m^a)", positive, [](GridPoint& p, double x) { p.scene.ball.k1 = x; },
+     ball_kinds},
+    {"a", Type::number, "a finite number > 0", positive, [](GridPoint& p, double x) { p.scene.ball.a = x; },
+     ball_kinds},
+    {"center", Type::number, "a finite number (m from the knob)", finite,
      [](GridPoint& p, double x) {
        p.scene.swing.center = x;
        p.scene.swing.about_center = true;
      }},
-    {"cm_speed", Kind::number, "a finite number (m/s)", finite,
+    {"cm_speed", Type::number, "a finite number (m/s)", finite,
      [](GridPoint& p, double x) {
        p.scene.swing.cm_speed = x;
        p.scene.swing.about_center = false;
      }},
-    {"omega", Kind::number, "a finite number (rad/s)", finite, [](GridPoint& p, double x) { p.scene.swing.omega = x; }},
-    {"pivot", Kind::boolean, "true or false", any, [](GridPoint& p, double x) { p.scene.pivoted = x != 0; }},
-    {"modes", Kind::modes, "a number of vibrational modes >= 0, or \"all\"", mode_count,
+    {"omega", Type::number, "a finite number (rad/s)", finite, [](GridPoint& p, double x) { p.scene.swing.omega = x; }},
+    {"pivot", Type::boolean, "true or false", any, [](GridPoint& p, double x) { p.scene.pivoted = x != 0; }},
+    {"modes", Type::modes, "a number of vibrational modes >= 0, or \"all\"", mode_count,
      [](GridPoint& p, double x) { p.scene.vibrational_modes = static_cast<int>(x); }},
-    {"integrator", Kind::integrator, "\"rk4\"", any, [](GridPoint&, double) {}, false},
-    {"dt", Kind::number, "a finite number > 0 (s)", positive,
-     [](GridPoint& p, double x) { p.scene.integrator.dt = x; }},
-    {"window", Kind::number, "a finite number > 0 (s)", positive,
-     [](GridPoint& p, double x) { p.scene.integrator.window = x; }},
+    {"integrator", Type::integrator, "\"rk4\"", any, [](GridPoint&, double) {}, ball_kinds, 0, false},
+    {"dt", Type::number, "a finite number > 0 (s)", positive,
+     [](GridPoint& p, double x) { p.scene.integrator.dt = x; }, ball_kinds},
+    {"window", Type::number, "a finite number > 0 (s)", positive,
+     [](GridPoint& p, double x) { p.scene.integrator.window = x; }, ball_kinds},
+    {"omega_tau", Type::number, "a finite number > 0 (omega tau of the toy model)", positive,
+     [](GridPoint& p, double x) { p.omega_tau = x; }, toy, toy},
 };
 
 const KeySpec* find_key(std::string_view name) {
@@ -151,11 +169,47 @@ const KeySpec* find_key(std::string_view name) {
   return it == std::end(keys) ? nullptr : &*it;
 }
 
-std::string key_list(bool axes_only) {
+std::string key_list(StudyKind kind, bool axes_only) {
   std::string list;
   for (const KeySpec& k : keys)
-    if (k.axis || !axes_only) list += (list.empty() ? "" : ", ") + std::string(k.name);
+    if ((k.kinds & bit(kind)) && (k.axis || !axes_only)) list += (list.empty() ? "" : ", ") + std::string(k.name);
   return list;
+}
+
+// An output variable (an ImpactResult field), the kinds that give it and those that write it when
+// [output] names none. The order here is the order of output_names() and default_outputs().
+struct OutputSpec {
+  std::string_view name;
+  KindSet kinds;
+  KindSet by_default;
+};
+
+constexpr OutputSpec output_specs[] = {
+    {"vf", every_kind, every_kind},
+    {"vf_van_zandt", toy, toy},
+    {"e_eff", ball_kinds, ball_kinds},
+    {"contact_time", ball_kinds, ball_kinds},
+    {"collision_time", ball_kinds, ball_kinds},
+    {"u_max", ball_kinds, 0},
+    {"peak_force", ball_kinds, 0},
+    {"impulse", ball_kinds, 0},
+    {"contacts", impact, 0},
+    {"energy_initial", every_kind, 0},
+    {"energy_ball", every_kind, toy},
+    {"energy_bat_translation", impact | toy, toy},
+    {"energy_bat_rotation", impact, 0},
+    {"energy_vibration", impact | toy, toy},
+    {"energy_ball_dissipated", ball_kinds, 0},
+    {"energy_residual", every_kind, 0},
+    {"mode_energy", impact, 0},
+    {"status", every_kind, every_kind},
+};
+
+std::vector<std::string> output_list(StudyKind kind, KindSet OutputSpec::*member) {
+  std::vector<std::string> names;
+  for (const OutputSpec& o : output_specs)
+    if (o.*member & bit(kind)) names.emplace_back(o.name);
+  return names;
 }
 
 // ---- Reading values ----------------------------------------------------------------------------
@@ -197,21 +251,21 @@ struct Value {
 Value read_value(const Where& at, const KeySpec& spec, const toml::node& node) {
   const auto bad = [&] { reject(at, describe(node), "expected " + std::string(spec.expected)); };
   Value v;
-  if (spec.kind == Kind::number && node.is_number())
+  if (spec.type == Type::number && node.is_number())
     v.number = *node.value<double>();
-  else if ((spec.kind == Kind::integer || spec.kind == Kind::modes) && node.is_integer())
+  else if ((spec.type == Type::integer || spec.type == Type::modes) && node.is_integer())
     v.number = static_cast<double>(node.as_integer()->get());
-  else if (spec.kind == Kind::boolean && node.is_boolean())
+  else if (spec.type == Type::boolean && node.is_boolean())
     v.number = node.as_boolean()->get();
-  else if (spec.kind == Kind::modes && node.value<std::string_view>() == "all")
+  else if (spec.type == Type::modes && node.value<std::string_view>() == "all")
     return {all_modes, ""};
-  else if ((spec.kind == Kind::bat || spec.kind == Kind::theory || spec.kind == Kind::integrator) && node.is_string())
+  else if ((spec.type == Type::bat || spec.type == Type::theory || spec.type == Type::integrator) && node.is_string())
     v.label = node.as_string()->get();
   else
     bad();
-  if (spec.kind == Kind::bat && v.label.empty()) bad();
-  if (spec.kind == Kind::integrator && v.label != to_string(Integrator::rk4)) bad();
-  if (spec.kind == Kind::theory) {
+  if (spec.type == Type::bat && v.label.empty()) bad();
+  if (spec.type == Type::integrator && v.label != to_string(Integrator::rk4)) bad();
+  if (spec.type == Type::theory) {
     try {
       v.number = static_cast<double>(parse_beam_theory(v.label));
     } catch (const InputError&) {
@@ -237,7 +291,7 @@ const Setting* find(const std::vector<Setting>& settings, std::string_view name)
 
 void add(Setting& s, Value v) {
   s.values.push_back(v.number);
-  if (s.spec->kind == Kind::bat || s.spec->kind == Kind::theory) s.labels.push_back(std::move(v.label));
+  if (s.spec->type == Type::bat || s.spec->type == Type::theory) s.labels.push_back(std::move(v.label));
 }
 
 // 15 significant digits: 0.305 + 3 * 0.01 becomes the 0.335 a reader expects.
@@ -256,33 +310,61 @@ double range_bound(const Where& at, const toml::table& range, std::string_view n
 }
 
 // {start, stop, step}: stop is included when it lands within 1e-9 step of a point.
-// {start, stop, count}: count points, both ends included.
+std::vector<double> stepped_range(const Where& at, const toml::table& range, double start, double stop, bool integer) {
+  const double step = range_bound(at, range, "step", integer);
+  const Where where = at.child("step", *range.get("step"));
+  if (step == 0 || (stop - start) * step < 0)
+    reject(where, format_number(step),
+           "expected a step with the sign of stop - start = " + format_number(stop - start) + ", not 0");
+  const double n = std::floor((stop - start) / step + 1e-9) + 1;
+  if (n > max_axis_values)
+    reject(where, format_number(step), "gives " + format_number(n) + " values; an axis has at most 1e6");
+  std::vector<double> values;
+  for (int i = 0; i < n; ++i) values.push_back(tidy(start + i * step));
+  if (std::abs(values.back() - stop) <= 1e-9 * std::abs(step)) values.back() = stop;
+  return values;
+}
+
+// {start, stop, count[, spacing]}: count points, both ends included, evenly spaced in the value
+// or (spacing = "log") in its logarithm, as for omega tau over decades.
+std::vector<double> counted_range(const Where& at, const toml::table& range, double start, double stop, bool log) {
+  const toml::node& node = *range.get("count");
+  if (!node.is_integer() || node.as_integer()->get() < 1 || node.as_integer()->get() > max_axis_values)
+    reject(at.child("count", node), describe(node), "expected an integer count from 1 to 1e6");
+  for (const auto& [name, value] : {std::pair<std::string_view, double>{"start", start}, {"stop", stop}})
+    if (log && !(value > 0))
+      reject(at.child(name, *range.get(name)), format_number(value), "a log range needs start and stop > 0");
+  const auto n = node.as_integer()->get();
+  const auto interior = [&](double fraction) {
+    return tidy(log ? start * std::pow(stop / start, fraction) : start + fraction * (stop - start));
+  };
+  std::vector<double> values;
+  for (int i = 0; i < n; ++i)
+    values.push_back(n == 1 ? start : i + 1 == n ? stop : interior(static_cast<double>(i) / (n - 1)));
+  return values;
+}
+
+// spacing = "linear" (the default) or "log"; only a range with a count has a spacing.
+bool log_spacing(const Where& at, const toml::table& range) {
+  const toml::node* node = range.get("spacing");
+  if (!node) return false;
+  const Where where = at.child("spacing", *node);
+  const std::optional<std::string_view> name = node->value<std::string_view>();
+  if (!node->is_string() || (name != "linear" && name != "log"))
+    reject(where, describe(*node), "expected \"linear\" or \"log\"");
+  if (range.contains("step")) reject(where, describe(*node), "a spacing goes with count, not step");
+  return name == "log";
+}
+
 std::vector<double> read_range(const Where& at, const KeySpec& spec, const toml::table& range) {
-  reject_unknown(at, range, {"start", "stop", "step", "count"});
-  const bool integer = spec.kind != Kind::number;  // slices, modes
+  reject_unknown(at, range, {"start", "stop", "step", "count", "spacing"});
+  const bool integer = spec.type != Type::number;  // slices, modes
   const double start = range_bound(at, range, "start", integer), stop = range_bound(at, range, "stop", integer);
   if (range.contains("step") == range.contains("count"))
     reject(at, "{...}", "a range needs exactly one of step and count");
-  std::vector<double> values;
-  if (range.contains("step")) {
-    const double step = range_bound(at, range, "step", integer);
-    const Where where = at.child("step", *range.get("step"));
-    if (step == 0 || (stop - start) * step < 0)
-      reject(where, format_number(step),
-             "expected a step with the sign of stop - start = " + format_number(stop - start) + ", not 0");
-    const double n = std::floor((stop - start) / step + 1e-9) + 1;
-    if (n > max_axis_values)
-      reject(where, format_number(step), "gives " + format_number(n) + " values; an axis has at most 1e6");
-    for (int i = 0; i < n; ++i) values.push_back(tidy(start + i * step));
-    if (std::abs(values.back() - stop) <= 1e-9 * std::abs(step)) values.back() = stop;
-  } else {
-    const toml::node& node = *range.get("count");
-    if (!node.is_integer() || node.as_integer()->get() < 1 || node.as_integer()->get() > max_axis_values)
-      reject(at.child("count", node), describe(node), "expected an integer count from 1 to 1e6");
-    const auto n = node.as_integer()->get();
-    for (int i = 0; i < n; ++i)
-      values.push_back(n == 1 ? start : i + 1 == n ? stop : tidy(start + i * (stop - start) / (n - 1)));
-  }
+  const bool log = log_spacing(at, range);
+  const std::vector<double> values = range.contains("step") ? stepped_range(at, range, start, stop, integer)
+                                                            : counted_range(at, range, start, stop, log);
   for (const double x : values)
     if (!spec.valid(x) || (integer && x != std::round(x)))
       reject(at, format_number(x), "the range gives a value that is not " + std::string(spec.expected));
@@ -298,7 +380,7 @@ std::optional<T> first_repeat(std::vector<T> items) {
 
 // Repeated values would make the axis useless as a coordinate (which point is z = 0.5?).
 void reject_duplicates(const Setting& s, const fs::path& dir) {
-  if (s.spec->kind == Kind::bat) {
+  if (s.spec->type == Type::bat) {
     std::vector<std::string> paths;
     for (const std::string& label : s.labels) paths.push_back((dir / label).lexically_normal().string());
     if (const auto twice = first_repeat(paths)) reject(s.where, quote(*twice), "names the same bat file twice");
@@ -309,7 +391,7 @@ void reject_duplicates(const Setting& s, const fs::path& dir) {
 
 Setting read_axis(const Where& at, const KeySpec& spec, const toml::node& node, const fs::path& dir) {
   Setting s{&spec, at, {}, {}};
-  const bool numeric = spec.kind == Kind::number || spec.kind == Kind::integer || spec.kind == Kind::modes;
+  const bool numeric = spec.type == Type::number || spec.type == Type::integer || spec.type == Type::modes;
   if (const toml::array* list = node.as_array()) {
     for (std::size_t i = 0; i < list->size(); ++i) add(s, read_value(at.item(i, (*list)[i]), spec, (*list)[i]));
   } else if (numeric && node.is_table()) {
@@ -317,14 +399,23 @@ Setting read_axis(const Where& at, const KeySpec& spec, const toml::node& node, 
   } else {
     reject(at, describe(node),
            "expected a list of values, each " + std::string(spec.expected) +
-               (numeric ? ", or a range {start, stop, step} or {start, stop, count}" : ""));
+               (numeric ? ", or a range {start, stop, step} or {start, stop, count[, spacing = \"log\"]}" : ""));
   }
   if (s.values.empty()) reject(at, "[]", "an axis needs at least one value");
   reject_duplicates(s, dir);
   return s;
 }
 
-std::vector<Setting> read_settings(const Where& top, const toml::table& doc, std::string_view section) {
+// Why a key of the table cannot stand here, or empty when it can.
+std::string misplaced(const KeySpec* spec, StudyKind kind, bool axes) {
+  if (!spec) return "unknown key";
+  if (!(spec->kinds & bit(kind))) return "does not apply to kind " + kind_text(kind);
+  if (axes && !spec->axis) return "cannot be an axis";
+  return "";
+}
+
+std::vector<Setting> read_settings(const Where& top, const toml::table& doc, std::string_view section,
+                                   StudyKind kind) {
   std::vector<Setting> settings;
   const toml::table* table = subtable(top, doc, section);
   if (!table) return settings;
@@ -333,9 +424,8 @@ std::vector<Setting> read_settings(const Where& top, const toml::table& doc, std
   for (const auto& [name, node] : written_order(*table)) {
     const KeySpec* spec = find_key(name);
     const Where where = at.child(name, *node);
-    if (!spec || (axes && !spec->axis))
-      reject(where, describe(*node),
-             (spec ? "cannot be an axis" : "unknown key") + std::string("; expected one of ") + key_list(axes));
+    if (const std::string why = misplaced(spec, kind, axes); !why.empty())
+      reject(where, describe(*node), why + "; expected one of " + key_list(kind, axes));
     if (axes)
       settings.push_back(read_axis(where, *spec, *node, top.file->parent_path()));
     else
@@ -359,11 +449,19 @@ struct Settings {
   }
 };
 
-const Setting& require(const Settings& s, const Where& top, std::string_view name) {
-  if (!s[name])
-    reject(Where{top.file, "scene", 0}.missing(name), "",
-           "expected " + std::string(find_key(name)->expected) + ", in [scene] or as an axis in [axes]");
-  return *s[name];
+void check_required(const Settings& s, const Where& top, StudyKind kind) {
+  for (const KeySpec& key : keys)
+    if ((key.required & bit(kind)) && !s[key.name])
+      reject(Where{top.file, "scene", 0}.missing(key.name), "",
+             "expected " + std::string(key.expected) + ", in [scene] or as an axis in [axes]");
+}
+
+// The wall stands still, so only a ball moving toward it (speed > 0) ever touches it.
+void check_wall_speeds(const Settings& s) {
+  const Setting& speed = *s["ball_speed"];
+  for (const double v : speed.values)
+    if (!(v > 0))
+      reject(speed.where, format_number(v), "expected a speed > 0 (m/s) toward the wall, which does not move");
 }
 
 void check_swing(const Settings& s, const Where& top) {
@@ -440,27 +538,63 @@ void check_grid_size(const Settings& s, const Where& top) {
     reject(Where{top.file, "axes", 0}, "{...}", "the grid has " + format_number(points) + " points; at most 1e9");
 }
 
+// The impact kind's checks across keys: the swing, the bat files, z on every bat, mode counts.
+void check_bat_scene(Study& study, const Settings& s, const Where& top) {
+  const Setting& bat = *s["bat"];
+  check_swing(s, top);
+  const std::vector<Bat> bats = load_bats(study, bat);
+  check_on_bats(*s["z"], bats, bat);
+  check_mode_counts(s, top, bats, bat);
+}
+
+// ---- The kind ----------------------------------------------------------------------------------
+
+constexpr StudyKind study_kinds[] = {StudyKind::impact, StudyKind::wall, StudyKind::toy};
+
+StudyKind read_kind(const Where& top, const toml::table& doc) {
+  const toml::node* node = doc.get("kind");
+  if (!node) return StudyKind::impact;
+  std::string names;
+  for (const StudyKind kind : study_kinds) {
+    if (node->value<std::string_view>() == to_string(kind)) return kind;
+    names += (names.empty() ? "" : ", ") + kind_text(kind);
+  }
+  reject(top.child("kind", *node), describe(*node), "expected one of " + names);
+}
+
 // ---- Outputs -----------------------------------------------------------------------------------
 
-std::vector<std::string> read_outputs(const Where& top, const toml::table& doc, const Settings& s) {
+std::string output_list_text(StudyKind kind) {
+  std::string names;
+  for (const std::string& n : output_names(kind)) names += (names.empty() ? "" : ", ") + n;
+  return names;
+}
+
+// Why an output cannot be asked of a study of this kind, or empty when it can.
+std::string unavailable(const toml::node& item, StudyKind kind) {
+  const auto spec = std::ranges::find(output_specs, item.value_or(std::string_view()), &OutputSpec::name);
+  if (!item.is_string() || spec == std::end(output_specs)) return "expected one of " + output_list_text(kind);
+  if (!(spec->kinds & bit(kind)))
+    return "does not apply to kind " + kind_text(kind) + "; expected one of " + output_list_text(kind);
+  return "";
+}
+
+std::vector<std::string> read_outputs(const Where& top, const toml::table& doc, const Settings& s, StudyKind kind) {
   const toml::table* table = subtable(top, doc, "output");
   const Where section{top.file, "output", 0};
   if (table) reject_unknown(section, *table, {"variables"});
-  if (!table || !table->contains("variables")) return default_outputs();
+  if (!table || !table->contains("variables")) return default_outputs(kind);
   const toml::node& node = *table->get("variables");
   const Where at = section.child("variables", node);
   if (!node.is_array() || node.as_array()->empty())
     reject(at, describe(node), "expected a non-empty list of output names");
-  std::string names;
-  for (const std::string& n : output_names()) names += (names.empty() ? "" : ", ") + n;
   // One mode dimension for the whole dataset: its length must not vary from point to point.
   const bool fixed_modes = !find(s.axes, "modes") && s.values("modes", default_modes)[0] >= 1;
   std::vector<std::string> outputs;
   for (std::size_t i = 0; i < node.as_array()->size(); ++i) {
     const toml::node& item = (*node.as_array())[i];
     const std::string name = item.value_or(std::string());
-    if (!item.is_string() || std::ranges::count(output_names(), name) == 0)
-      reject(at.item(i, item), describe(item), "expected one of " + names);
+    if (const std::string why = unavailable(item, kind); !why.empty()) reject(at.item(i, item), describe(item), why);
     if (std::ranges::count(outputs, name))
       reject(at.item(i, item), describe(item), "appears twice; list each output once");
     if (name == "mode_energy" && !fixed_modes)
@@ -496,12 +630,24 @@ toml::table parse_toml(const fs::path& file, const std::string& text) {
 
 Axis make_axis(const Setting& s) {
   Axis axis{std::string(s.spec->name), s.values, s.labels};
-  if (s.spec->kind == Kind::bat)
+  if (s.spec->type == Type::bat)
     for (std::size_t i = 0; i < axis.size(); ++i) axis.values[i] = static_cast<double>(i);
   return axis;
 }
 
 }  // namespace
+
+const char* to_string(StudyKind kind) {
+  switch (kind) {
+    case StudyKind::impact:
+      return "impact";
+    case StudyKind::wall:
+      return "wall";
+    case StudyKind::toy:
+      return "toy";
+  }
+  return "?";
+}
 
 const char* to_string(Integrator integrator) {
   switch (integrator) {
@@ -523,26 +669,24 @@ Study load_study(const fs::path& file) {
   study.text = read_text(file);
   const toml::table doc = parse_toml(file, study.text);
   const Where top{&study.file, "", 0};
-  reject_unknown(top, doc, {"title", "scene", "axes", "output"});
+  reject_unknown(top, doc, {"title", "kind", "scene", "axes", "output"});
   if (const toml::node* title = doc.get("title")) {
     if (!title->is_string()) reject(top.child("title", *title), describe(*title), "expected a string");
     study.title = title->as_string()->get();
   }
-  const Settings s{read_settings(top, doc, "scene"), read_settings(top, doc, "axes")};
+  study.kind = read_kind(top, doc);
+  const Settings s{read_settings(top, doc, "scene", study.kind), read_settings(top, doc, "axes", study.kind)};
   check_grid_size(s, top);
-  const Setting& bat = require(s, top, "bat");
-  require(s, top, "z");
-  require(s, top, "ball_speed");
-  check_swing(s, top);
-  const std::vector<Bat> bats = load_bats(study, bat);
-  check_on_bats(*s["z"], bats, bat);
-  check_mode_counts(s, top, bats, bat);
-  study.outputs = read_outputs(top, doc, s);
+  check_required(s, top, study.kind);
+  if (has_bat(study.kind)) check_bat_scene(study, s, top);
+  if (study.kind == StudyKind::wall) check_wall_speeds(s);
+  study.outputs = read_outputs(top, doc, s, study.kind);
 
   GridPoint base;
   for (const Setting& setting : s.scene) setting.spec->set(base, setting.values[0]);
   base.scene.swing.about_center = s["center"] != nullptr;
   study.base = base.scene;
+  study.omega_tau = base.omega_tau;
   study.theory = base.theory;
   study.slices = base.slices;
   for (const Setting& axis : s.axes) study.axes.push_back(make_axis(axis));
@@ -553,7 +697,13 @@ GridPoint grid_point(const Study& study, std::size_t index) {
   if (index >= study.points())
     throw std::out_of_range("grid_point: index " + std::to_string(index) + " >= " + std::to_string(study.points()) +
                             " points");
-  GridPoint p{study.base, 0, study.slices, study.theory, std::vector<std::size_t>(study.axes.size())};
+  GridPoint p;
+  p.kind = study.kind;
+  p.scene = study.base;
+  p.omega_tau = study.omega_tau;
+  p.slices = study.slices;
+  p.theory = study.theory;
+  p.coords.resize(study.axes.size());
   for (std::size_t k = study.axes.size(); k-- > 0;) {
     const Axis& axis = study.axes[k];
     const KeySpec* spec = find_key(axis.name);
@@ -601,30 +751,18 @@ std::vector<std::size_t> task_order(const Study& study) {
   return order;
 }
 
-const std::vector<std::string>& output_names() {
-  static const std::vector<std::string> names = {"vf",
-                                                 "e_eff",
-                                                 "contact_time",
-                                                 "collision_time",
-                                                 "u_max",
-                                                 "peak_force",
-                                                 "impulse",
-                                                 "contacts",
-                                                 "status",
-                                                 "energy_initial",
-                                                 "energy_ball",
-                                                 "energy_bat_translation",
-                                                 "energy_bat_rotation",
-                                                 "energy_vibration",
-                                                 "energy_ball_dissipated",
-                                                 "energy_residual",
-                                                 "mode_energy"};
-  return names;
+const std::vector<std::string>& output_names(StudyKind kind) {
+  static const std::vector<std::string> names[] = {output_list(StudyKind::impact, &OutputSpec::kinds),
+                                                   output_list(StudyKind::wall, &OutputSpec::kinds),
+                                                   output_list(StudyKind::toy, &OutputSpec::kinds)};
+  return names[static_cast<std::size_t>(kind)];
 }
 
-const std::vector<std::string>& default_outputs() {
-  static const std::vector<std::string> names = {"vf", "e_eff", "contact_time", "collision_time", "status"};
-  return names;
+const std::vector<std::string>& default_outputs(StudyKind kind) {
+  static const std::vector<std::string> names[] = {output_list(StudyKind::impact, &OutputSpec::by_default),
+                                                   output_list(StudyKind::wall, &OutputSpec::by_default),
+                                                   output_list(StudyKind::toy, &OutputSpec::by_default)};
+  return names[static_cast<std::size_t>(kind)];
 }
 
 }  // namespace sweetspot

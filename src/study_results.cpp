@@ -21,6 +21,7 @@ struct Description {
 const std::map<std::string, Description>& descriptions() {
   static const std::map<std::string, Description> d = {
       {"vf", {"m/s", "exit speed of the ball, positive away from the bat"}},
+      {"vf_van_zandt", {"m/s", "exit speed of the ball by Van Zandt's prescription (N2000 App. A)"}},
       {"e_eff", {"1", "effective coefficient of restitution"}},
       {"contact_time", {"s", "time the ball is in contact with the bat, summed over contacts"}},
       {"collision_time", {"s", "time from first touch until 99 % of the impulse is delivered"}},
@@ -52,6 +53,7 @@ const std::map<std::string, Description>& descriptions() {
       {"slices", {"1", "slices of the bat"}},
       {"dt", {"s", "integration step"}},
       {"window", {"s", "free flight followed after a separation"}},
+      {"omega_tau", {"1", "toy model: bat spring frequency omega times collision time tau (N2000 App. A)"}},
       {"bat", {"1", "bat"}},
       {"theory", {"1", "beam theory"}},
       {"mode", {"1", "vibrational mode number"}},
@@ -79,6 +81,7 @@ double scalar_value(const ImpactResult& r, const std::string& name) {
   if (name == "status") return static_cast<double>(r.status);
   if (r.status != CollisionStatus::ok) return missing;
   if (name == "vf") return r.vf;
+  if (name == "vf_van_zandt") return r.vf_van_zandt;
   if (name == "e_eff") return r.e_eff;
   if (name == "contact_time") return r.contact_time;
   if (name == "collision_time") return r.collision_time;
@@ -101,8 +104,11 @@ Coordinate axis_coordinate(const Study& study, const Axis& axis) {
   return c;
 }
 
-Variable output_variable(const std::string& name, std::vector<std::string> dims, std::vector<double> values) {
-  const Description d = describe(name);
+// `units` replaces the description's own when given.
+Variable output_variable(const std::string& name, std::vector<std::string> dims, std::vector<double> values,
+                         const char* units = nullptr) {
+  Description d = describe(name);
+  if (units) d.units = units;
   Variable v{name, d.units, d.long_name, std::move(dims), {}, {}, {}};
   if (name == "status" || name == "contacts") {
     std::vector<std::int32_t> ints(values.size());
@@ -147,22 +153,19 @@ int dataset_mode_count(const Study& study) {
   return per_mode ? study.base.vibrational_modes : 10;
 }
 
-Dataset make_dataset(const Study& study, const OutputLayout& layout, const std::vector<double>& rows,
-                     const std::vector<std::vector<double>>& bat_frequencies_hz, const RunInfo& info) {
-  Dataset d;
-  std::vector<std::string> dims;
-  bool has_bat_axis = false;
-  for (const Axis& axis : study.axes) {
-    d.coordinates.push_back(axis_coordinate(study, axis));
-    dims.push_back(axis.name);
-    has_bat_axis = has_bat_axis || axis.name == "bat";
-  }
-  if (!has_bat_axis) d.coordinates.push_back({"bat", "1", "bat", {}, {study.bat_names.front()}});
-  const int modes = dataset_mode_count(study);
-  Coordinate mode{"mode", "1", describe("mode").long_name, {}, {}};
-  for (int n = 1; n <= modes; ++n) mode.values.push_back(n);
-  d.coordinates.push_back(mode);
+namespace {
 
+// The bat's own dimensions: `bat` when no axis sweeps it, and `mode` (frequencies, mode_energy).
+void add_bat_coordinates(const Study& study, Dataset& d) {
+  if (std::ranges::none_of(study.axes, [](const Axis& axis) { return axis.name == "bat"; }))
+    d.coordinates.push_back({"bat", "1", "bat", {}, {study.bat_names.front()}});
+  Coordinate mode{"mode", "1", describe("mode").long_name, {}, {}};
+  for (int n = 1; n <= dataset_mode_count(study); ++n) mode.values.push_back(n);
+  d.coordinates.push_back(mode);
+}
+
+void add_outputs(const Study& study, const OutputLayout& layout, const std::vector<double>& rows,
+                 const std::vector<std::string>& dims, Dataset& d) {
   const std::size_t points = study.points();
   for (std::size_t i = 0; i < layout.names.size(); ++i) {
     std::vector<double> values(points * layout.widths[i]);
@@ -171,16 +174,39 @@ Dataset make_dataset(const Study& study, const OutputLayout& layout, const std::
                   values.begin() + p * layout.widths[i]);
     std::vector<std::string> variable_dims = dims;
     if (layout.names[i] == "mode_energy") variable_dims.push_back("mode");
-    d.variables.push_back(output_variable(layout.names[i], variable_dims, std::move(values)));
+    // The toy model is dimensionless (m = k = v_i = 1): speeds are ratios to v_i and energies
+    // are in units of m v_i^2 (the initial energy is 1/2).
+    const char* units = study.kind == StudyKind::toy ? "1" : nullptr;
+    d.variables.push_back(output_variable(layout.names[i], variable_dims, std::move(values), units));
   }
+}
 
+Variable frequency_variable(const Study& study, const std::vector<std::vector<double>>& bat_frequencies_hz) {
+  const int modes = dataset_mode_count(study);
   std::vector<double> frequencies;
   for (const auto& f : bat_frequencies_hz)
     for (int n = 0; n < modes; ++n) frequencies.push_back(n < static_cast<int>(f.size()) ? f[n] : missing);
-  d.variables.push_back(output_variable("frequency", {"bat", "mode"}, std::move(frequencies)));
+  return output_variable("frequency", {"bat", "mode"}, std::move(frequencies));
+}
+
+}  // namespace
+
+Dataset make_dataset(const Study& study, const OutputLayout& layout, const std::vector<double>& rows,
+                     const std::vector<std::vector<double>>& bat_frequencies_hz, const RunInfo& info) {
+  Dataset d;
+  std::vector<std::string> dims;
+  for (const Axis& axis : study.axes) {
+    d.coordinates.push_back(axis_coordinate(study, axis));
+    dims.push_back(axis.name);
+  }
+  // Wall and toy studies have no bat: no bat or mode dimension and no frequencies.
+  if (has_bat(study.kind)) add_bat_coordinates(study, d);
+  add_outputs(study, layout, rows, dims, d);
+  if (has_bat(study.kind)) d.variables.push_back(frequency_variable(study, bat_frequencies_hz));
 
   d.text_attributes = {{"title", study.title},
                        {"study_file", study.file.string()},
+                       {"kind", to_string(study.kind)},
                        {"study", study.text},
                        {"program", "sweetspot"},
                        {"program_version", version},

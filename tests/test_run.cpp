@@ -1,6 +1,7 @@
 // Studies end to end: `sweetspot run` alone and under mpirun gives the same dataset bit for bit,
-// a killed run resumes to the same file, bad studies are refused before any work, and xarray
-// reads the result as it is.
+// a killed run resumes to the same file, bad studies are refused before any work, xarray reads
+// the result as it is, and the studies without a bat (wall, toy) run without modes and show the
+// physics of N2000 Figs. 3 and 18.
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -111,4 +112,31 @@ TEST_CASE("A bad study is refused before any work and leaves the output file alo
       CHECK_FALSE(std::filesystem::exists(out + ".journal"));
     }
   }
+}
+
+TEST_CASE("The wall and toy studies solve for no modes and show N2000 Figs. 3 and 18", "[run]") {
+  TempDir dir;
+  for (const std::string kind : {"wall", "toy"}) {
+    const std::string out = dir / (kind + ".h5");
+    // Not --quiet: the log's summary of each rank is what shows that no modes were computed.
+    const ProgramRun run = run_program("run " + source_path("studies/" + kind + ".toml") + " -o " + out);
+    INFO(kind << "\n" << run.output);
+    REQUIRE(run.exit_code == 0);
+    CHECK_THAT(run.output, Catch::Contains("rank 0: 0 eigen-solves"));
+    const ProgramRun check =
+        run_command(std::string(python) + " " + source_path("tests/check_kinds.py") + " " + kind + " " + out);
+    INFO(check.output);
+    CHECK(check.exit_code == 0);
+  }
+}
+
+TEST_CASE("A toy study under mpirun: no rank solves for modes, the dataset is the serial one", "[run][mpi]") {
+  TempDir dir;
+  const std::string study = source_path("studies/toy.toml");
+  REQUIRE(run_program("run " + study + " -o " + dir / "serial.h5 --quiet").exit_code == 0);
+  const ProgramRun run = run_program_mpi(2, 2, "run " + study + " -o " + dir / "mpi.h5");
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  CHECK_THAT(run.output, Catch::Contains("rank 0: 0 eigen-solves") && Catch::Contains("rank 1: 0 eigen-solves"));
+  require_identical(dir / "serial.h5", dir / "mpi.h5");
 }

@@ -3,6 +3,7 @@
 // before any work with one InputError line naming the file, the key and the value.
 #include <atomic>
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
@@ -35,6 +36,25 @@ e0 = 0.5
 z = [0.5, 0.6, 0.7]
 [output]
 variables = ["vf", "e_eff"]
+)";
+
+// Valid studies of the other kinds, for the same purpose.
+constexpr std::string_view wall_study = R"(title = "wall"
+kind = "wall"
+[scene]
+e0 = 0.5
+[axes]
+ball_speed = [1, 11, 45, 67]
+[output]
+variables = ["vf", "e_eff"]
+)";
+
+constexpr std::string_view toy_study = R"(title = "toy"
+kind = "toy"
+[scene]
+omega_tau = 2
+[output]
+variables = ["vf", "status"]
 )";
 
 // `text` with its first occurrence of `from` replaced by `to` (which must be there).
@@ -105,7 +125,8 @@ std::vector<double> axis_values(const Study& study, std::string_view name) {
 TEST_CASE("every shipped study loads", "[study]") {
   const std::vector<std::pair<std::string, std::size_t>> expected = {
       {"low_impact.toml", 54}, {"high_impact.toml", 3 * 44}, {"e_eff_full.toml", 44},
-      {"e_eff_half.toml", 44}, {"pivot.toml", 2 * 54},       {"design_space.toml", 2 * 44 * 21 * 21}};
+      {"e_eff_half.toml", 44}, {"pivot.toml", 2 * 54},       {"design_space.toml", 2 * 44 * 21 * 21},
+      {"wall.toml", 18},       {"toy.toml", 61}};
   std::set<std::string> found;
   for (const auto& entry : fs::directory_iterator(source_path("studies"))) {
     if (entry.path().extension() != ".toml") continue;
@@ -274,6 +295,15 @@ TEST_CASE("ranges, booleans, names and 'all' make axes", "[study]") {
     CHECK(axis("e0 = { start = 0.3, stop = 0.6, count = 4 }") == std::vector<double>{0.3, 0.4, 0.5, 0.6});
     CHECK(axis("e0 = { start = 0.3, stop = 0.6, count = 1 }") == std::vector<double>{0.3});
   }
+  SECTION("count with spacing = \"log\": both ends exact, a constant ratio between") {
+    const std::vector<double> e0 = axis("e0 = { start = 0.1, stop = 1, count = 3, spacing = \"log\" }");
+    REQUIRE(e0.size() == 3);
+    CHECK(e0[0] == 0.1);
+    CHECK(e0[1] == Approx(std::sqrt(0.1)).epsilon(1e-14));
+    CHECK(e0[2] == 1);
+    CHECK(axis("e0 = { start = 0.3, stop = 0.6, count = 4, spacing = \"linear\" }") ==
+          std::vector<double>{0.3, 0.4, 0.5, 0.6});
+  }
   SECTION("integer axes") {
     CHECK(axis("slices = { start = 20, stop = 40, step = 10 }") == std::vector<double>{20, 30, 40});
     CHECK(axis("modes = [0, 1, 18, \"all\"]") == std::vector<double>{0, 1, 18, all_modes});
@@ -329,6 +359,113 @@ TEST_CASE("outputs: any ImpactResult field, mode_energy with a fixed mode count"
   std::string all;
   for (const std::string& name : output_names()) all += (all.empty() ? "\"" : ", \"") + name + "\"";
   CHECK(dir.load(with(good_study, "[\"vf\", \"e_eff\"]", "[" + all + "]")).outputs == output_names());
+}
+
+TEST_CASE("each kind has its outputs and its defaults", "[study]") {
+  using V = std::vector<std::string>;
+  CHECK(output_names() == output_names(StudyKind::impact));
+  CHECK(std::ranges::count(output_names(), "vf_van_zandt") == 0);
+  CHECK(default_outputs(StudyKind::impact) == V{"vf", "e_eff", "contact_time", "collision_time", "status"});
+  CHECK(output_names(StudyKind::wall) == V{"vf", "e_eff", "contact_time", "collision_time", "u_max", "peak_force",
+                                           "impulse", "energy_initial", "energy_ball", "energy_ball_dissipated",
+                                           "energy_residual", "status"});
+  CHECK(default_outputs(StudyKind::wall) == V{"vf", "e_eff", "contact_time", "collision_time", "status"});
+  CHECK(output_names(StudyKind::toy) == V{"vf", "vf_van_zandt", "energy_initial", "energy_ball",
+                                          "energy_bat_translation", "energy_vibration", "energy_residual", "status"});
+  CHECK(default_outputs(StudyKind::toy) ==
+        V{"vf", "vf_van_zandt", "energy_ball", "energy_bat_translation", "energy_vibration", "status"});
+}
+
+TEST_CASE("a wall study: the ball and its speed, no bat", "[study]") {
+  const StudyDir dir;
+  const Study study = dir.load(wall_study);
+  CHECK(study.kind == StudyKind::wall);
+  CHECK_FALSE(has_bat(study.kind));
+  CHECK(study.bats.empty());
+  CHECK(study.bat_names.empty());
+  CHECK(study.outputs == std::vector<std::string>{"vf", "e_eff"});
+  REQUIRE(study.points() == 4);
+  CHECK(models(study) == 1);
+  const GridPoint p = grid_point(study, 2);
+  CHECK(p.kind == StudyKind::wall);
+  CHECK(p.scene.ball_speed == 45);
+  CHECK(p.scene.ball.e0 == 0.5);
+  CHECK(p.scene.integrator.dt == 5e-6);
+  CHECK(dir.load(with(wall_study, "[output]\nvariables = [\"vf\", \"e_eff\"]\n", "")).outputs ==
+        default_outputs(StudyKind::wall));
+}
+
+TEST_CASE("a toy study: omega tau, alone or as a log axis", "[study]") {
+  const StudyDir dir;
+  const Study single = dir.load(toy_study);
+  CHECK(single.kind == StudyKind::toy);
+  CHECK(single.bats.empty());
+  CHECK(single.omega_tau == 2);
+  CHECK(single.points() == 1);
+  CHECK(grid_point(single, 0).omega_tau == 2);
+  CHECK(grid_point(single, 0).kind == StudyKind::toy);
+  const Study swept = dir.load("kind = \"toy\"\n[axes]\nomega_tau = { start = 0.05, stop = 50, count = 61, "
+                               "spacing = \"log\" }\n");
+  CHECK(swept.outputs == default_outputs(StudyKind::toy));
+  const std::vector<double> omega_tau = axis_values(swept, "omega_tau");
+  REQUIRE(omega_tau.size() == 61);
+  CHECK(omega_tau.front() == 0.05);
+  CHECK(omega_tau[20] == Approx(0.5).epsilon(1e-14));  // 20 points a decade
+  CHECK(omega_tau[40] == Approx(5).epsilon(1e-14));
+  CHECK(omega_tau.back() == 50);
+  CHECK(grid_point(swept, 60).omega_tau == 50);
+}
+
+TEST_CASE("bad studies: the kind and what belongs to it", "[study]") {
+  SECTION("unknown kind") {
+    require_error("title = \"test\"", "kind = \"cannon\"",
+                  {"study.toml:1:", "key 'kind' = \"cannon\" (string)", "\"impact\", \"wall\", \"toy\""});
+  }
+  SECTION("kind not a string") { require_error("title = \"test\"", "kind = 3", {"key 'kind' = 3", "\"wall\""}); }
+  SECTION("a bat on the wall") {
+    require_error(with(wall_study, "e0 = 0.5", "e0 = 0.5\nbat = \"bats/r161.toml\""),
+                  {"study.toml:5:", "key 'scene.bat' = \"bats/r161.toml\"", "does not apply to kind \"wall\"",
+                   "ball_speed"});
+  }
+  SECTION("an impact point on the wall") {
+    require_error(with(wall_study, "[axes]", "[axes]\nz = [0.6, 0.7]"),
+                  {"key 'axes.z' = [...]", "does not apply to kind \"wall\""});
+  }
+  SECTION("a swing on the wall") {
+    require_error(with(wall_study, "e0 = 0.5", "center = 0.09"),
+                  {"key 'scene.center' = 0.09", "does not apply to kind \"wall\""});
+  }
+  SECTION("the wall needs a speed toward it") {
+    require_error(with(wall_study, "[1, 11, 45, 67]", "[1, 0]"), {"key 'axes.ball_speed' = 0", "> 0", "wall"});
+    require_error(with(wall_study, "ball_speed = [1, 11, 45, 67]", "e0 = [0.5]"),
+                  {"key 'scene.ball_speed' is missing"});
+  }
+  SECTION("bat outputs from the wall") {
+    require_error(with(wall_study, "[\"vf\", \"e_eff\"]", "[\"vf\", \"energy_vibration\"]"),
+                  {"key 'output.variables[1]' = \"energy_vibration\"", "does not apply to kind \"wall\"", "u_max"});
+  }
+  SECTION("omega tau not > 0") {
+    require_error(with(toy_study, "omega_tau = 2", "omega_tau = 0"), {"key 'scene.omega_tau' = 0", "> 0"});
+    require_error(with(toy_study, "omega_tau = 2", "omega_tau = -1.5"), {"key 'scene.omega_tau' = -1.5", "> 0"});
+    require_error(with(toy_study, "[scene]\nomega_tau = 2", "[axes]\nomega_tau = [0.5, inf]"),
+                  {"key 'axes.omega_tau[1]' = inf", "> 0"});
+  }
+  SECTION("the toy needs omega tau") {
+    require_error(with(toy_study, "omega_tau = 2\n", ""), {"key 'scene.omega_tau' is missing"});
+  }
+  SECTION("ball keys in the toy") {
+    require_error(with(toy_study, "omega_tau = 2", "omega_tau = 2\ne0 = 0.5"),
+                  {"key 'scene.e0' = 0.5", "does not apply to kind \"toy\"", "omega_tau"});
+  }
+  SECTION("wall outputs from the toy") {
+    require_error(with(toy_study, "[\"vf\", \"status\"]", "[\"vf\", \"peak_force\"]"),
+                  {"key 'output.variables[1]' = \"peak_force\"", "does not apply to kind \"toy\"", "vf_van_zandt"});
+  }
+  SECTION("toy keys and outputs on a bat") {
+    require_error("e0 = 0.5", "omega_tau = 2", {"key 'scene.omega_tau' = 2", "does not apply to kind \"impact\""});
+    require_error("[\"vf\", \"e_eff\"]", "[\"vf_van_zandt\"]",
+                  {"key 'output.variables[0]' = \"vf_van_zandt\"", "does not apply to kind \"impact\""});
+  }
 }
 
 TEST_CASE("bad studies: the file and its syntax", "[study]") {
@@ -421,6 +558,18 @@ TEST_CASE("bad studies: empty axes", "[study]") {
   SECTION("repeated value") { axis("z = [0.5, 0.6, 0.5]", {"key 'axes.z' = 0.5", "twice"}); }
   SECTION("repeated bat") {
     axis("bat = [\"bats/r161.toml\", \"bats/../bats/r161.toml\"]", {"key 'axes.bat'", "r161.toml", "twice"});
+  }
+  SECTION("log range through 0") {
+    axis("z = { start = 0, stop = 0.7, count = 3, spacing = \"log\" }",
+         {"key 'axes.z.start' = 0", "log range", "> 0"});
+  }
+  SECTION("log range with a step") {
+    axis("z = { start = 0.5, stop = 0.7, step = 0.1, spacing = \"log\" }",
+         {"key 'axes.z.spacing' = \"log\"", "count, not step"});
+  }
+  SECTION("unknown spacing") {
+    axis("z = { start = 0.5, stop = 0.7, count = 3, spacing = \"cubic\" }",
+         {"key 'axes.z.spacing' = \"cubic\"", "\"linear\" or \"log\""});
   }
   SECTION("integer range off the integers") {
     axis("slices = { start = 20, stop = 30, count = 4 }", {"key 'axes.slices' = 23.3333", "integer"});

@@ -1,6 +1,8 @@
 #pragma once
 // One impact of a ball on a bat: the scene in, a plain result out (physics.md §4-5). Never throws
-// for a bad physical outcome: the status says what went wrong.
+// for a bad physical outcome: the status says what went wrong. The rigid wall (wall.hpp) and the
+// toy model (toy_model.hpp) give the same result type, so that a study stores any of them alike.
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -22,6 +24,9 @@ struct ImpactEnergy {
   double residual = 0;
 };
 
+// Sets the residual from the other terms, once they are all filled.
+void close_balance(ImpactEnergy& energy);
+
 struct ImpactResult {
   CollisionStatus status = CollisionStatus::ok;
   std::string message;
@@ -33,11 +38,20 @@ struct ImpactResult {
   double u_max = 0;           // m
   double peak_force = 0;      // N
   double impulse = 0;         // N s
+  // Van Zandt's prescription for the same collision (physics.md §5), to compare with vf; only
+  // the toy model computes it so far, NaN elsewhere.
+  double vf_van_zandt = std::numeric_limits<double>::quiet_NaN();
   ImpactEnergy energy;
   std::vector<double> mode_energy;  // J per kept vibrational mode (of the held bat when pivoted)
   int contacts = 0;
   std::vector<ForceSample> force;   // only when the scene records the force
 };
+
+// What every collision gives whatever was struck: status, message, vf, the times, u_max,
+// peak_force, impulse, contacts and energy.ball_dissipated. The caller adds what depends on the
+// struck body: e_eff and the rest of the energy balance. A refused step gives status and message
+// only, since nothing was integrated.
+ImpactResult collision_result(const Collision& c);
 
 // Validates the scene (InputError for bad input), then runs the collision.
 ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& scene);

@@ -1,23 +1,36 @@
 #pragma once
-// A parameter study (design.md): a base impact scene and the axes it is swept over, read from a
-// TOML study file and validated in full before a single impact is computed. The grid is the
+// A parameter study (design.md): a base scene and the axes it is swept over, read from a TOML
+// study file and validated in full before a single collision is computed. The grid is the
 // product of the axes in the order the file writes them (first axis slowest).
 //
 // Study file (keys are `sweetspot impact`'s option names with dashes turned into underscores):
 //   title = "..."                      optional
-//   [scene]  bat (path relative to the study file), theory ("timoshenko" | "euler-bernoulli"),
-//            slices (4..4096; default the profile's own), z, ball_speed, e0, ball_mass,
-//            ball_radius, k1, a, center | cm_speed (exactly one), omega, pivot (bool),
-//            modes (count or "all"), integrator ("rk4"), dt, window
-//   [axes]   any [scene] key but integrator, as a list of values (bat: paths; theory: names;
-//            pivot: booleans; modes: counts or "all"), or for numbers as a range table
+//   kind = "impact" | "wall" | "toy"   optional, default "impact": what the ball strikes
+//     impact: a bat (N2000 §4-5). wall: a rigid, immovable wall (Fig. 3). toy: the two-mass
+//     model of App. A (Fig. 18). Each kind takes its own keys and outputs (below); any other is
+//     an error that says it does not apply to the kind.
+//   [scene]  impact: bat (path relative to the study file), theory ("timoshenko" |
+//              "euler-bernoulli"), slices (4..4096; default the profile's own), z, ball_speed, e0,
+//              ball_mass, ball_radius, k1, a, center | cm_speed (exactly one), omega, pivot
+//              (bool), modes (count or "all"), integrator ("rk4"), dt, window
+//            wall: ball_speed (> 0), e0, ball_mass, ball_radius, k1, a, integrator, dt, window
+//            toy: omega_tau (> 0)
+//   [axes]   any [scene] key of the kind but integrator, as a list of values (bat: paths; theory:
+//            names; pivot: booleans; modes: counts or "all"), or for numbers as a range table
 //            { start, stop, step } (stop included when it lands within 1e-9 step) or
-//            { start, stop, count } (count points, both ends included). An axis overrides the
-//            same key in [scene]; bat, z, ball_speed and the swing must be given in one of them.
-//   [output] variables = names of ImpactResult fields (output_names()); default
-//            default_outputs(). "mode_energy" adds a mode dimension of length
-//            base.vibrational_modes, so it needs one mode count >= 1 for the whole study: modes
-//            a number in [scene] (or the default 18), not "all" and not an axis.
+//            { start, stop, count } (count points, both ends included), the latter with
+//            spacing = "log" for points spaced evenly in the logarithm (start, stop > 0). An axis
+//            overrides the same key in [scene]. Required in one of them: impact: bat, z,
+//            ball_speed and the swing; wall: ball_speed; toy: omega_tau.
+//   [output] variables = names of ImpactResult fields the kind gives (output_names(kind));
+//            default default_outputs(kind). impact: all but vf_van_zandt; wall: vf, e_eff (the
+//            restitution), contact_time, collision_time, u_max, peak_force, impulse, status and
+//            the energies of the ball (initial, ball, ball_dissipated, residual); toy: vf
+//            (v_f / v_i), vf_van_zandt, status and the energies initial, ball,
+//            bat_translation, vibration, residual (model units, m = k = v_i = 1).
+//            "mode_energy" adds a mode dimension of length base.vibrational_modes, so it needs
+//            one mode count >= 1 for the whole study: modes a number in [scene] (or the default
+//            18), not "all" and not an axis.
 //   Every value is checked before any work: types, the rules of validate() in scene.cpp, z on
 //   every bat, modes within what every (bat, slices, theory) discretisation has, no repeated
 //   axis values, bats with distinct names, at most 1e6 values per axis and 1e9 points.
@@ -30,6 +43,13 @@
 #include "sweetspot/scene.hpp"
 
 namespace sweetspot {
+
+// What the ball strikes: a bat, a rigid immovable wall, or the toy model's two masses.
+enum class StudyKind { impact, wall, toy };
+const char* to_string(StudyKind kind);
+
+// Only impact studies strike a bat: the others have no bats, no modes and no bat dimension.
+constexpr bool has_bat(StudyKind kind) { return kind == StudyKind::impact; }
 
 // The collision integrator. Only classical RK4 (N2000) exists; an enum so that others can join.
 enum class Integrator { rk4 };
@@ -51,15 +71,18 @@ struct Study {
   std::filesystem::path file;  // the study file, as given
   std::string text;            // its full text, for the dataset's attributes
   std::string title;           // empty when the file has none
+  StudyKind kind = StudyKind::impact;
   // Bat files resolved against the study file's directory, index = bat index (the bat axis's
-  // values, or one entry), and the `name` each file gives its bat (the output coordinate).
+  // values, or one entry), and the `name` each file gives its bat (the output coordinate). Both
+  // empty for the kinds without a bat.
   std::vector<std::filesystem::path> bats;
   std::vector<std::string> bat_names;
   // The [scene] values over the defaults; axes set their own keys per grid point.
   BeamTheory theory = BeamTheory::timoshenko;
   int slices = 0;  // 0: the profile's own slice count
   Integrator integrator = Integrator::rk4;
-  ImpactScene base;
+  ImpactScene base;                  // impact; wall: its ball, ball_speed and integrator
+  double omega_tau = 0;              // toy
   std::vector<Axis> axes;            // in the order written
   std::vector<std::string> outputs;  // in the order written
 
@@ -71,10 +94,13 @@ struct Study {
 // line naming the study file (and line), the key, the value and what was expected.
 Study load_study(const std::filesystem::path& file);
 
-// Everything one grid point needs: its scene, which bat, how it is sliced and which beam theory
-// makes its modes, and its position on each axis.
+// Everything one grid point needs: its kind and scene (the ball, speed and integrator serve the
+// wall too), for a bat which one, how it is sliced and which beam theory makes its modes, for the
+// toy omega tau, and its position on each axis.
 struct GridPoint {
+  StudyKind kind = StudyKind::impact;
   ImpactScene scene;
+  double omega_tau = 0;
   std::size_t bat = 0;  // index into Study::bats
   int slices = 0;       // 0: the profile's own
   BeamTheory theory = BeamTheory::timoshenko;
@@ -93,8 +119,8 @@ std::size_t models(const Study& study);
 std::size_t task_point(const Study& study, std::size_t task);  // grid index of task `task`
 std::vector<std::size_t> task_order(const Study& study);       // task_point for every task
 
-// Output variables a study may ask for, and the list used when [output] gives none.
-const std::vector<std::string>& output_names();
-const std::vector<std::string>& default_outputs();
+// Output variables a study of a kind may ask for, and the list used when [output] gives none.
+const std::vector<std::string>& output_names(StudyKind kind = StudyKind::impact);
+const std::vector<std::string>& default_outputs(StudyKind kind = StudyKind::impact);
 
 }  // namespace sweetspot

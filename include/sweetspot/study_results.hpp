@@ -1,7 +1,8 @@
 #pragma once
 // What a study stores per grid point, and how the points become one dataset: one variable per
 // requested output over the study's axes (mode_energy adds a `mode` dimension), each axis a
-// coordinate, and the modal frequencies of each bat over (bat, mode).
+// coordinate, and for a study on a bat the modal frequencies of each bat over (bat, mode). Wall
+// and toy studies have neither a bat nor a mode dimension.
 #include <string>
 #include <vector>
 
@@ -28,7 +29,8 @@ struct RunInfo {
   double wall_time = 0;
 };
 
-// Rows of every point (row-major over the axes) and the vibrational frequencies (Hz) of each bat.
+// Rows of every point (row-major over the axes) and the vibrational frequencies (Hz) of each bat
+// (none for the kinds without a bat).
 Dataset make_dataset(const Study& study, const OutputLayout& layout, const std::vector<double>& rows,
                      const std::vector<std::vector<double>>& bat_frequencies_hz, const RunInfo& info);
 

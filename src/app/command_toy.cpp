@@ -22,22 +22,27 @@ void add_toy_command(CLI::App& app) {
   cmd->callback([o] {
     if (!(o->omega_tau > 0) || !std::isfinite(o->omega_tau))
       throw InputError("toy: omega-tau = " + std::to_string(o->omega_tau) + ": must be a positive finite number");
-    const ToyResult r = toy_model(o->omega_tau);
+    const ImpactResult r = toy_model(o->omega_tau);
+    // v_i = 1 in the model's units: vf is the ratio v_f / v_i; energies as fractions of the initial.
+    const ImpactEnergy& e = r.energy;
+    const double ball = e.ball / e.initial, bat_cm = e.bat_translation / e.initial;
+    const double vibration = e.vibration / e.initial;
     if (o->json) {
-      const Json out = Json::Object()
-                           .add("status", to_string(r.status))
-                           .add("omega_tau", r.omega_tau)
-                           .add("exit_ratio", r.exit_ratio)
-                           .add("ball_energy", r.ball_energy)
-                           .add("bat_cm_energy", r.bat_cm_energy)
-                           .add("vibration_energy", r.vibration_energy)
-                           .add("van_zandt_ratio", r.van_zandt_ratio);
-      std::printf("%s\n", out.text().c_str());
+      Json::Object out;
+      out.add("status", to_string(r.status));
+      if (!r.message.empty()) out.add("message", r.message);
+      out.add("omega_tau", o->omega_tau)
+          .add("exit_ratio", r.vf)
+          .add("ball_energy", ball)
+          .add("bat_cm_energy", bat_cm)
+          .add("vibration_energy", vibration)
+          .add("van_zandt_ratio", r.vf_van_zandt);
+      std::printf("%s\n", Json(out).text().c_str());
       return;
     }
-    std::printf("omega tau %.4g: v_f/v_i = %.6f (Van Zandt %.6f)\n", r.omega_tau, r.exit_ratio, r.van_zandt_ratio);
-    std::printf("energy fractions: ball %.4f, bat CM %.4f, vibration %.4f\n", r.ball_energy, r.bat_cm_energy,
-                r.vibration_energy);
+    if (r.status != CollisionStatus::ok) std::printf("status %s: %s\n", to_string(r.status), r.message.c_str());
+    std::printf("omega tau %.4g: v_f/v_i = %.6f (Van Zandt %.6f)\n", o->omega_tau, r.vf, r.vf_van_zandt);
+    std::printf("energy fractions: ball %.4f, bat CM %.4f, vibration %.4f\n", ball, bat_cm, vibration);
   });
 }
 

@@ -25,12 +25,12 @@ void run_wall(const WallOptions& o) {
   if (!(o.ball.e0 > 0 && o.ball.e0 <= 1)) throw InputError("wall: e0 = " + std::to_string(o.ball.e0) + ": must lie in (0, 1]");
   if (!(o.ball.a > 0) || !(o.ball.k1 > 0) || !(o.integrator.dt > 0))
     throw InputError("wall: a, k1 and dt must be positive");
-  const WallResult r = hit_wall(o.ball, o.speed, o.integrator);
+  const ImpactResult r = hit_wall(o.ball, o.speed, o.integrator);
   if (o.json) {
     const Json out = Json::Object()
                          .add("status", to_string(r.status))
                          .add("speed", o.speed)
-                         .add("restitution", r.restitution)
+                         .add("restitution", r.e_eff)
                          .add("collision_time", r.collision_time)
                          .add("contact_time", r.contact_time)
                          .add("u_max", r.u_max)
@@ -39,7 +39,7 @@ void run_wall(const WallOptions& o) {
     return;
   }
   std::printf("status %s\nrestitution %.9g\ncollision time %.4g ms (99 %% of the impulse)\n", to_string(r.status),
-              r.restitution, 1e3 * r.collision_time);
+              r.e_eff, 1e3 * r.collision_time);
   std::printf("contact time %.4g ms\nmax compression %.4g mm\npeak force %.5g N\n", 1e3 * r.contact_time,
               1e3 * r.u_max, r.peak_force);
 }
