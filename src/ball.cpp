@@ -11,7 +11,7 @@ double ContactForce::operator()(double u) const {
 
 double ContactForce::stiffness(double u) const {
   if (u <= 0) return 0;
-  return (expanding_ ? b_ : ball_.a) * (*this)(u) / u;
+  return exponent() * (*this)(u) / u;
 }
 
 void ContactForce::start_expansion(double u_max) {

@@ -3,86 +3,22 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <type_traits>
+
+#include "contact_state.hpp"
+#include "dopri_stepper.hpp"
+#include "exact_stepper.hpp"
+#include "rk4_stepper.hpp"
+#include "sweetspot/input_error.hpp"
 
 namespace sweetspot {
 
 namespace {
 
 using Eigen::VectorXd;
+using detail::ContactState;
 
 constexpr int max_contacts = 50;  // more than this is chatter, not a collision
-
-// The contact phase: ball and modes coupled by the force law, advanced by classical RK4.
-// State y = [s, v, a_0..a_{n-1}, a_0'..a_{n-1}'], s the ball's displacement from first touch.
-class ContactStepper {
- public:
-  ContactStepper(const ModalContact& body, const Ball& ball)
-      : body_(body), n_(body.count()), mass_(ball.mass), omega2_(body.omega.array().square()) {
-    for (VectorXd* k : {&k1_, &k2_, &k3_, &k4_, &tmp_}) k->resize(2 + 2 * n_);
-  }
-
-  double compression(const VectorXd& y) const { return body_.psi.dot(y.segment(2, n_)) - y(0); }
-  double compression_rate(const VectorXd& y) const { return body_.psi.dot(y.segment(2 + n_, n_)) - y(1); }
-
-  ForceSample sample(double t, const VectorXd& y, const ContactForce& law) const {
-    const double u = compression(y);
-    return {t, law(u), law.stiffness(u) * compression_rate(y)};
-  }
-
-  void step(const VectorXd& y, double h, const ContactForce& law, VectorXd& out) {
-    derivative(y, law, k1_);
-    tmp_ = y + (h / 2) * k1_;
-    derivative(tmp_, law, k2_);
-    tmp_ = y + (h / 2) * k2_;
-    derivative(tmp_, law, k3_);
-    tmp_ = y + h * k3_;
-    derivative(tmp_, law, k4_);
-    out = y + (h / 6) * (k1_ + 2 * k2_ + 2 * k3_ + k4_);
-  }
-
-  // The step h* in (0, h] at which event(step(y, h*)) crosses zero, given event(y) > 0 and
-  // event(out) <= 0 for out = step(y, h). Illinois regula falsi on the step length; leaves in
-  // `out` the state just past the event (event <= 0).
-  template <class Event>
-  double locate(const VectorXd& y, double h, const ContactForce& law, Event event, VectorXd& out) {
-    double lo = 0, hi = h, f_lo = event(y), f_hi = event(out);
-    int side = 0;
-    VectorXd trial(y.size());
-    for (int iteration = 0; iteration < 100 && hi - lo > 1e-15 * h; ++iteration) {
-      double mid = hi - f_hi * (hi - lo) / (f_hi - f_lo);
-      if (!(mid > lo && mid < hi)) mid = (lo + hi) / 2;
-      step(y, mid, law, trial);
-      const double f = event(trial);
-      if (f > 0) {
-        lo = mid, f_lo = f;
-        if (side == 1) f_hi /= 2;
-        side = 1;
-      } else {
-        hi = mid, f_hi = f, out = trial;
-        if (side == -1) f_lo /= 2;
-        side = -1;
-        if (f == 0) break;
-      }
-    }
-    if (hi == h) step(y, h, law, out);
-    return hi;
-  }
-
- private:
-  void derivative(const VectorXd& y, const ContactForce& law, VectorXd& dy) const {
-    const double force = law(compression(y));
-    dy(0) = y(1);
-    dy(1) = force / mass_;
-    dy.segment(2, n_) = y.segment(2 + n_, n_);
-    dy.segment(2 + n_, n_) = -(omega2_ * y.segment(2, n_).array()).matrix() - force * body_.psi;
-  }
-
-  const ModalContact& body_;
-  int n_;
-  double mass_;
-  Eigen::ArrayXd omega2_;
-  VectorXd k1_, k2_, k3_, k4_, tmp_;
-};
 
 // Free flight: the ball coasts, every mode oscillates in closed form (rigid modes drift).
 void evolve_free(const ModalContact& body, const VectorXd& y, double tau, VectorXd& out) {
@@ -114,17 +50,23 @@ std::string format(const char* pattern, double x, double y) {
   return buf;
 }
 
+template <class Stepper>
 class CollisionRun {
  public:
   CollisionRun(const ModalContact& body, const Ball& ball, double ball_speed, const CollisionOptions& options)
-      : body_(body), ball_(ball), options_(options), stepper_(body, ball), y_(2 + 2 * body.count()) {
+      : body_(body), ball_(ball), options_(options), state_(body, ball),
+        stepper_(make_stepper(ball_speed)), y_(2 + 2 * body.count()) {
     y_.setZero();
     y_(1) = -ball_speed;
     y_.tail(body.count()) = body.velocity0;
   }
 
   Collision run() {
-    if (refuse_unstable_step()) return result_;
+    if (const std::string why = stepper_.refusal(); !why.empty()) {
+      result_.status = CollisionStatus::refused_step;
+      result_.message = why;
+      return result_;
+    }
     while (contact() && free_flight()) {
     }
     finish();
@@ -132,16 +74,9 @@ class CollisionRun {
   }
 
  private:
-  bool refuse_unstable_step() {
-    const double omega_max = body_.count() ? body_.omega.maxCoeff() : 0.0;
-    if (omega_max * options_.dt <= rk4_stability_limit) return false;
-    result_.status = CollisionStatus::refused_step;
-    result_.message = format("RK4 step dt = %g s is unstable for the fastest kept mode (omega = %.6g rad/s, "
-                             "omega*dt must stay below 2.8)",
-                             options_.dt, omega_max) +
-                      format(": use dt <= %.3g s or keep fewer modes (%.0f kept)", rk4_stability_limit / omega_max,
-                             body_.count());
-    return true;
+  Stepper make_stepper(double ball_speed) {
+    if constexpr (std::is_same_v<Stepper, detail::DopriStepper>) return Stepper(state_, options_, ball_speed);
+    else return Stepper(state_, options_);
   }
 
   bool fail(CollisionStatus status, std::string message) {
@@ -157,29 +92,34 @@ class CollisionRun {
     ContactForce law(ball_);
     const double touch = t_;
     const double v_start = y_(1);
-    samples_.push_back(stepper_.sample(t_, y_, law));
+    samples_.push_back(state_.sample(t_, y_, law));
     VectorXd next(y_.size());
+    double h = stepper_.first_step();
     while (true) {
       if (t_ - touch > options_.max_contact_time)
         return fail(CollisionStatus::no_separation,
                     format("the ball did not separate within %g s of touching (contact %g)", options_.max_contact_time,
                            result_.contacts));
-      double h = options_.dt;
-      stepper_.step(y_, h, law, next);
+      const detail::StepOutcome outcome = stepper_.attempt(y_, h, law, next);
       if (!next.allFinite())
-        return fail(CollisionStatus::non_finite, format("non-finite state at t = %g s (dt = %g s)", t_, h));
+        return fail(CollisionStatus::non_finite, format("non-finite state at t = %g s (step %g s)", t_, h));
+      if (!outcome.accepted) {
+        h = outcome.next_h;
+        continue;
+      }
       bool separated = false;
-      if (!law.expanding() && stepper_.compression_rate(next) <= 0) {
-        h = stepper_.locate(y_, h, law, [&](const VectorXd& y) { return stepper_.compression_rate(y); }, next);
-        law.start_expansion(stepper_.compression(next));
-      } else if (law.expanding() && stepper_.compression(next) <= 0) {
-        h = stepper_.locate(y_, h, law, [&](const VectorXd& y) { return stepper_.compression(y); }, next);
+      if (!law.expanding() && state_.compression_rate(next) <= 0) {
+        h = stepper_.locate(y_, h, law, detail::ContactEvent::max_compression, next);
+        law.start_expansion(state_.compression(next));
+      } else if (law.expanding() && state_.compression(next) <= 0) {
+        h = stepper_.locate(y_, h, law, detail::ContactEvent::separation, next);
         separated = true;
       }
       y_.swap(next);
       t_ += h;
-      samples_.push_back(stepper_.sample(t_, y_, law));
+      samples_.push_back(state_.sample(t_, y_, law));
       if (separated) break;
+      h = outcome.next_h;
     }
     result_.contact_time += t_ - touch;
     result_.u_max = std::max(result_.u_max, law.u_max());
@@ -191,30 +131,40 @@ class CollisionRun {
   }
 
   // Follows ball and body for the window after a separation. True if they touch again; then the
-  // state is moved to the moment of touch.
+  // state is moved to the moment of touch. The compression is the rigid part, linear in time,
+  // plus vibrations bounded by sum |psi_n| A_n (amplitude A_n) and changing no faster than
+  // sum |psi_n| omega_n A_n: samples skip ahead as far as these bounds allow, and the scan ends
+  // once the rigid part alone keeps the ball clear.
   bool free_flight() {
     const int n = body_.count();
-    const double dt = options_.dt;
-    // One exact rotation per mode per sample step: no trigonometry inside the scan.
-    Eigen::ArrayXd c(n), s(n);
-    for (int i = 0; i < n; ++i) c(i) = std::cos(body_.omega(i) * dt), s(i) = std::sin(body_.omega(i) * dt);
-    VectorXd scan = y_, previous;
-    for (double tau = dt; tau <= options_.window + 0.5 * dt; tau += dt) {
-      previous = scan;
-      scan(0) += scan(1) * dt;
-      for (int i = 0; i < n; ++i) {
-        const double w = body_.omega(i), a = scan(2 + i), v = scan(2 + n + i);
-        if (w == 0) {
-          scan(2 + i) = a + v * dt;
-        } else {
-          scan(2 + i) = a * c(i) + v / w * s(i);
-          scan(2 + n + i) = -a * w * s(i) + v * c(i);
-        }
+    double u0_rigid = -y_(0), rate_rigid = -y_(1), bound = 0, speed_bound = 0;
+    for (int i = 0; i < n; ++i) {
+      const double w = body_.omega(i), psi = body_.psi(i), a = y_(2 + i), v = y_(2 + n + i);
+      if (w == 0) {
+        u0_rigid += psi * a, rate_rigid += psi * v;
+      } else {
+        const double amplitude = std::hypot(a, v / w);
+        bound += std::abs(psi) * amplitude;
+        speed_bound += std::abs(psi) * w * amplitude;
       }
-      if (stepper_.compression(scan) > 0) {
-        move_to_touch(tau - dt, tau);
+    }
+    double end = options_.window;
+    if (rate_rigid < 0) end = std::min(end, (u0_rigid + bound) / -rate_rigid);
+    const double slope = std::abs(rate_rigid) + speed_bound;
+    // Where the bounds allow only tiny jumps (a grazing approach), sample at least every 1 us:
+    // a touch shorter than that may pass unseen.
+    const double min_jump = 1e-6;
+    VectorXd scan;
+    double previous = 0;
+    for (double tau = min_jump; tau <= end;) {
+      evolve_free(body_, y_, tau, scan);
+      const double u = state_.compression(scan);
+      if (u > 0) {
+        move_to_touch(previous, tau);
         return true;
       }
+      previous = tau;
+      tau += std::max(-u / slope, min_jump);
     }
     return false;
   }
@@ -225,7 +175,7 @@ class CollisionRun {
     for (int iteration = 0; iteration < 200 && hi - lo > 1e-15 * (t_ + hi); ++iteration) {
       const double mid = (lo + hi) / 2;
       evolve_free(body_, y_, mid, trial);
-      (stepper_.compression(trial) > 0 ? hi : lo) = mid;
+      (state_.compression(trial) > 0 ? hi : lo) = mid;
     }
     evolve_free(body_, y_, hi, trial);
     y_ = trial;
@@ -245,7 +195,8 @@ class CollisionRun {
   const ModalContact& body_;
   Ball ball_;
   CollisionOptions options_;
-  ContactStepper stepper_;
+  ContactState state_;
+  Stepper stepper_;
   VectorXd y_;
   double t_ = 0;
   std::vector<ForceSample> samples_;
@@ -291,7 +242,28 @@ double impulse_time(const std::vector<ForceSample>& force, double fraction) {
 }
 
 Collision collide(const ModalContact& body, const Ball& ball, double ball_speed, const CollisionOptions& options) {
-  return CollisionRun(body, ball, ball_speed, options).run();
+  switch (options.method) {
+    case Method::exact: return CollisionRun<detail::ExactStepper>(body, ball, ball_speed, options).run();
+    case Method::dopri: return CollisionRun<detail::DopriStepper>(body, ball, ball_speed, options).run();
+    case Method::rk4: break;
+  }
+  return CollisionRun<detail::Rk4Stepper>(body, ball, ball_speed, options).run();
+}
+
+const char* to_string(Method method) {
+  switch (method) {
+    case Method::rk4: return "rk4";
+    case Method::exact: return "exact";
+    case Method::dopri: return "dopri";
+  }
+  return "unknown";
+}
+
+Method parse_method(const std::string& text) {
+  if (text == "rk4") return Method::rk4;
+  if (text == "exact") return Method::exact;
+  if (text == "dopri") return Method::dopri;
+  throw InputError("integrator '" + text + "': expected 'rk4', 'exact' or 'dopri'");
 }
 
 }  // namespace sweetspot

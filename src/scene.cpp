@@ -77,6 +77,7 @@ void validate(const ImpactScene& scene, const ModalBasis& basis) {
   require_positive("a", scene.ball.a);
   if (!(scene.ball.e0 > 0 && scene.ball.e0 <= 1)) reject("e0", scene.ball.e0, "must lie in (0, 1]");
   require_positive("dt", scene.integrator.dt);
+  require_positive("tolerance", scene.integrator.tolerance);
   require_positive("window", scene.integrator.window);
   if (scene.pivoted && !scene.swing.about_center)
     reject("pivot", 1, "a pivoted bat is held at its rotation centre: give the centre, not the CM speed");

@@ -28,6 +28,8 @@ class ContactForce {
   // Switches to the expansion branch at maximum compression u_m.
   void start_expansion(double u_max);
   bool expanding() const { return expanding_; }
+  // The exponent of the branch in force: F is proportional to u^exponent.
+  double exponent() const { return expanding_ ? b_ : ball_.a; }
   double u_max() const { return u_max_; }
   double f_max() const { return f_max_; }
   // Energy lost in the ball over a full loop: F_m u_m (1/(a+1) - 1/(b+1)), a fraction 1 - e0^2

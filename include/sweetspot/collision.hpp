@@ -20,8 +20,20 @@ struct ModalContact {
   int count() const { return static_cast<int>(omega.size()); }
 };
 
+// How the contact phase is integrated (see README, "Numerics"):
+//   rk4    classical RK4 at the fixed step dt, as N2000; refused when omega_max dt > 2.8
+//   exact  exact modal stepping: closed-form modes under a cubic Hermite force, step dt set by
+//          the force pulse alone (unconditionally stable)
+//   dopri  adaptive Dormand-Prince 5(4) to `tolerance`, starting at dt: the reference path
+enum class Method { rk4, exact, dopri };
+const char* to_string(Method method);
+// Throws InputError for anything but "rk4", "exact" or "dopri".
+Method parse_method(const std::string& text);
+
 struct CollisionOptions {
-  double dt = 5e-6;                // s, the RK4 step (N2000)
+  Method method = Method::rk4;
+  double dt = 5e-6;                // s: the step (rk4, exact) or the first step (dopri)
+  double tolerance = 1e-9;         // relative local error per step (dopri)
   double window = 5e-3;            // s of free flight followed after each separation
   double max_contact_time = 0.05;  // s; a contact lasting longer is reported as no separation
   bool record_force = false;       // keep the force samples F(t) in the result

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <memory>
 #include <optional>
+#include <map>
 #include <string>
 
 #include "commands.hpp"
@@ -108,7 +109,12 @@ void add_ball_options(CLI::App& cmd, Ball& ball) {
 }
 
 void add_integrator_options(CLI::App& cmd, CollisionOptions& options) {
-  cmd.add_option("--dt", options.dt, "RK4 step, s")->capture_default_str();
+  cmd.add_option("--integrator", options.method, "rk4 (N2000), exact (modal, any step) or dopri (adaptive)")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, Method>{{"rk4", Method::rk4}, {"exact", Method::exact}, {"dopri", Method::dopri}}))
+      ->default_str("rk4");
+  cmd.add_option("--dt", options.dt, "step (rk4, exact) or first step (dopri), s")->capture_default_str();
+  cmd.add_option("--tolerance", options.tolerance, "relative local error per step (dopri)")->capture_default_str();
   cmd.add_option("--window", options.window, "free flight followed after a separation, s")->capture_default_str();
 }
 

@@ -1,0 +1,102 @@
+#pragma once
+// Internal: the state of ball and modes during a collision, shared by the steppers.
+// y = [s, v, a_0..a_{n-1}, a_0'..a_{n-1}'], s the ball's displacement from first touch (+y).
+#include <Eigen/Dense>
+
+#include "sweetspot/ball.hpp"
+#include "sweetspot/collision.hpp"
+
+namespace sweetspot::detail {
+
+class ContactState {
+ public:
+  ContactState(const ModalContact& body, const Ball& ball)
+      : body_(body), n_(body.count()), mass_(ball.mass), omega2_(body.omega.array().square()) {}
+
+  int modes() const { return n_; }
+  int size() const { return 2 + 2 * n_; }
+  double ball_mass() const { return mass_; }
+  const ModalContact& body() const { return body_; }
+  const Eigen::ArrayXd& omega2() const { return omega2_; }
+
+  double compression(const Eigen::VectorXd& y) const { return body_.psi.dot(y.segment(2, n_)) - y(0); }
+  double compression_rate(const Eigen::VectorXd& y) const {
+    return body_.psi.dot(y.segment(2 + n_, n_)) - y(1);
+  }
+  // u'' = sum psi_n a_n'' - s'' = -sum psi_n omega_n^2 a_n - F (sum psi_n^2 + 1/m).
+  double compression_acceleration(const Eigen::VectorXd& y, const ContactForce& law) const {
+    const double force = law(compression(y));
+    return -(body_.psi.array() * omega2_ * y.segment(2, n_).array()).sum() -
+           force * (body_.psi.squaredNorm() + 1 / mass_);
+  }
+  // Force and its time derivative dF/dt = F'(u) u' in state y.
+  ForceSample sample(double t, const Eigen::VectorXd& y, const ContactForce& law) const {
+    const double u = compression(y);
+    return {t, law(u), law.stiffness(u) * compression_rate(y)};
+  }
+
+  // dy/dt: the ball pushed by +F, every mode by -F psi_n.
+  void derivative(const Eigen::VectorXd& y, const ContactForce& law, Eigen::VectorXd& dy) const {
+    const double force = law(compression(y));
+    dy(0) = y(1);
+    dy(1) = force / mass_;
+    dy.segment(2, n_) = y.segment(2 + n_, n_);
+    dy.segment(2 + n_, n_) = -(omega2_ * y.segment(2, n_).array()).matrix() - force * body_.psi;
+  }
+
+ private:
+  const ModalContact& body_;
+  int n_;
+  double mass_;
+  Eigen::ArrayXd omega2_;
+};
+
+// What a stepper says of an attempted step: adaptive ones may reject it and propose a new size.
+struct StepOutcome {
+  bool accepted = true;
+  double next_h = 0;
+};
+
+// The two events of a contact: maximum compression (u' falls through 0: the force law switches)
+// and separation (u falls through 0).
+enum class ContactEvent { max_compression, separation };
+
+inline double event_value(const ContactState& state, ContactEvent event, const Eigen::VectorXd& y) {
+  return event == ContactEvent::separation ? state.compression(y) : state.compression_rate(y);
+}
+
+inline double event_rate(const ContactState& state, ContactEvent event, const Eigen::VectorXd& y,
+                         const ContactForce& law) {
+  return event == ContactEvent::separation ? state.compression_rate(y) : state.compression_acceleration(y, law);
+}
+
+// Illinois regula falsi for the step h* in (0, h] at which the event value of step(y, h*) crosses
+// zero, given it is > 0 at y and <= 0 at out = step(y, h). Leaves in `out` the state just past
+// the event (value <= 0) and returns h*. Suits steppers whose steps are cheap to repeat.
+template <class Stepper>
+double locate_by_restepping(Stepper& stepper, const ContactState& state, const Eigen::VectorXd& y, double h,
+                            const ContactForce& law, ContactEvent event, Eigen::VectorXd& out) {
+  double lo = 0, hi = h, f_lo = event_value(state, event, y), f_hi = event_value(state, event, out);
+  int side = 0;
+  Eigen::VectorXd trial(y.size());
+  for (int iteration = 0; iteration < 100 && hi - lo > 1e-15 * h; ++iteration) {
+    double mid = hi - f_hi * (hi - lo) / (f_hi - f_lo);
+    if (!(mid > lo && mid < hi)) mid = (lo + hi) / 2;
+    stepper.step(y, mid, law, trial);
+    const double f = event_value(state, event, trial);
+    if (f > 0) {
+      lo = mid, f_lo = f;
+      if (side == 1) f_hi /= 2;
+      side = 1;
+    } else {
+      hi = mid, f_hi = f, out = trial;
+      if (side == -1) f_lo /= 2;
+      side = -1;
+      if (f == 0) break;
+    }
+  }
+  if (hi == h) stepper.step(y, h, law, out);
+  return hi;
+}
+
+}  // namespace sweetspot::detail

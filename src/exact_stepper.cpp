@@ -1,0 +1,229 @@
+#include "exact_stepper.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sweetspot::detail {
+
+namespace {
+
+// P_k = int_0^h sin(w (h - t)) / w t^k dt and Q_k = int_0^h cos(w (h - t)) t^k dt, k = 0..3:
+// the response of a mode to the forcing t^k. For w h >= 1, integration by parts from P_0 =
+// (1 - cos)/w^2, Q_0 = sin/w: Q_k = k P_{k-1}, P_k = (h^k - k Q_{k-1}) / w^2. Below that the
+// recursion cancels, and the power series (exact at w = 0) takes over:
+//   P_k = h^(k+2) k! sum_j (-x^2)^j / (k+2j+2)!,  Q_k = h^(k+1) k! sum_j (-x^2)^j / (k+2j+1)!.
+void monomial_responses(double w, double h, double cos_x, double sin_x, double p[4], double q[4]) {
+  const double x = w * h;
+  const double h_power[5] = {1, h, h * h, h * h * h, h * h * h * h};
+  if (x >= 1) {
+    const double w2 = w * w;
+    p[0] = (1 - cos_x) / w2;
+    q[0] = sin_x / w;
+    for (int k = 1; k < 4; ++k) {
+      q[k] = k * p[k - 1];
+      p[k] = (h_power[k] - k * q[k - 1]) / w2;
+    }
+    return;
+  }
+  const double x2 = x * x;
+  double factorial = 1;  // k!
+  for (int k = 0; k < 4; ++k) {
+    if (k > 0) factorial *= k;
+    double denom_q = 1;
+    for (int j = 2; j <= k + 1; ++j) denom_q *= j;  // (k + 1)!
+    double denom_p = denom_q * (k + 2);             // (k + 2)!
+    double sp = 0, sq = 0, term = 1;
+    for (int j = 0; j < 12 && std::abs(term) > 1e-18 * denom_q; ++j) {
+      sq += term / denom_q;
+      sp += term / denom_p;
+      term *= -x2;
+      denom_q *= (k + 2 * j + 2) * (k + 2 * j + 3);
+      denom_p *= (k + 2 * j + 3) * (k + 2 * j + 4);
+    }
+    q[k] = h_power[k + 1] * factorial * sq;
+    p[k] = h_power[k + 1] * h * factorial * sp;
+  }
+}
+
+// Cubic Hermite basis on [0, h] as polynomials in t: rows A (F0), B (h F0' folded: weight of F0'),
+// C (F1), D (F1'); columns t^0..t^3.
+void hermite_weights(double h, double b[4][4]) {
+  const double h2 = h * h, h3 = h2 * h;
+  const double rows[4][4] = {{1, 0, -3 / h2, 2 / h3}, {0, 1, -2 / h, 1 / h2}, {0, 0, 3 / h2, -2 / h3}, {0, 0, -1 / h, 1 / h2}};
+  for (int r = 0; r < 4; ++r)
+    for (int k = 0; k < 4; ++k) b[r][k] = rows[r][k];
+}
+
+}  // namespace
+
+ModeResponse::ModeResponse(const Eigen::ArrayXd& w, double step, double ball_mass) : h(step), omega(w) {
+  const int n = static_cast<int>(omega.size());
+  for (Eigen::ArrayXd* a : {&c, &sn, &w2sn, &dA, &dB, &dC, &dD, &qA, &qB, &qC, &qD}) a->resize(n);
+  double b[4][4];
+  hermite_weights(h, b);
+  const auto combine = [&b](const double m[4], int row) {
+    return b[row][0] * m[0] + b[row][1] * m[1] + b[row][2] * m[2] + b[row][3] * m[3];
+  };
+  double p[4], q[4];
+  for (int i = 0; i < n; ++i) {
+    const double cos_x = std::cos(omega(i) * h), sin_x = std::sin(omega(i) * h);
+    c(i) = cos_x;
+    sn(i) = omega(i) == 0 ? h : sin_x / omega(i);
+    w2sn(i) = omega(i) * sin_x;
+    monomial_responses(omega(i), h, cos_x, sin_x, p, q);
+    dA(i) = combine(p, 0), dB(i) = combine(p, 1), dC(i) = combine(p, 2), dD(i) = combine(p, 3);
+    qA(i) = combine(q, 0), qB(i) = combine(q, 1), qC(i) = combine(q, 2), qD(i) = combine(q, 3);
+  }
+  monomial_responses(0, h, 1, 0, p, q);
+  for (int r = 0; r < 4; ++r) ball_d[r] = combine(p, r) / ball_mass, ball_q[r] = combine(q, r) / ball_mass;
+}
+
+StepCoefficients::StepCoefficients(std::shared_ptr<const ModeResponse> r, const Eigen::ArrayXd& psi2)
+    : response(std::move(r)), psi2_sum(psi2.sum()) {
+  gC = (psi2 * response->dC).sum() + response->ball_d[2];
+  gD = (psi2 * response->dD).sum() + response->ball_d[3];
+  hC = (psi2 * response->qC).sum() + response->ball_q[2];
+  hD = (psi2 * response->qD).sum() + response->ball_q[3];
+}
+
+namespace {
+
+// The responses at the nominal step and at the graded first steps are the same for every impact
+// on one modal basis (only the mode shapes at the contact differ), so each thread keeps the last
+// few it made.
+std::shared_ptr<const ModeResponse> cached_response(const Eigen::ArrayXd& omega, double h, double ball_mass) {
+  struct Entry {
+    std::shared_ptr<const ModeResponse> response;
+    double ball_mass;
+  };
+  thread_local std::vector<Entry> cache;
+  for (const Entry& e : cache)
+    if (e.response->h == h && e.ball_mass == ball_mass && e.response->omega.size() == omega.size() &&
+        (e.response->omega == omega).all())
+      return e.response;
+  if (cache.size() >= 16) cache.erase(cache.begin());
+  cache.push_back({std::make_shared<ModeResponse>(omega, h, ball_mass), ball_mass});
+  return cache.back().response;
+}
+
+}  // namespace
+
+ExactStepper::ExactStepper(const ContactState& state, const CollisionOptions& options)
+    : state_(state), psi2_(state.body().psi.array().square()),
+      nominal_(cached_response(state.body().omega.array(), options.dt, state.ball_mass()), psi2_),
+      a_known_(state.modes()), v_known_(state.modes()) {}
+
+void ExactStepper::step(const Eigen::VectorXd& y, double h, const ContactForce& law, Eigen::VectorXd& out) {
+  if (h == nominal_.h()) return advance(nominal_, y, law, out);
+  if (h != other_.h()) {
+    const bool graded = h < nominal_.h() && std::exp2(std::round(std::log2(nominal_.h() / h))) * h == nominal_.h();
+    const Eigen::ArrayXd omega = state_.body().omega.array();
+    other_ = StepCoefficients(graded ? cached_response(omega, h, state_.ball_mass())
+                                     : std::make_shared<ModeResponse>(omega, h, state_.ball_mass()),
+                              psi2_);
+  }
+  advance(other_, y, law, out);
+}
+
+double ExactStepper::locate(const Eigen::VectorXd& y, double h, const ContactForce& law, ContactEvent event,
+                            Eigen::VectorXd& out) {
+  const double f0 = event_value(state_, event, y), d0 = event_rate(state_, event, y, law) * h;
+  const double f1 = event_value(state_, event, out), d1 = event_rate(state_, event, out, law) * h;
+  const auto cubic = [&](double s) {
+    const double s2 = s * s, s3 = s2 * s;
+    return (2 * s3 - 3 * s2 + 1) * f0 + (s3 - 2 * s2 + s) * d0 + (-2 * s3 + 3 * s2) * f1 + (s3 - s2) * d1;
+  };
+  double lo = 0, hi = 1;
+  for (int iteration = 0; iteration < 60; ++iteration) {
+    const double mid = (lo + hi) / 2;
+    (cubic(mid) > 0 ? lo : hi) = mid;
+  }
+  if (hi == 1) return h;  // `out` already is the state at the end of the step
+  Eigen::VectorXd trial(y.size());
+  step(y, hi * h, law, trial);
+  out = trial;
+  return hi * h;
+}
+
+// Solves for the end compression u1 with F1 = F(u1) and F1' = F'(u1) u1': Newton on
+// g(u) = u - u_known + gC F(u) + gD F1'(u), kept inside [0, u_known] where g changes sign.
+// `guess` is a prediction of u1 (the Taylor step from the start of the step).
+double end_compression(const StepCoefficients& k, const ContactForce& law, double u_known, double du_known,
+                       double guess) {
+  if (u_known <= 0) return u_known;  // no force can arise: the ball is clear all step
+  const double e = law.exponent();
+  const auto g = [&](double u, double& slope) {
+    const double f = law(u), stiffness = e * f / u, stiffness_rate = (e - 1) * stiffness / u;
+    const double denominator = 1 + k.hD * stiffness, numerator = du_known - k.hC * f;
+    const double rate = stiffness * numerator / denominator;
+    const double rate_slope =
+        (stiffness_rate * numerator - stiffness * k.hC * stiffness) / denominator -
+        rate * k.hD * stiffness_rate / denominator;
+    slope = 1 + k.gC * stiffness + k.gD * rate_slope;
+    return u - u_known + k.gC * f + k.gD * rate;
+  };
+  double lo = 0, hi = u_known, slope = 0;
+  double u = guess > 0 && guess < u_known ? guess : u_known / 2;
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const double value = g(u, slope);
+    (value > 0 ? hi : lo) = u;
+    double next = u - value / slope;
+    if (std::abs(next - u) <= 1e-15 * u || hi - lo <= 1e-15 * hi) return next;
+    if (!(next > lo && next < hi) || !(slope > 0)) next = (lo + hi) / 2;
+    u = next;
+  }
+  return u;
+}
+
+void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, const ContactForce& law,
+                           Eigen::VectorXd& out) {
+  const ModeResponse& m = *k.response;
+  const int n = state_.modes();
+  const double *psi = state_.body().psi.data(), *w2 = state_.omega2().data();
+  const double *a = y.data() + 2, *v = y.data() + 2 + n;
+  const double *c = m.c.data(), *sn = m.sn.data(), *w2sn = m.w2sn.data();
+  const double *dA = m.dA.data(), *dB = m.dB.data(), *dC = m.dC.data(), *dD = m.dD.data();
+  const double *qA = m.qA.data(), *qB = m.qB.data(), *qC = m.qC.data(), *qD = m.qD.data();
+  double *a_known = a_known_.data(), *v_known = v_known_.data();
+
+  // The start: compression, its rate and acceleration, the force and its rate.
+  double psi_a = 0, psi_v = 0, psi_w2a = 0;
+  for (int i = 0; i < n; ++i) {
+    psi_a += psi[i] * a[i];
+    psi_v += psi[i] * v[i];
+    psi_w2a += psi[i] * w2[i] * a[i];
+  }
+  const double u0 = psi_a - y(0), du0 = psi_v - y(1);
+  const double f0 = law(u0), r0 = u0 > 0 ? law.exponent() * f0 / u0 * du0 : 0.0;
+  const double ddu0 = -psi_w2a - f0 * (k.psi2_sum + 1 / state_.ball_mass());
+
+  // Everything known before the end force: free rotation plus the response to F0 and F0'.
+  double u_known = 0, du_known = 0;
+  for (int i = 0; i < n; ++i) {
+    a_known[i] = c[i] * a[i] + sn[i] * v[i] - psi[i] * (f0 * dA[i] + r0 * dB[i]);
+    v_known[i] = -w2sn[i] * a[i] + c[i] * v[i] - psi[i] * (f0 * qA[i] + r0 * qB[i]);
+    u_known += psi[i] * a_known[i];
+    du_known += psi[i] * v_known[i];
+  }
+  const double s_known = y(0) + y(1) * m.h + f0 * m.ball_d[0] + r0 * m.ball_d[1];
+  const double vb_known = y(1) + f0 * m.ball_q[0] + r0 * m.ball_q[1];
+  u_known -= s_known;
+  du_known -= vb_known;
+
+  const double guess = u0 + m.h * du0 + 0.5 * m.h * m.h * ddu0;
+  const double u1 = end_compression(k, law, u_known, du_known, guess);
+  const double f1 = law(u1);
+  const double stiffness = u1 > 0 ? law.exponent() * f1 / u1 : 0.0;
+  const double r1 = stiffness * (du_known - k.hC * f1) / (1 + k.hD * stiffness);
+
+  out.resize(y.size());
+  out(0) = s_known + f1 * m.ball_d[2] + r1 * m.ball_d[3];
+  out(1) = vb_known + f1 * m.ball_q[2] + r1 * m.ball_q[3];
+  double *a_out = out.data() + 2, *v_out = out.data() + 2 + n;
+  for (int i = 0; i < n; ++i) {
+    a_out[i] = a_known[i] - psi[i] * (f1 * dC[i] + r1 * dD[i]);
+    v_out[i] = v_known[i] - psi[i] * (f1 * qC[i] + r1 * qD[i]);
+  }
+}
+
+}  // namespace sweetspot::detail

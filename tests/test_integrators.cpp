@@ -1,0 +1,117 @@
+// The three integrators of the contact phase: RK4 (N2000), exact modal stepping and adaptive
+// Dormand-Prince. Orders, agreement with a reference, and the exact identities for each.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <numeric>
+
+#include "program.hpp"
+#include "sweetspot/bat_file.hpp"
+#include "sweetspot/formulas.hpp"
+#include "sweetspot/impact.hpp"
+
+using namespace sweetspot;
+
+namespace {
+
+const ModalBasis& r161() {
+  static const ModalBasis basis = compute_modes(load_bat(source_path("studies/bats/r161.toml")), BeamTheory::timoshenko);
+  return basis;
+}
+
+ImpactScene high_impact(double z, int modes, Method method, double dt, double tolerance = 1e-9) {
+  ImpactScene s;
+  s.z = z;
+  s.ball_speed = 40;
+  s.swing = {51, true, 0, 0.09};
+  s.vibrational_modes = modes;
+  s.integrator.method = method;
+  s.integrator.dt = dt;
+  s.integrator.tolerance = tolerance;
+  return s;
+}
+
+double vf(const ImpactScene& s) {
+  const ImpactResult r = simulate_impact(r161(), s);
+  REQUIRE(r.status == CollisionStatus::ok);
+  return r.vf;
+}
+
+// The reference: the tightest adaptive run (the explicit method needs steps below 2.5 us for
+// all 168 modes anyway).
+double reference_vf(double z, int modes) { return vf(high_impact(z, modes, Method::dopri, 1e-7, 1e-13)); }
+
+}  // namespace
+
+TEST_CASE("Exact modal stepping converges at fourth order, checked against Richardson", "[integrators]") {
+  const double reference = reference_vf(0.605, all_modes);
+  std::vector<double> v, errors;
+  for (double dt : {40e-6, 20e-6, 10e-6}) {
+    v.push_back(vf(high_impact(0.605, all_modes, Method::exact, dt)));
+    errors.push_back(std::abs(v.back() / reference - 1));
+  }
+  const double order = std::log2(errors[1] / errors[2]);
+  WARN("exact stepper, all modes: relative vf errors " << errors[0] << ", " << errors[1] << ", " << errors[2]
+                                                       << " at 40, 20, 10 us: observed order " << order);
+  CHECK(order > 3.3);
+  CHECK(order < 4.6);
+  CHECK(std::log2(errors[0] / errors[1]) > 3.3);
+  // Richardson extrapolation of the two finest runs agrees with the adaptive reference.
+  const double richardson = v[2] + (v[2] - v[1]) / (std::pow(2.0, order) - 1);
+  CHECK(std::abs(richardson / reference - 1) < 0.1 * errors[2]);
+}
+
+TEST_CASE("Every integrator agrees with the reference to 1e-8 at tight settings", "[integrators]") {
+  for (double z : {0.305, 0.605, 0.705, 0.805}) {
+    const double reference = reference_vf(z, all_modes);
+    INFO("z " << z);
+    CHECK(vf(high_impact(z, all_modes, Method::rk4, 1e-6)) == Approx(reference).epsilon(1e-8));
+    CHECK(vf(high_impact(z, all_modes, Method::exact, 2e-6)) == Approx(reference).epsilon(1e-8));
+    CHECK(vf(high_impact(z, all_modes, Method::dopri, 1e-6, 1e-11)) == Approx(reference).epsilon(1e-8));
+  }
+}
+
+TEST_CASE("Every integrator keeps the rigid-bat identity", "[integrators]") {
+  for (auto [method, dt] : {std::pair{Method::exact, 4e-6}, {Method::dopri, 5e-6}})
+    for (bool pivoted : {false, true})
+      for (double z : {0.305, 0.705, 0.805})
+        for (double e0 : {0.5, 1.0}) {
+          ImpactScene s = high_impact(z, 0, method, dt, 1e-10);
+          s.pivoted = pivoted;
+          s.ball.e0 = e0;
+          const SceneGeometry g = scene_geometry(s, r161());
+          INFO(to_string(method) << ", pivoted " << pivoted << ", z " << z << ", e0 " << e0);
+          CHECK(vf(s) == Approx(rigid_exit_speed(e0, g.recoil, s.ball_speed, g.bat_speed)).epsilon(1e-7));
+        }
+}
+
+TEST_CASE("Every integrator keeps the lossless identity (e0 = 1)", "[integrators]") {
+  for (auto [method, dt] : {std::pair{Method::exact, 2e-6}, {Method::dopri, 1e-6}}) {
+    ImpactScene s = high_impact(0.605, 18, method, dt, 1e-11);
+    s.ball.e0 = 1;
+    s.integrator.record_force = true;
+    const ImpactResult r = simulate_impact(r161(), s);
+    REQUIRE(r.status == CollisionStatus::ok);
+    const SceneGeometry g = scene_geometry(s, r161());
+    const auto responses = mode_responses(g.contact, s.ball.mass, r.force);
+    const double sum = std::accumulate(responses.begin(), responses.end(), 0.0);
+    INFO(to_string(method));
+    CHECK(r.vf == Approx(lossless_exit_speed(sum, s.ball_speed, g.bat_speed)).epsilon(1e-6));
+  }
+}
+
+TEST_CASE("Exact stepping takes all modes at any step; RK4 is refused", "[integrators]") {
+  const ImpactResult exact = simulate_impact(r161(), high_impact(0.705, all_modes, Method::exact, 40e-6));
+  CHECK(exact.status == CollisionStatus::ok);
+  CHECK(std::abs(exact.energy.residual) < 1e-3 * exact.energy.initial);
+  CHECK(simulate_impact(r161(), high_impact(0.705, all_modes, Method::rk4, 5e-6)).status ==
+        CollisionStatus::refused_step);
+  const ProgramRun run = run_program("impact --bat " + source_path("studies/bats/r161.toml") +
+                                     " --z 0.705 --ball-speed 40 --center 0.09 --omega 51 --modes all "
+                                     "--integrator exact --dt 2e-5 --json");
+  CHECK(run.exit_code == 0);
+  CHECK_THAT(run.output, Catch::Contains("\"status\": \"ok\""));
+  CHECK(run_program("impact --bat " + source_path("studies/bats/r161.toml") +
+                    " --z 0.7 --ball-speed 40 --center 0.09 --omega 51 --integrator leapfrog")
+            .exit_code != 0);
+}
