@@ -259,6 +259,15 @@ const char* to_string(Method method) {
   return "unknown";
 }
 
+double default_step(Method method) {
+  switch (method) {
+    case Method::exact: return 1e-5;
+    case Method::dopri: return 1e-6;
+    case Method::rk4: break;
+  }
+  return 5e-6;
+}
+
 Method parse_method(const std::string& text) {
   if (text == "rk4") return Method::rk4;
   if (text == "exact") return Method::exact;

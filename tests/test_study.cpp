@@ -189,7 +189,7 @@ TEST_CASE("defaults fill what the study leaves out", "[study]") {
   CHECK(study.outputs == default_outputs());
   CHECK(study.theory == BeamTheory::timoshenko);
   CHECK(study.slices == 0);
-  CHECK(study.integrator == Integrator::rk4);
+  CHECK(s.integrator.method == Method::exact);  // studies step exactly by default
   CHECK(s.z == 0.7);
   CHECK(s.ball_speed == 40);
   CHECK(s.ball.e0 == 0.5);
@@ -202,7 +202,7 @@ TEST_CASE("defaults fill what the study leaves out", "[study]") {
   CHECK(s.swing.omega == 0);
   CHECK_FALSE(s.pivoted);
   CHECK(s.vibrational_modes == 18);
-  CHECK(s.integrator.dt == 5e-6);
+  CHECK(s.integrator.dt == default_step(Method::exact));
   CHECK(s.integrator.window == 5e-3);
   const GridPoint p = grid_point(study, 0);
   CHECK(p.coords.empty());
@@ -390,7 +390,7 @@ TEST_CASE("a wall study: the ball and its speed, no bat", "[study]") {
   CHECK(p.kind == StudyKind::wall);
   CHECK(p.scene.ball_speed == 45);
   CHECK(p.scene.ball.e0 == 0.5);
-  CHECK(p.scene.integrator.dt == 5e-6);
+  CHECK(p.scene.integrator.dt == default_step(Method::exact));
   CHECK(dir.load(with(wall_study, "[output]\nvariables = [\"vf\", \"e_eff\"]\n", "")).outputs ==
         default_outputs(StudyKind::wall));
 }

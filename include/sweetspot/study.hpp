@@ -12,8 +12,9 @@
 //   [scene]  impact: bat (path relative to the study file), theory ("timoshenko" |
 //              "euler-bernoulli"), slices (4..4096; default the profile's own), z, ball_speed, e0,
 //              ball_mass, ball_radius, k1, a, center | cm_speed (exactly one), omega, pivot
-//              (bool), modes (count or "all"), integrator ("rk4"), dt, window
-//            wall: ball_speed (> 0), e0, ball_mass, ball_radius, k1, a, integrator, dt, window
+//              (bool), modes (count or "all"), integrator ("exact" (default), "rk4", "dopri"), dt (default: the integrator's
+//            own), tolerance (dopri), window
+//            wall: ball_speed (> 0), e0, ball_mass, ball_radius, k1, a, integrator, dt, tolerance, window
 //            toy: omega_tau (> 0)
 //   [axes]   any [scene] key of the kind but integrator, as a list of values (bat: paths; theory:
 //            names; pivot: booleans; modes: counts or "all"), or for numbers as a range table
@@ -51,9 +52,6 @@ const char* to_string(StudyKind kind);
 // Only impact studies strike a bat: the others have no bats, no modes and no bat dimension.
 constexpr bool has_bat(StudyKind kind) { return kind == StudyKind::impact; }
 
-// The collision integrator. Only classical RK4 (N2000) exists; an enum so that others can join.
-enum class Integrator { rk4 };
-const char* to_string(Integrator integrator);
 
 // One swept scene key. `values` holds a number for every kind of axis: the value itself, 0/1 for
 // pivot, the count for modes (all_modes for "all"), and for the named keys an index: bat into
@@ -80,7 +78,6 @@ struct Study {
   // The [scene] values over the defaults; axes set their own keys per grid point.
   BeamTheory theory = BeamTheory::timoshenko;
   int slices = 0;  // 0: the profile's own slice count
-  Integrator integrator = Integrator::rk4;
   ImpactScene base;                  // impact; wall: its ball, ball_speed and integrator
   double omega_tau = 0;              // toy
   std::vector<Axis> axes;            // in the order written

@@ -108,12 +108,17 @@ void add_ball_options(CLI::App& cmd, Ball& ball) {
   cmd.add_option("--a", ball.a, "ball compression exponent a")->capture_default_str();
 }
 
+void resolve_default_step(const CLI::App& cmd, CollisionOptions& options) {
+  if (cmd.count("--dt") == 0) options.dt = default_step(options.method);
+}
+
 void add_integrator_options(CLI::App& cmd, CollisionOptions& options) {
   cmd.add_option("--integrator", options.method, "rk4 (N2000), exact (modal, any step) or dopri (adaptive)")
       ->transform(CLI::CheckedTransformer(
           std::map<std::string, Method>{{"rk4", Method::rk4}, {"exact", Method::exact}, {"dopri", Method::dopri}}))
       ->default_str("rk4");
-  cmd.add_option("--dt", options.dt, "step (rk4, exact) or first step (dopri), s")->capture_default_str();
+  cmd.add_option("--dt", options.dt, "step (rk4, exact) or first step (dopri), s [default: 5e-6 for rk4, "
+                                     "1e-5 for exact, 1e-6 for dopri]");
   cmd.add_option("--tolerance", options.tolerance, "relative local error per step (dopri)")->capture_default_str();
   cmd.add_option("--window", options.window, "free flight followed after a separation, s")->capture_default_str();
 }
@@ -138,7 +143,8 @@ void add_impact_command(CLI::App& app) {
   add_ball_options(*cmd, o->scene.ball);
   add_integrator_options(*cmd, o->scene.integrator);
   cmd->add_flag("--json", o->json, "print one JSON object");
-  cmd->callback([o] {
+  cmd->callback([o, cmd] {
+    resolve_default_step(*cmd, o->scene.integrator);
     if (!o->cm_speed && !o->center) throw InputError("impact: give the swing as --cm-speed or as --center");
     run_impact(*o);
   });

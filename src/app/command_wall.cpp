@@ -53,7 +53,10 @@ void add_wall_command(CLI::App& app) {
   add_ball_options(*cmd, o->ball);
   add_integrator_options(*cmd, o->integrator);
   cmd->add_flag("--json", o->json, "print one JSON object");
-  cmd->callback([o] { run_wall(*o); });
+  cmd->callback([o, cmd] {
+    resolve_default_step(*cmd, o->integrator);
+    run_wall(*o);
+  });
 }
 
 }  // namespace sweetspot::app
