@@ -141,12 +141,12 @@ Eigen::MatrixXd beam_mass_matrix(const Bat& bat, BeamTheory theory) {
   return theory == BeamTheory::timoshenko ? timoshenko_system(bat).mass : euler_bernoulli_system(bat).mass;
 }
 
-ModalBasis compute_modes(const Bat& bat, BeamTheory theory) {
+ModalBasis compute_modes(const Bat& bat, BeamTheory theory, bool rigid_only) {
   const bool timoshenko = theory == BeamTheory::timoshenko;
   const BeamSystem s = timoshenko ? timoshenko_system(bat) : euler_bernoulli_system(bat);
-  VectorXd omega_squared;
-  MatrixXd x;
-  solve(s, timoshenko, omega_squared, x);
+  VectorXd omega_squared = VectorXd::Zero(2);
+  MatrixXd x(s.mass.rows(), 2);
+  if (!rigid_only) solve(s, timoshenko, omega_squared, x);
 
   ModalBasis basis;
   basis.theory = theory;

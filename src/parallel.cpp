@@ -35,20 +35,22 @@ void log_rank_summary(int rank, int solves, double impact_seconds, Clock::time_p
 class ModalCache {
  public:
   explicit ModalCache(const Study& study) : study_(study) {}
+  // A point that keeps no vibrational mode gets the rigid modes alone: no eigen-solve.
   const ModalBasis& get(const GridPoint& p) {
-    const auto key = std::make_tuple(p.bat, p.slices, p.theory);
+    const bool rigid_only = p.scene.vibrational_modes == 0;
+    const auto key = std::make_tuple(p.bat, p.slices, p.theory, rigid_only);
     auto it = cache_.find(key);
     if (it != cache_.end()) return it->second;
     Bat bat = load_bat(study_.bats[p.bat]);
     if (p.slices > 0) bat = resample(bat, p.slices);
-    ++solves_;
-    return cache_.emplace(key, compute_modes(bat, p.theory)).first->second;
+    if (!rigid_only) ++solves_;
+    return cache_.emplace(key, compute_modes(bat, p.theory, rigid_only)).first->second;
   }
   int solves() const { return solves_; }
 
  private:
   const Study& study_;
-  std::map<std::tuple<std::size_t, int, BeamTheory>, ModalBasis> cache_;
+  std::map<std::tuple<std::size_t, int, BeamTheory, bool>, ModalBasis> cache_;
   int solves_ = 0;
 };
 
@@ -212,9 +214,11 @@ void work(const Study& study, const OutputLayout& layout, int rank) {
   log_rank_summary(rank, cache.solves(), impact_seconds, start);
 }
 
-// The vibrational frequencies (Hz) of each bat, none for the kinds without a bat.
+// The vibrational frequencies (Hz) of each bat; none for the kinds without a bat, nor for
+// studies of rigid bats alone.
 std::vector<std::vector<double>> bat_frequencies(const Study& study) {
   std::vector<std::vector<double>> f;
+  if (!keeps_vibrations(study)) return f;
   for (const auto& file : study.bats) {
     Bat bat = load_bat(file);
     if (study.slices > 0) bat = resample(bat, study.slices);

@@ -159,6 +159,7 @@ namespace {
 void add_bat_coordinates(const Study& study, Dataset& d) {
   if (std::ranges::none_of(study.axes, [](const Axis& axis) { return axis.name == "bat"; }))
     d.coordinates.push_back({"bat", "1", "bat", {}, {study.bat_names.front()}});
+  if (!keeps_vibrations(study)) return;
   Coordinate mode{"mode", "1", describe("mode").long_name, {}, {}};
   for (int n = 1; n <= dataset_mode_count(study); ++n) mode.values.push_back(n);
   d.coordinates.push_back(mode);
@@ -191,6 +192,12 @@ Variable frequency_variable(const Study& study, const std::vector<std::vector<do
 
 }  // namespace
 
+bool keeps_vibrations(const Study& study) {
+  const auto axis = std::ranges::find(study.axes, "modes", &Axis::name);
+  if (axis == study.axes.end()) return has_bat(study.kind) && study.base.vibrational_modes != 0;
+  return std::ranges::any_of(axis->values, [](double modes) { return modes != 0; });
+}
+
 Dataset make_dataset(const Study& study, const OutputLayout& layout, const std::vector<double>& rows,
                      const std::vector<std::vector<double>>& bat_frequencies_hz, const RunInfo& info) {
   Dataset d;
@@ -199,10 +206,11 @@ Dataset make_dataset(const Study& study, const OutputLayout& layout, const std::
     d.coordinates.push_back(axis_coordinate(study, axis));
     dims.push_back(axis.name);
   }
-  // Wall and toy studies have no bat: no bat or mode dimension and no frequencies.
+  // Wall and toy studies have no bat: no bat or mode dimension and no frequencies; a study of
+  // rigid bats alone computed no modes, so it stores no frequencies either.
   if (has_bat(study.kind)) add_bat_coordinates(study, d);
   add_outputs(study, layout, rows, dims, d);
-  if (has_bat(study.kind)) d.variables.push_back(frequency_variable(study, bat_frequencies_hz));
+  if (!bat_frequencies_hz.empty()) d.variables.push_back(frequency_variable(study, bat_frequencies_hz));
 
   d.text_attributes = {{"title", study.title},
                        {"study_file", study.file.string()},

@@ -140,3 +140,17 @@ TEST_CASE("A toy study under mpirun: no rank solves for modes, the dataset is th
   CHECK_THAT(run.output, Catch::Contains("rank 0: 0 eigen-solves") && Catch::Contains("rank 1: 0 eigen-solves"));
   require_identical(dir / "serial.h5", dir / "mpi.h5");
 }
+
+TEST_CASE("A study of rigid bats computes no eigen-decomposition and stores no frequencies", "[run]") {
+  TempDir dir;
+  const auto study = dir.write("study.toml", small_study(3, 0));
+  const ProgramRun run = run_program("run " + study.string() + " -o " + dir / "rigid.h5");
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  CHECK_THAT(run.output, Catch::Contains("rank 0: 0 eigen-solves"));
+  const ProgramRun check = run_command(std::string(python) + " -c \"import xarray as x; d = x.open_dataset('" +
+                                       dir / "rigid.h5" + "', engine='h5netcdf'); assert 'frequency' not in d; " +
+                                       "assert 'mode' not in d.dims; assert float(d.vf.min()) > 0; print('ok')\"");
+  INFO(check.output);
+  CHECK(check.exit_code == 0);
+}

@@ -36,7 +36,9 @@ struct ModalBasis {
   std::vector<double> nodes(int n) const;
 };
 
-ModalBasis compute_modes(const Bat& bat, BeamTheory theory);
+// With rigid_only, just the two rigid modes, from the mass matrix alone: no eigen-decomposition,
+// for scenes that keep no vibrational mode.
+ModalBasis compute_modes(const Bat& bat, BeamTheory theory, bool rigid_only = false);
 
 // The discretisation's mass matrix M (diagonal for Timoshenko, consistent for Euler-Bernoulli).
 Eigen::MatrixXd beam_mass_matrix(const Bat& bat, BeamTheory theory);

@@ -34,6 +34,9 @@ struct RunInfo {
 Dataset make_dataset(const Study& study, const OutputLayout& layout, const std::vector<double>& rows,
                      const std::vector<std::vector<double>>& bat_frequencies_hz, const RunInfo& info);
 
+// Whether any point of the study keeps a vibrational mode (else no modes are computed at all).
+bool keeps_vibrations(const Study& study);
+
 // How many modes the dataset's `mode` dimension has.
 int dataset_mode_count(const Study& study);
 
