@@ -12,6 +12,7 @@ void add_impact_command(CLI::App& app);
 void add_wall_command(CLI::App& app);
 void add_toy_command(CLI::App& app);
 void add_run_command(CLI::App& app);
+void add_convergence_command(CLI::App& app);
 
 // Options shared by the commands that run a collision.
 void add_ball_options(CLI::App& cmd, Ball& ball);

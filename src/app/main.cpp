@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   sweetspot::app::add_wall_command(app);
   sweetspot::app::add_toy_command(app);
   sweetspot::app::add_run_command(app);
+  sweetspot::app::add_convergence_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

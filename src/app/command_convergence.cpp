@@ -1,0 +1,106 @@
+// sweetspot convergence: error against run time for every integrator on a study's base scene,
+// logged as a table and written as one dataset (a work-precision diagram's data).
+#include <spdlog/spdlog.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "commands.hpp"
+#include "sweetspot/bat_file.hpp"
+#include "sweetspot/convergence.hpp"
+#include "sweetspot/input_error.hpp"
+
+namespace sweetspot::app {
+
+namespace {
+
+// The error the recommendation asks of each integrator: well below any physical uncertainty.
+constexpr double recommended_vf_error = 1e-6;
+
+struct ConvergenceCommandOptions {
+  std::string study;
+  std::string output;
+  bool quick = false;
+};
+
+// "z = 0.605, bat = R161": where grid point 0 sits on the study's axes.
+std::string describe_point(const Study& study, const GridPoint& point) {
+  std::string text;
+  for (std::size_t a = 0; a < study.axes.size(); ++a) {
+    const Axis& axis = study.axes[a];
+    const std::size_t i = point.coords[a];
+    const std::string value = axis.name == "bat" ? study.bat_names[point.bat]
+                              : axis.labels.empty() ? fmt::format("{:g}", axis.values[i])
+                                                    : axis.labels[i];
+    text += (text.empty() ? "" : ", ") + axis.name + " = " + value;
+  }
+  return text;
+}
+
+std::string describe_setting(Method method, const ConvergenceRun& run) {
+  if (method == Method::dopri) return fmt::format("tol {:.0e}", run.tolerance);
+  return fmt::format("dt {:.4g} us", 1e6 * run.step);
+}
+
+void log_table(const ConvergenceTable& table) {
+  const ConvergenceReference& ref = table.reference;
+  spdlog::info("reference vf = {:.12f} m/s (dopri, tolerance {:g}), Richardson (exact, order {}) {:.12f} m/s: "
+               "relative difference {:.2e}",
+               ref.vf, ref.tolerance, ref.richardson_order, ref.richardson_vf, ref.disagreement);
+  spdlog::info("{:<6} {:<16} {:>10} {:>14} {:>13} {:>12}", "method", "setting", "vf error", "contact error",
+               "energy error", "time/impact");
+  for (const IntegratorConvergence& integrator : table.integrators)
+    for (const ConvergenceRun& run : integrator.runs)
+      spdlog::info("{:<6} {:<16} {:>10.2e} {:>14.2e} {:>13.2e} {:>9.1f} us{}", to_string(integrator.method),
+                   describe_setting(integrator.method, run), run.vf_error, run.contact_time_error, run.energy_error,
+                   1e6 * run.time_per_impact,
+                   run.status == CollisionStatus::ok ? "" : std::string("  ") + to_string(run.status));
+  for (const IntegratorConvergence& integrator : table.integrators) {
+    const ConvergenceRun* best = cheapest_within(integrator, recommended_vf_error);
+    if (best)
+      spdlog::info("cheapest {} reaching vf error {:g}: {} ({:.2e}), {:.1f} us per impact",
+                   to_string(integrator.method), recommended_vf_error, describe_setting(integrator.method, *best),
+                   best->vf_error, 1e6 * best->time_per_impact);
+    else
+      spdlog::info("no {} setting reaches vf error {:g}", to_string(integrator.method), recommended_vf_error);
+  }
+}
+
+void run(const ConvergenceCommandOptions& o) {
+  spdlog::set_pattern("[%H:%M:%S] %v");
+  const Study study = load_study(o.study);
+  if (study.kind != StudyKind::impact)
+    throw InputError(o.study + ": kind = \"" + to_string(study.kind) +
+                     "\": convergence needs a study of kind \"impact\" (a ball on a bat)");
+  const GridPoint point = grid_point(study, 0);
+  if (!study.axes.empty())
+    spdlog::info("{} has {} grid points: using grid point 0 ({})", o.study, study.points(),
+                 describe_point(study, point));
+  Bat bat = load_bat(study.bats[point.bat]);
+  if (point.slices > 0) bat = resample(bat, point.slices);
+  const ModalBasis basis = compute_modes(bat, point.theory);
+
+  const ConvergenceTable table = run_convergence(basis, point.scene, o.quick);
+  spdlog::info("{}: z = {:g} m, {} modes kept (rigid included), largest stable RK4 step {:.4g} us{}", bat.name,
+               point.scene.z, table.kept_modes, 1e6 * table.rk4_largest_step, o.quick ? " (quick)" : "");
+  log_table(table);
+  const std::filesystem::path out =
+      o.output.empty() ? std::filesystem::path(o.study).stem().string() + "_convergence.h5" : o.output;
+  write_dataset(out, convergence_dataset(table, study));
+  spdlog::info("wrote {}", out.string());
+}
+
+}  // namespace
+
+void add_convergence_command(CLI::App& app) {
+  auto o = std::make_shared<ConvergenceCommandOptions>();
+  CLI::App* cmd =
+      app.add_subcommand("convergence", "Error against run time of every integrator on a study's base scene");
+  cmd->add_option("study", o->study, "study file (TOML) of kind \"impact\"; with axes, grid point 0")->required();
+  cmd->add_option("-o,--output", o->output, "dataset to write (default: the study's name + _convergence.h5)");
+  cmd->add_flag("--quick", o->quick, "the 3 finest settings of each integrator, each timed once (for tests)");
+  cmd->callback([o] { run(*o); });
+}
+
+}  // namespace sweetspot::app
