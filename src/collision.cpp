@@ -110,7 +110,7 @@ class CollisionRun {
       bool separated = false;
       if (!law.expanding() && state_.compression_rate(next) <= 0) {
         h = stepper_.locate(y_, h, law, detail::ContactEvent::max_compression, next);
-        law.start_expansion(state_.compression(next));
+        law.start_expansion(state_.ball_compression(state_.compression(next), law));
       } else if (law.expanding() && state_.compression(next) <= 0) {
         h = stepper_.locate(y_, h, law, detail::ContactEvent::separation, next);
         separated = true;

@@ -11,7 +11,8 @@ namespace sweetspot::detail {
 class ContactState {
  public:
   ContactState(const ModalContact& body, const Ball& ball)
-      : body_(body), n_(body.count()), mass_(ball.mass), omega2_(body.omega.array().square()) {}
+      : body_(body), n_(body.count()), mass_(ball.mass), omega2_(body.omega.array().square()),
+        compliance_(body.residual_compliance) {}
 
   int modes() const { return n_; }
   int size() const { return 2 + 2 * n_; }
@@ -19,25 +20,45 @@ class ContactState {
   const ModalContact& body() const { return body_; }
   const Eigen::ArrayXd& omega2() const { return omega2_; }
 
+  double compliance() const { return compliance_; }
+
+  // The geometric compression u = y_k - s: the ball touches while u > 0. Events (maximum
+  // compression, separation) are its zero crossings and those of u'.
   double compression(const Eigen::VectorXd& y) const { return body_.psi.dot(y.segment(2, n_)) - y(0); }
   double compression_rate(const Eigen::VectorXd& y) const {
     return body_.psi.dot(y.segment(2 + n_, n_)) - y(1);
   }
+  // The ball's own compression: the dropped modes' static yield c F takes up part of the
+  // geometric one, u_ball + c F(u_ball) = u (the same when no mode was dropped, c = 0).
+  double ball_compression(double u, const ContactForce& law) const {
+    if (compliance_ == 0 || u <= 0) return u;
+    double lo = 0, hi = u, x = u;
+    for (int iteration = 0; iteration < 100; ++iteration) {
+      const double f = law(x), g = x + compliance_ * f - u, slope = 1 + compliance_ * law.exponent() * f / x;
+      (g > 0 ? hi : lo) = x;
+      double next = x - g / slope;
+      if (std::abs(next - x) <= 1e-15 * x) return next;
+      x = next > lo && next < hi ? next : (lo + hi) / 2;
+    }
+    return x;
+  }
+  double force(const Eigen::VectorXd& y, const ContactForce& law) const {
+    return law(ball_compression(compression(y), law));
+  }
   // u'' = sum psi_n a_n'' - s'' = -sum psi_n omega_n^2 a_n - F (sum psi_n^2 + 1/m).
   double compression_acceleration(const Eigen::VectorXd& y, const ContactForce& law) const {
-    const double force = law(compression(y));
     return -(body_.psi.array() * omega2_ * y.segment(2, n_).array()).sum() -
-           force * (body_.psi.squaredNorm() + 1 / mass_);
+           force(y, law) * (body_.psi.squaredNorm() + 1 / mass_);
   }
-  // Force and its time derivative dF/dt = F'(u) u' in state y.
+  // Force and its time derivative dF/dt = F'(u_ball) u_ball', u_ball' = u' / (1 + c F').
   ForceSample sample(double t, const Eigen::VectorXd& y, const ContactForce& law) const {
-    const double u = compression(y);
-    return {t, law(u), law.stiffness(u) * compression_rate(y)};
+    const double u = ball_compression(compression(y), law), stiffness = law.stiffness(u);
+    return {t, law(u), stiffness * compression_rate(y) / (1 + compliance_ * stiffness)};
   }
 
   // dy/dt: the ball pushed by +F, every mode by -F psi_n.
   void derivative(const Eigen::VectorXd& y, const ContactForce& law, Eigen::VectorXd& dy) const {
-    const double force = law(compression(y));
+    const double force = this->force(y, law);
     dy(0) = y(1);
     dy(1) = force / mass_;
     dy.segment(2, n_) = y.segment(2 + n_, n_);
@@ -49,6 +70,7 @@ class ContactState {
   int n_;
   double mass_;
   Eigen::ArrayXd omega2_;
+  double compliance_;
 };
 
 // What a stepper says of an attempted step: adaptive ones may reject it and propose a new size.

@@ -78,12 +78,13 @@ ModeResponse::ModeResponse(const Eigen::ArrayXd& w, double step, double ball_mas
   for (int r = 0; r < 4; ++r) ball_d[r] = combine(p, r) / ball_mass, ball_q[r] = combine(q, r) / ball_mass;
 }
 
-StepCoefficients::StepCoefficients(std::shared_ptr<const ModeResponse> r, const Eigen::ArrayXd& psi2)
+StepCoefficients::StepCoefficients(std::shared_ptr<const ModeResponse> r, const Eigen::ArrayXd& psi2,
+                                   double compliance)
     : response(std::move(r)), psi2_sum(psi2.sum()) {
-  gC = (psi2 * response->dC).sum() + response->ball_d[2];
+  gC = (psi2 * response->dC).sum() + response->ball_d[2] + compliance;
   gD = (psi2 * response->dD).sum() + response->ball_d[3];
   hC = (psi2 * response->qC).sum() + response->ball_q[2];
-  hD = (psi2 * response->qD).sum() + response->ball_q[3];
+  hD = (psi2 * response->qD).sum() + response->ball_q[3] + compliance;
 }
 
 namespace {
@@ -110,7 +111,8 @@ std::shared_ptr<const ModeResponse> cached_response(const Eigen::ArrayXd& omega,
 
 ExactStepper::ExactStepper(const ContactState& state, const CollisionOptions& options)
     : state_(state), psi2_(state.body().psi.array().square()),
-      nominal_(cached_response(state.body().omega.array(), options.dt, state.ball_mass()), psi2_),
+      nominal_(cached_response(state.body().omega.array(), options.dt, state.ball_mass()), psi2_,
+               state.compliance()),
       a_known_(state.modes()), v_known_(state.modes()) {}
 
 void ExactStepper::step(const Eigen::VectorXd& y, double h, const ContactForce& law, Eigen::VectorXd& out) {
@@ -120,7 +122,7 @@ void ExactStepper::step(const Eigen::VectorXd& y, double h, const ContactForce& 
     const Eigen::ArrayXd omega = state_.body().omega.array();
     other_ = StepCoefficients(graded ? cached_response(omega, h, state_.ball_mass())
                                      : std::make_shared<ModeResponse>(omega, h, state_.ball_mass()),
-                              psi2_);
+                              psi2_, state_.compliance());
   }
   advance(other_, y, law, out);
 }
@@ -193,8 +195,10 @@ void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, 
     psi_v += psi[i] * v[i];
     psi_w2a += psi[i] * w2[i] * a[i];
   }
-  const double u0 = psi_a - y(0), du0 = psi_v - y(1);
-  const double f0 = law(u0), r0 = u0 > 0 ? law.exponent() * f0 / u0 * du0 : 0.0;
+  // The ball's own compression (less the dropped modes' static yield c F) sets the force.
+  const double u0 = state_.ball_compression(psi_a - y(0), law), du0_geometric = psi_v - y(1);
+  const double f0 = law(u0), k0 = u0 > 0 ? law.exponent() * f0 / u0 : 0.0;
+  const double du0 = du0_geometric / (1 + state_.compliance() * k0), r0 = k0 * du0;
   const double ddu0 = -psi_w2a - f0 * (k.psi2_sum + 1 / state_.ball_mass());
 
   // Everything known before the end force: free rotation plus the response to F0 and F0'.

@@ -25,15 +25,17 @@ struct ModeResponse {
   ModeResponse(const Eigen::ArrayXd& omega, double h, double ball_mass);
 };
 
-// A response with the sums over the contact point's mode shapes that tie u1 and u1' to F1 and
-// F1': u1 = known - gC F1 - gD F1', u1' = known - hC F1 - hD F1'.
+// A response with the sums over the contact point's mode shapes that tie the ball's compression
+// u1 and its rate at the end of the step to F1 and F1': u1 = known - gC F1 - gD F1',
+// u1' = known - hC F1 - hD F1' (the residual compliance c of dropped modes adds c F1 to the first
+// and c F1' to the second).
 struct StepCoefficients {
   std::shared_ptr<const ModeResponse> response;
   double gC = 0, gD = 0, hC = 0, hD = 0;
   double psi2_sum = 0;  // sum psi_n^2: how the force accelerates the compression
 
   StepCoefficients() = default;
-  StepCoefficients(std::shared_ptr<const ModeResponse> r, const Eigen::ArrayXd& psi2);
+  StepCoefficients(std::shared_ptr<const ModeResponse> r, const Eigen::ArrayXd& psi2, double compliance);
   double h() const { return response ? response->h : 0; }
 };
 

@@ -57,6 +57,8 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& scene) 
 
   ImpactResult r = collision_result(c);
   r.z = g.z;
+  r.modes_kept = g.modes_kept;
+  r.modes_error = g.modes_error;
   if (c.status == CollisionStatus::refused_step) return r;
   r.e_eff = effective_cor(r.vf, g.recoil, scene.ball_speed, g.bat_speed);
 

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "sweetspot/input_error.hpp"
+#include "sweetspot/mode_selection.hpp"
 
 namespace sweetspot {
 
@@ -38,8 +39,23 @@ Eigen::VectorXd shapes_at(const ModalBasis& basis, double z, int kept) {
   return ((1 - w) * basis.psi.row(i).head(kept) + w * basis.psi.row(i + 1).head(kept)).transpose();
 }
 
-int kept_modes(const ImpactScene& scene, const ModalBasis& basis) {
-  return scene.vibrational_modes == all_modes ? basis.count() : 2 + scene.vibrational_modes;
+// The modes an impact keeps: the rigid two, then the first N vibrational ones, all of them, or
+// (auto) those the pulse can excite, the rest folded into a residual compliance.
+std::vector<int> kept_modes(const ImpactScene& scene, const ModalBasis& basis, SceneGeometry& g) {
+  std::vector<int> kept = {0, 1};
+  if (scene.vibrational_modes == auto_modes) {
+    const ModeSelection selection =
+        select_modes(basis.omega, basis.psi.row(g.slice).transpose(), scene.ball, scene.ball_speed, g.bat_speed,
+                     g.recoil, scene.mode_tolerance);
+    kept.insert(kept.end(), selection.kept.begin(), selection.kept.end());
+    g.contact.residual_compliance = selection.residual_compliance;
+    g.modes_error = selection.error_estimate;
+  } else {
+    const int count = scene.vibrational_modes == all_modes ? basis.count() : 2 + scene.vibrational_modes;
+    for (int i = 2; i < count; ++i) kept.push_back(i);
+  }
+  for (std::size_t i = 2; i < kept.size(); ++i) g.modes_kept.push_back(kept[i] - 1);
+  return kept;
 }
 
 // A bat held at a point: the constraint psi_p . a = 0 removes one direction from modal space.
@@ -78,10 +94,11 @@ void validate(const ImpactScene& scene, const ModalBasis& basis) {
   if (!(scene.ball.e0 > 0 && scene.ball.e0 <= 1)) reject("e0", scene.ball.e0, "must lie in (0, 1]");
   require_positive("dt", scene.integrator.dt);
   require_positive("tolerance", scene.integrator.tolerance);
+  require_positive("mode_tolerance", scene.mode_tolerance);
   require_positive("window", scene.integrator.window);
   if (scene.pivoted && !scene.swing.about_center)
     reject("pivot", 1, "a pivoted bat is held at its rotation centre: give the centre, not the CM speed");
-  if (scene.vibrational_modes != all_modes &&
+  if (scene.vibrational_modes != all_modes && scene.vibrational_modes != auto_modes &&
       (scene.vibrational_modes < 0 || scene.vibrational_modes > basis.count() - 2))
     reject("modes", scene.vibrational_modes,
            "must be 'all' or between 0 and " + std::to_string(basis.count() - 2) + " at this slice count");
@@ -104,14 +121,17 @@ SceneGeometry scene_geometry(const ImpactScene& scene, const ModalBasis& basis) 
     g.recoil = m * (1 / basis.mass + arm * arm / basis.moment_of_inertia_cm);
   }
 
-  const int kept = kept_modes(scene, basis);
+  const std::vector<int> kept = kept_modes(scene, basis, g);
   ModalContact free;
-  free.omega = basis.omega.head(kept);
-  free.psi = basis.psi.row(g.slice).head(kept).transpose();
-  free.velocity0 = g.cm_speed * basis.translation.head(kept) + swing.omega * basis.rotation.head(kept);
-  g.contact = scene.pivoted
-                  ? constrained_modes(free, shapes_at(basis, g.pivot, kept))
-                  : free;
+  free.omega = basis.omega(kept);
+  free.psi = basis.psi.row(g.slice)(kept).transpose();
+  free.velocity0 = g.cm_speed * basis.translation(kept) + swing.omega * basis.rotation(kept);
+  free.residual_compliance = g.contact.residual_compliance;
+  g.contact = free;
+  if (scene.pivoted) {
+    g.contact = constrained_modes(free, shapes_at(basis, g.pivot, basis.count())(kept));
+    g.contact.residual_compliance = free.residual_compliance;
+  }
   return g;
 }
 

@@ -16,6 +16,9 @@ struct ModalContact {
   Eigen::VectorXd omega;      // rad/s
   Eigen::VectorXd psi;        // mode shapes at the contact point
   Eigen::VectorXd velocity0;  // a_n'(0) at first touch (a_n(0) = 0)
+  // Static (residual) flexibility of the modes left out, sum psi_n^2 / omega_n^2 over them: they
+  // are too fast for the pulse to excite and follow the force quasi-statically, yielding c F.
+  double residual_compliance = 0;
 
   int count() const { return static_cast<int>(omega.size()); }
 };

@@ -43,6 +43,8 @@ struct ImpactResult {
   double vf_van_zandt = std::numeric_limits<double>::quiet_NaN();
   ImpactEnergy energy;
   std::vector<double> mode_energy;  // J per kept vibrational mode (of the held bat when pivoted)
+  std::vector<int> modes_kept;      // vibrational mode numbers kept (1 = the first)
+  double modes_error = 0;           // modes = auto: estimated relative vf error of the dropped ones
   int contacts = 0;
   std::vector<ForceSample> force;   // only when the scene records the force
 };

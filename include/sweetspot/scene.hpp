@@ -1,6 +1,8 @@
 #pragma once
 // One impact scene (physics.md §4, §6): where the ball hits, the ball, the bat's swing, whether the
 // bat is pivoted, which modes are kept and how the collision is integrated.
+#include <vector>
+
 #include "sweetspot/ball.hpp"
 #include "sweetspot/collision.hpp"
 #include "sweetspot/modes.hpp"
@@ -17,6 +19,8 @@ struct Swing {
 };
 
 inline constexpr int all_modes = -1;
+// Keep the modes the collision can excite (see mode_selection.hpp), within mode_tolerance.
+inline constexpr int auto_modes = -2;
 
 struct ImpactScene {
   double z = 0.7;             // impact location, m from the knob (snapped to a slice centre)
@@ -24,7 +28,8 @@ struct ImpactScene {
   double ball_speed = 40;     // m/s toward the bat
   Swing swing;
   bool pivoted = false;       // held at swing.center by a constraint force (N2000 Fig. 16)
-  int vibrational_modes = 18; // kept vibrational modes, or all_modes
+  int vibrational_modes = 18; // kept vibrational modes, or all_modes, or auto_modes
+  double mode_tolerance = 1e-5; // auto_modes: relative exit-speed error allowed the dropped modes
   CollisionOptions integrator;
 };
 
@@ -41,6 +46,8 @@ struct SceneGeometry {
   double bat_speed = 0;     // v_bat at the impact point, m/s
   double recoil = 0;        // R0 of the rigid bat, free or pivoted (physics.md §5)
   ModalContact contact;     // kept modes; for a pivoted bat, the modes of the constrained bat
+  std::vector<int> modes_kept;  // vibrational mode numbers kept (1 = the first vibrational mode)
+  double modes_error = 0;       // auto_modes: estimated relative vf error of those dropped
 };
 
 SceneGeometry scene_geometry(const ImpactScene& scene, const ModalBasis& basis);

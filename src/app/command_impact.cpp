@@ -28,13 +28,14 @@ struct ImpactOptions {
 
 int parse_modes(const std::string& text) {
   if (text == "all") return all_modes;
+  if (text == "auto") return auto_modes;
   try {
     std::size_t used = 0;
     const int n = std::stoi(text, &used);
     if (used == text.size() && n >= 0) return n;
   } catch (const std::exception&) {
   }
-  throw InputError("--modes " + text + ": expected a number of vibrational modes (0, 1, 2, ...) or 'all'");
+  throw InputError("--modes " + text + ": expected a number of vibrational modes (0, 1, 2, ...), 'all' or 'auto'");
 }
 
 Json energy_json(const ImpactEnergy& e) {
@@ -62,6 +63,8 @@ void print_json(const ImpactResult& r) {
       .add("impulse", r.impulse)
       .add("energy", energy_json(r.energy))
       .add("mode_energy", Json::numbers(r.mode_energy))
+      .add("modes_kept", Json::numbers({r.modes_kept.begin(), r.modes_kept.end()}))
+      .add("modes_error", r.modes_error)
       .add("contacts", Json::integer(r.contacts));
   std::printf("%s\n", Json(out).text().c_str());
 }
@@ -80,8 +83,12 @@ void print_text(const ImpactResult& r) {
   std::printf("                + vibration %.6g + dissipated in the ball %.6g + residual %.3g\n", e.vibration,
               e.ball_dissipated, e.residual);
   std::printf("vibration/J by mode:");
-  for (std::size_t n = 0; n < r.mode_energy.size(); ++n) std::printf("%s%zu: %.4g", n % 6 ? ", " : "\n  ", n + 1, r.mode_energy[n]);
+  for (std::size_t n = 0; n < r.mode_energy.size(); ++n)
+    std::printf("%s%d: %.4g", n % 6 ? ", " : "\n  ", r.modes_kept[n], r.mode_energy[n]);
   std::printf("\n");
+  if (r.modes_error > 0)
+    std::printf("modes kept: %zu; estimated relative vf error of the dropped ones %.2g\n", r.modes_kept.size(),
+                r.modes_error);
 }
 
 void run_impact(ImpactOptions& o) {
@@ -139,7 +146,10 @@ void add_impact_command(CLI::App& app) {
   center->excludes(cm);
   cmd->add_option("--omega", o->scene.swing.omega, "bat angular velocity, rad/s")->capture_default_str();
   cmd->add_flag("--pivot", o->scene.pivoted, "hold the bat at the rotation centre (N2000 Fig. 16)");
-  cmd->add_option("--modes", o->modes, "vibrational modes kept: a number or 'all'")->capture_default_str();
+  cmd->add_option("--modes", o->modes, "vibrational modes kept: a number, 'all' or 'auto'")->capture_default_str();
+  cmd->add_option("--mode-tolerance", o->scene.mode_tolerance,
+                  "with --modes auto: relative vf error allowed the dropped modes")
+      ->capture_default_str();
   add_ball_options(*cmd, o->scene.ball);
   add_integrator_options(*cmd, o->scene.integrator);
   cmd->add_flag("--json", o->json, "print one JSON object");
