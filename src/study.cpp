@@ -117,7 +117,7 @@ bool positive(double x) { return std::isfinite(x) && x > 0; }
 bool on_bat(double x) { return std::isfinite(x) && x >= 0; }  // the bats' lengths: check_on_bats
 bool unit_interval(double x) { return x > 0 && x <= 1; }
 bool slice_count(double x) { return x >= 4 && x <= 4096; }  // as `impact --slices`
-bool mode_count(double x) { return x >= 0 && x <= 1e6; }    // "all" is not checked
+bool mode_count(double x) { return x >= 0 && x <= 1e6; }    // "all" and "auto" are not checked
 
 constexpr KeySpec keys[] = {
     {"bat", Type::bat, "a bat file path (relative to the study file)", any,
@@ -153,8 +153,10 @@ constexpr KeySpec keys[] = {
      }},
     {"omega", Type::number, "a finite number (rad/s)", finite, [](GridPoint& p, double x) { p.scene.swing.omega = x; }},
     {"pivot", Type::boolean, "true or false", any, [](GridPoint& p, double x) { p.scene.pivoted = x != 0; }},
-    {"modes", Type::modes, "a number of vibrational modes >= 0, or \"all\"", mode_count,
+    {"modes", Type::modes, "a number of vibrational modes >= 0, \"all\" or \"auto\"", mode_count,
      [](GridPoint& p, double x) { p.scene.vibrational_modes = static_cast<int>(x); }},
+    {"mode_tolerance", Type::number, "a finite number > 0 (relative vf error allowed the dropped modes)", positive,
+     [](GridPoint& p, double x) { p.scene.mode_tolerance = x; }},
     {"integrator", Type::integrator, "\"exact\", \"rk4\" or \"dopri\"", any,
      [](GridPoint& p, double x) { p.scene.integrator.method = static_cast<Method>(x); }, ball_kinds, 0, false},
     {"tolerance", Type::number, "a finite number > 0 (relative error per step, dopri)", positive,
@@ -205,6 +207,8 @@ constexpr OutputSpec output_specs[] = {
     {"energy_ball_dissipated", ball_kinds, 0},
     {"energy_residual", every_kind, 0},
     {"mode_energy", impact, 0},
+    {"modes_kept", impact, 0},
+    {"modes_error", impact, 0},
     {"status", every_kind, every_kind},
 };
 
@@ -262,6 +266,8 @@ Value read_value(const Where& at, const KeySpec& spec, const toml::node& node) {
     v.number = node.as_boolean()->get();
   else if (spec.type == Type::modes && node.value<std::string_view>() == "all")
     return {all_modes, ""};
+  else if (spec.type == Type::modes && node.value<std::string_view>() == "auto")
+    return {auto_modes, ""};
   else if ((spec.type == Type::bat || spec.type == Type::theory || spec.type == Type::integrator) && node.is_string())
     v.label = node.as_string()->get();
   else
@@ -524,7 +530,7 @@ void check_mode_counts(const Settings& s, const Where& top, const std::vector<Ba
       for (const double theory : s.values("theory", 0))
         for (const double m : s.values("modes", default_modes)) {
           const int available = vibrational_modes(static_cast<int>(slices), static_cast<BeamTheory>(theory));
-          if (m == all_modes || m <= available) continue;
+          if (m == all_modes || m == auto_modes || m <= available) continue;
           reject(where, format_number(m) + (modes ? "" : " (the default)"),
                  bat_text(bats, bat, b) + " in " + format_number(slices) + " slices has " + std::to_string(available) +
                      " vibrational modes (" + to_string(static_cast<BeamTheory>(theory)) +

@@ -29,6 +29,9 @@ const std::map<std::string, Description>& descriptions() {
       {"peak_force", {"N", "largest contact force"}},
       {"impulse", {"N s", "impulse delivered to the ball"}},
       {"contacts", {"1", "number of separate contacts"}},
+      {"modes_kept", {"1", "vibrational modes kept (modes = auto)"}},
+      {"modes_error", {"1", "estimated relative vf error of the dropped modes (modes = auto)"}},
+      {"mode_tolerance", {"1", "relative vf error allowed the dropped modes (modes = auto)"}},
       {"status", {"1", "outcome of the impact"}},
       {"energy_initial", {"J", "initial kinetic energy of ball and bat"}},
       {"energy_ball", {"J", "final kinetic energy of the ball"}},
@@ -49,7 +52,7 @@ const std::map<std::string, Description>& descriptions() {
       {"center", {"m", "rotation centre of the swing from the knob"}},
       {"omega", {"rad/s", "bat angular velocity"}},
       {"pivot", {"1", "bat held at the rotation centre (1) or free (0)"}},
-      {"modes", {"1", "vibrational modes kept (-1: all)"}},
+      {"modes", {"1", "vibrational modes kept (-1: all, -2: auto)"}},
       {"slices", {"1", "slices of the bat"}},
       {"dt", {"s", "integration step"}},
       {"window", {"s", "free flight followed after a separation"}},
@@ -89,6 +92,8 @@ double scalar_value(const ImpactResult& r, const std::string& name) {
   if (name == "peak_force") return r.peak_force;
   if (name == "impulse") return r.impulse;
   if (name == "contacts") return r.contacts;
+  if (name == "modes_kept") return static_cast<double>(r.modes_kept.size());
+  if (name == "modes_error") return r.modes_error;
   return energy_value(r.energy, name);
 }
 
@@ -110,7 +115,7 @@ Variable output_variable(const std::string& name, std::vector<std::string> dims,
   Description d = describe(name);
   if (units) d.units = units;
   Variable v{name, d.units, d.long_name, std::move(dims), {}, {}, {}};
-  if (name == "status" || name == "contacts") {
+  if (name == "status" || name == "contacts" || name == "modes_kept") {
     std::vector<std::int32_t> ints(values.size());
     std::transform(values.begin(), values.end(), ints.begin(),
                    [](double x) { return std::isfinite(x) ? static_cast<std::int32_t>(x) : -1; });
