@@ -19,6 +19,7 @@ using Eigen::VectorXd;
 using detail::ContactState;
 
 constexpr int max_contacts = 50;  // more than this is chatter, not a collision
+constexpr double contact_step_limit = 2;  // omega_c h for the fixed-step methods
 
 // Free flight: the ball coasts, every mode oscillates in closed form (rigid modes drift).
 void evolve_free(const ModalContact& body, const VectorXd& y, double tau, VectorXd& out) {
@@ -96,6 +97,7 @@ class CollisionRun {
     VectorXd next(y_.size());
     double h = stepper_.first_step();
     while (true) {
+      h = stiffness_limited(h, law);
       if (t_ - touch > options_.max_contact_time)
         return fail(CollisionStatus::no_separation,
                     format("the ball did not separate within %g s of touching (contact %g)", options_.max_contact_time,
@@ -128,6 +130,17 @@ class CollisionRun {
     result_.dissipated += law.loop_energy();
     if (result_.contacts == 1) result_.first_separation = t_;
     return true;
+  }
+
+  // The fixed-step methods must also resolve the contact's own ringing (contact_frequency): a
+  // nearly dead ball is so stiff on the expansion branch that a step fit for the modes would
+  // blow up. Such steps are halved until omega_c h <= 2 (powers of two, so the exact stepper's
+  // responses are reused); the adaptive method finds its own.
+  double stiffness_limited(double h, const ContactForce& law) const {
+    if constexpr (std::is_same_v<Stepper, detail::DopriStepper>) return h;
+    const double omega_c = state_.contact_frequency(y_, law);
+    while (omega_c * h > contact_step_limit && h > 1e-12) h /= 2;
+    return h;
   }
 
   // Follows ball and body for the window after a separation. True if they touch again; then the

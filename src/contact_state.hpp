@@ -12,7 +12,7 @@ class ContactState {
  public:
   ContactState(const ModalContact& body, const Ball& ball)
       : body_(body), n_(body.count()), mass_(ball.mass), omega2_(body.omega.array().square()),
-        compliance_(body.residual_compliance) {}
+        compliance_(body.residual_compliance), mobility_(1 / ball.mass + body.psi.squaredNorm()) {}
 
   int modes() const { return n_; }
   int size() const { return 2 + 2 * n_; }
@@ -50,6 +50,15 @@ class ContactState {
     return -(body_.psi.array() * omega2_ * y.segment(2, n_).array()).sum() -
            force(y, law) * (body_.psi.squaredNorm() + 1 / mass_);
   }
+  // The frequency at which the contact itself rings: the ball's stiffness F'(u) (in series with
+  // the residual compliance) against the mobility 1/m + sum psi_n^2 of ball and kept modes. On
+  // the expansion branch F'(u) = b F / u with b = (1 + a)/e0^2 - 1, huge for a nearly dead ball.
+  double contact_frequency(const Eigen::VectorXd& y, const ContactForce& law) const {
+    const double u = ball_compression(compression(y), law);
+    if (u <= 0) return 0;
+    const double stiffness = law.stiffness(u);
+    return std::sqrt(stiffness / (1 + compliance_ * stiffness) * mobility_);
+  }
   // Force and its time derivative dF/dt = F'(u_ball) u_ball', u_ball' = u' / (1 + c F').
   ForceSample sample(double t, const Eigen::VectorXd& y, const ContactForce& law) const {
     const double u = ball_compression(compression(y), law), stiffness = law.stiffness(u);
@@ -71,6 +80,7 @@ class ContactState {
   double mass_;
   Eigen::ArrayXd omega2_;
   double compliance_;
+  double mobility_;
 };
 
 // What a stepper says of an attempted step: adaptive ones may reject it and propose a new size.
