@@ -1,6 +1,8 @@
 #include "exact_stepper.hpp"
 
 #include <algorithm>
+#include <array>
+#include <unordered_map>
 #include <cmath>
 
 namespace sweetspot::detail {
@@ -56,35 +58,75 @@ void hermite_weights(double h, double b[4][4]) {
 
 }  // namespace
 
-ModeResponse::ModeResponse(const Eigen::ArrayXd& w, double step, double ball_mass) : h(step), omega(w) {
-  const int n = static_cast<int>(omega.size());
-  for (Eigen::ArrayXd* a : {&c, &sn, &w2sn, &dA, &dB, &dC, &dD, &qA, &qB, &qC, &qD}) a->resize(n);
+namespace {
+
+// One mode's closed-form response over a step: c, sn, w2sn, then dA..dD and qA..qD.
+using ModeCoefficients = std::array<double, 11>;
+
+ModeCoefficients mode_coefficients(double w, double h) {
   double b[4][4];
   hermite_weights(h, b);
   const auto combine = [&b](const double m[4], int row) {
     return b[row][0] * m[0] + b[row][1] * m[1] + b[row][2] * m[2] + b[row][3] * m[3];
   };
+  const double cos_x = std::cos(w * h), sin_x = std::sin(w * h);
   double p[4], q[4];
-  for (int i = 0; i < n; ++i) {
-    const double cos_x = std::cos(omega(i) * h), sin_x = std::sin(omega(i) * h);
-    c(i) = cos_x;
-    sn(i) = omega(i) == 0 ? h : sin_x / omega(i);
-    w2sn(i) = omega(i) * sin_x;
-    monomial_responses(omega(i), h, cos_x, sin_x, p, q);
-    dA(i) = combine(p, 0), dB(i) = combine(p, 1), dC(i) = combine(p, 2), dD(i) = combine(p, 3);
-    qA(i) = combine(q, 0), qB(i) = combine(q, 1), qC(i) = combine(q, 2), qD(i) = combine(q, 3);
-  }
-  monomial_responses(0, h, 1, 0, p, q);
-  for (int r = 0; r < 4; ++r) ball_d[r] = combine(p, r) / ball_mass, ball_q[r] = combine(q, r) / ball_mass;
+  monomial_responses(w, h, cos_x, sin_x, p, q);
+  return {cos_x,         w == 0 ? h : sin_x / w, w * sin_x,     combine(p, 0), combine(p, 1), combine(p, 2),
+          combine(p, 3), combine(q, 0),          combine(q, 1), combine(q, 2), combine(q, 3)};
 }
 
-StepCoefficients::StepCoefficients(std::shared_ptr<const ModeResponse> r, const Eigen::ArrayXd& psi2,
+// Steps of the lengths a run reuses (nominal, graded) meet the same frequencies again and again
+// even when the kept modes differ from impact to impact (modes = auto), so each thread remembers
+// every mode's coefficients by (omega, h).
+const ModeCoefficients& memoized_coefficients(double w, double h) {
+  struct Key {
+    double w, h;
+    bool operator==(const Key&) const = default;
+  };
+  struct Hash {
+    std::size_t operator()(const Key& k) const {
+      return std::hash<double>()(k.w) * 31 + std::hash<double>()(k.h);
+    }
+  };
+  thread_local std::unordered_map<Key, ModeCoefficients, Hash> memo;
+  if (memo.size() > 100000) memo.clear();  // bounded: a long run over many bases
+  const auto [it, inserted] = memo.try_emplace(Key{w, h});
+  if (inserted) it->second = mode_coefficients(w, h);
+  return it->second;
+}
+
+}  // namespace
+
+ModeResponse::ModeResponse(const Eigen::ArrayXd& w, double step, double ball_mass, bool memoize)
+    : h(step), omega(w) {
+  const int n = static_cast<int>(omega.size());
+  Eigen::ArrayXd* columns[11] = {&c, &sn, &w2sn, &dA, &dB, &dC, &dD, &qA, &qB, &qC, &qD};
+  for (Eigen::ArrayXd* a : columns) a->resize(n);
+  for (int i = 0; i < n; ++i) {
+    const ModeCoefficients computed = memoize ? ModeCoefficients{} : mode_coefficients(omega(i), h);
+    const ModeCoefficients& m = memoize ? memoized_coefficients(omega(i), h) : computed;
+    for (int j = 0; j < 11; ++j) (*columns[j])(i) = m[j];
+  }
+  double b[4][4], p[4], q[4];
+  hermite_weights(h, b);
+  monomial_responses(0, h, 1, 0, p, q);
+  for (int r = 0; r < 4; ++r) {
+    ball_d[r] = (b[r][0] * p[0] + b[r][1] * p[1] + b[r][2] * p[2] + b[r][3] * p[3]) / ball_mass;
+    ball_q[r] = (b[r][0] * q[0] + b[r][1] * q[1] + b[r][2] * q[2] + b[r][3] * q[3]) / ball_mass;
+  }
+}
+
+StepCoefficients::StepCoefficients(std::shared_ptr<const ModeResponse> r, const Eigen::ArrayXd& psi,
                                    double compliance)
-    : response(std::move(r)), psi2_sum(psi2.sum()) {
-  gC = (psi2 * response->dC).sum() + response->ball_d[2] + compliance;
-  gD = (psi2 * response->dD).sum() + response->ball_d[3];
-  hC = (psi2 * response->qC).sum() + response->ball_q[2];
-  hD = (psi2 * response->qD).sum() + response->ball_q[3] + compliance;
+    : response(std::move(r)), psi2_sum(psi.square().sum()) {
+  const ModeResponse& m = *response;
+  pdA = psi * m.dA, pdB = psi * m.dB, pdC = psi * m.dC, pdD = psi * m.dD;
+  pqA = psi * m.qA, pqB = psi * m.qB, pqC = psi * m.qC, pqD = psi * m.qD;
+  gC = (psi * pdC).sum() + m.ball_d[2] + compliance;
+  gD = (psi * pdD).sum() + m.ball_d[3];
+  hC = (psi * pqC).sum() + m.ball_q[2];
+  hD = (psi * pqD).sum() + m.ball_q[3] + compliance;
 }
 
 namespace {
@@ -103,27 +145,32 @@ std::shared_ptr<const ModeResponse> cached_response(const Eigen::ArrayXd& omega,
         (e.response->omega == omega).all())
       return e.response;
   if (cache.size() >= 16) cache.erase(cache.begin());
-  cache.push_back({std::make_shared<ModeResponse>(omega, h, ball_mass), ball_mass});
+  cache.push_back({std::make_shared<ModeResponse>(omega, h, ball_mass, true), ball_mass});
   return cache.back().response;
 }
 
 }  // namespace
 
 ExactStepper::ExactStepper(const ContactState& state, const CollisionOptions& options)
-    : state_(state), psi2_(state.body().psi.array().square()),
-      nominal_(cached_response(state.body().omega.array(), options.dt, state.ball_mass()), psi2_,
+    : state_(state), psi_(state.body().psi.array()), psi_w2_(psi_ * state.omega2()),
+      nominal_(cached_response(state.body().omega.array(), options.dt, state.ball_mass()), psi_,
                state.compliance()),
       a_known_(state.modes()), v_known_(state.modes()) {}
 
 void ExactStepper::step(const Eigen::VectorXd& y, double h, const ContactForce& law, Eigen::VectorXd& out) {
   if (h == nominal_.h()) return advance(nominal_, y, law, out);
-  if (h != other_.h()) {
-    const bool graded = h < nominal_.h() && std::exp2(std::round(std::log2(nominal_.h() / h))) * h == nominal_.h();
-    const Eigen::ArrayXd omega = state_.body().omega.array();
-    other_ = StepCoefficients(graded ? cached_response(omega, h, state_.ball_mass())
-                                     : std::make_shared<ModeResponse>(omega, h, state_.ball_mass()),
-                              psi2_, state_.compliance());
+  // Halvings of the nominal step (the graded start, the stiff expansion) recur: keep them.
+  const bool graded = h < nominal_.h() && std::exp2(std::round(std::log2(nominal_.h() / h))) * h == nominal_.h();
+  if (graded) {
+    for (const StepCoefficients& k : graded_)
+      if (k.h() == h) return advance(k, y, law, out);
+    graded_.emplace_back(cached_response(state_.body().omega.array(), h, state_.ball_mass()), psi_,
+                         state_.compliance());
+    return advance(graded_.back(), y, law, out);
   }
+  if (h != other_.h())
+    other_ = StepCoefficients(std::make_shared<ModeResponse>(state_.body().omega.array(), h, state_.ball_mass()),
+                              psi_, state_.compliance());
   advance(other_, y, law, out);
 }
 
@@ -181,38 +228,23 @@ void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, 
                            Eigen::VectorXd& out) {
   const ModeResponse& m = *k.response;
   const int n = state_.modes();
-  const double *psi = state_.body().psi.data(), *w2 = state_.omega2().data();
-  const double *a = y.data() + 2, *v = y.data() + 2 + n;
-  const double *c = m.c.data(), *sn = m.sn.data(), *w2sn = m.w2sn.data();
-  const double *dA = m.dA.data(), *dB = m.dB.data(), *dC = m.dC.data(), *dD = m.dD.data();
-  const double *qA = m.qA.data(), *qB = m.qB.data(), *qC = m.qC.data(), *qD = m.qD.data();
-  double *a_known = a_known_.data(), *v_known = v_known_.data();
+  const auto a = y.segment(2, n).array();
+  const auto v = y.segment(2 + n, n).array();
 
-  // The start: compression, its rate and acceleration, the force and its rate.
-  double psi_a = 0, psi_v = 0, psi_w2a = 0;
-  for (int i = 0; i < n; ++i) {
-    psi_a += psi[i] * a[i];
-    psi_v += psi[i] * v[i];
-    psi_w2a += psi[i] * w2[i] * a[i];
-  }
-  // The ball's own compression (less the dropped modes' static yield c F) sets the force.
+  // The start: the ball's compression, its rate and acceleration, the force and its rate.
+  const double psi_a = (psi_ * a).sum(), psi_v = (psi_ * v).sum(), psi_w2a = (psi_w2_ * a).sum();
   const double u0 = state_.ball_compression(psi_a - y(0), law), du0_geometric = psi_v - y(1);
   const double f0 = law(u0), k0 = u0 > 0 ? law.exponent() * f0 / u0 : 0.0;
   const double du0 = du0_geometric / (1 + state_.compliance() * k0), r0 = k0 * du0;
   const double ddu0 = -psi_w2a - f0 * (k.psi2_sum + 1 / state_.ball_mass());
 
   // Everything known before the end force: free rotation plus the response to F0 and F0'.
-  double u_known = 0, du_known = 0;
-  for (int i = 0; i < n; ++i) {
-    a_known[i] = c[i] * a[i] + sn[i] * v[i] - psi[i] * (f0 * dA[i] + r0 * dB[i]);
-    v_known[i] = -w2sn[i] * a[i] + c[i] * v[i] - psi[i] * (f0 * qA[i] + r0 * qB[i]);
-    u_known += psi[i] * a_known[i];
-    du_known += psi[i] * v_known[i];
-  }
+  a_known_ = m.c * a + m.sn * v - f0 * k.pdA - r0 * k.pdB;
+  v_known_ = m.c * v - m.w2sn * a - f0 * k.pqA - r0 * k.pqB;
   const double s_known = y(0) + y(1) * m.h + f0 * m.ball_d[0] + r0 * m.ball_d[1];
   const double vb_known = y(1) + f0 * m.ball_q[0] + r0 * m.ball_q[1];
-  u_known -= s_known;
-  du_known -= vb_known;
+  const double u_known = (psi_ * a_known_).sum() - s_known;
+  const double du_known = (psi_ * v_known_).sum() - vb_known;
 
   const double guess = u0 + m.h * du0 + 0.5 * m.h * m.h * ddu0;
   const double u1 = end_compression(k, law, u_known, du_known, guess);
@@ -223,11 +255,8 @@ void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, 
   out.resize(y.size());
   out(0) = s_known + f1 * m.ball_d[2] + r1 * m.ball_d[3];
   out(1) = vb_known + f1 * m.ball_q[2] + r1 * m.ball_q[3];
-  double *a_out = out.data() + 2, *v_out = out.data() + 2 + n;
-  for (int i = 0; i < n; ++i) {
-    a_out[i] = a_known[i] - psi[i] * (f1 * dC[i] + r1 * dD[i]);
-    v_out[i] = v_known[i] - psi[i] * (f1 * qC[i] + r1 * qD[i]);
-  }
+  out.segment(2, n).array() = a_known_ - f1 * k.pdC - r1 * k.pdD;
+  out.segment(2 + n, n).array() = v_known_ - f1 * k.pqC - r1 * k.pqD;
 }
 
 }  // namespace sweetspot::detail

@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "contact_state.hpp"
 
@@ -22,7 +23,8 @@ struct ModeResponse {
   Eigen::ArrayXd dA, dB, dC, dD, qA, qB, qC, qD;
   double ball_d[4] = {}, ball_q[4] = {};  // the ball (omega = 0, times 1/m), for A, B, C, D
 
-  ModeResponse(const Eigen::ArrayXd& omega, double h, double ball_mass);
+  // memoize: take each mode's coefficients from (and add them to) this thread's memory.
+  ModeResponse(const Eigen::ArrayXd& omega, double h, double ball_mass, bool memoize = false);
 };
 
 // A response with the sums over the contact point's mode shapes that tie the ball's compression
@@ -33,9 +35,11 @@ struct StepCoefficients {
   std::shared_ptr<const ModeResponse> response;
   double gC = 0, gD = 0, hC = 0, hD = 0;
   double psi2_sum = 0;  // sum psi_n^2: how the force accelerates the compression
+  // psi_n times each forced response, so that a step is a few fused vector operations.
+  Eigen::ArrayXd pdA, pdB, pdC, pdD, pqA, pqB, pqC, pqD;
 
   StepCoefficients() = default;
-  StepCoefficients(std::shared_ptr<const ModeResponse> r, const Eigen::ArrayXd& psi2, double compliance);
+  StepCoefficients(std::shared_ptr<const ModeResponse> r, const Eigen::ArrayXd& psi, double compliance);
   double h() const { return response ? response->h : 0; }
 };
 
@@ -62,8 +66,9 @@ class ExactStepper {
   void advance(const StepCoefficients& k, const Eigen::VectorXd& y, const ContactForce& law, Eigen::VectorXd& out);
 
   const ContactState& state_;
-  Eigen::ArrayXd psi2_;
+  Eigen::ArrayXd psi_, psi_w2_;  // mode shapes at the contact, and times omega^2
   StepCoefficients nominal_, other_;
+  std::vector<StepCoefficients> graded_;
   Eigen::ArrayXd a_known_, v_known_;
 };
 

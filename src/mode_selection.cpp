@@ -60,7 +60,7 @@ ModeSelection select_modes(const Eigen::VectorXd& omega, const Eigen::VectorXd& 
   std::vector<int> order;
   std::vector<double> take(n, 0.0);
   for (int i = 2; i < n; ++i) {
-    const double psi2 = psi(i) * psi(i), lag = std::min(1.0, std::pow(pulse_omega / omega(i), 2));
+    const double ratio = pulse_omega / omega(i), psi2 = psi(i) * psi(i), lag = std::min(1.0, ratio * ratio);
     take[i] = recoil_sensitivity * ball.mass * psi2 * response_bound(omega(i), s.pulse_duration) +
               compliance_sensitivity * psi2 / (omega(i) * omega(i)) * lag;
     order.push_back(i);
