@@ -61,7 +61,7 @@ std::vector<int> kept_modes(const ImpactScene& scene, const ModalBasis& basis, S
 // A bat held at a point: the constraint psi_p . a = 0 removes one direction from modal space.
 // The constrained bat's own modes diagonalise Omega^2 on the rest, so the collision integrates
 // them like any free modal system, and free flight stays exact.
-ModalContact constrained_modes(const ModalContact& free, const Eigen::VectorXd& psi_pivot) {
+ModalContact constrained_modes(const ModalContact& free, const Eigen::VectorXd& psi_pivot, Eigen::MatrixXd& modes) {
   const int n = free.count();
   const Eigen::HouseholderQR<Eigen::MatrixXd> qr(psi_pivot);
   const Eigen::MatrixXd complement =
@@ -69,7 +69,7 @@ ModalContact constrained_modes(const ModalContact& free, const Eigen::VectorXd& 
   const Eigen::MatrixXd stiffness =
       complement.transpose() * free.omega.array().square().matrix().asDiagonal() * complement;
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(stiffness);
-  const Eigen::MatrixXd modes = complement * eig.eigenvectors();
+  modes = complement * eig.eigenvectors();
   ModalContact held;
   held.omega = eig.eigenvalues().cwiseMax(0.0).cwiseSqrt();
   held.omega(0) = 0;  // rotation about the pivot; round-off otherwise
@@ -79,6 +79,11 @@ ModalContact constrained_modes(const ModalContact& free, const Eigen::VectorXd& 
 }
 
 }  // namespace
+
+Eigen::VectorXd SceneGeometry::shapes_at(const ModalBasis& basis, double z) const {
+  const Eigen::VectorXd free = sweetspot::shapes_at(basis, z, basis.count())(kept);
+  return held.size() ? Eigen::VectorXd(held.transpose() * free) : free;
+}
 
 void validate(const ImpactScene& scene, const ModalBasis& basis) {
   const double length = basis.z.back() + basis.z.front();
@@ -121,7 +126,8 @@ SceneGeometry scene_geometry(const ImpactScene& scene, const ModalBasis& basis) 
     g.recoil = m * (1 / basis.mass + arm * arm / basis.moment_of_inertia_cm);
   }
 
-  const std::vector<int> kept = kept_modes(scene, basis, g);
+  g.kept = kept_modes(scene, basis, g);
+  const std::vector<int>& kept = g.kept;
   ModalContact free;
   free.omega = basis.omega(kept);
   free.psi = basis.psi.row(g.slice)(kept).transpose();
@@ -129,7 +135,7 @@ SceneGeometry scene_geometry(const ImpactScene& scene, const ModalBasis& basis) 
   free.residual_compliance = g.contact.residual_compliance;
   g.contact = free;
   if (scene.pivoted) {
-    g.contact = constrained_modes(free, shapes_at(basis, g.pivot, basis.count())(kept));
+    g.contact = constrained_modes(free, shapes_at(basis, g.pivot, basis.count())(kept), g.held);
     g.contact.residual_compliance = free.residual_compliance;
   }
   return g;

@@ -31,6 +31,11 @@ struct ImpactScene {
   int vibrational_modes = 18; // kept vibrational modes, or all_modes, or auto_modes
   double mode_tolerance = 1e-5; // auto_modes: relative exit-speed error allowed the dropped modes
   CollisionOptions integrator;
+  // The closed forms of physics.md §5 at the same point, computed beside the collision only when
+  // asked (a study asks through its outputs), NaN otherwise: the rigid bat's exit speed
+  // (vf_rigid) and Van Zandt's prescription (vf_van_zandt), which records the force profile.
+  bool rigid_comparison = false;
+  bool van_zandt_comparison = false;
 };
 
 // Throws InputError naming the offending scene value (z outside the bat, speeds not finite,
@@ -48,6 +53,11 @@ struct SceneGeometry {
   ModalContact contact;     // kept modes; for a pivoted bat, the modes of the constrained bat
   std::vector<int> modes_kept;  // vibrational mode numbers kept (1 = the first vibrational mode)
   double modes_error = 0;       // auto_modes: estimated relative vf error of those dropped
+  std::vector<int> kept;        // the basis's modes behind `contact` (0, 1 rigid)
+  Eigen::MatrixXd held;         // pivoted: the held bat's modes in the kept ones; empty if free
+
+  // The shapes of the contact's modes at any point z of the bat (linear between slice centres).
+  Eigen::VectorXd shapes_at(const ModalBasis& basis, double z) const;
 };
 
 SceneGeometry scene_geometry(const ImpactScene& scene, const ModalBasis& basis);

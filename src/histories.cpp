@@ -1,0 +1,91 @@
+#include "sweetspot/histories.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "exact_stepper.hpp"
+
+namespace sweetspot {
+
+namespace {
+
+// F and dF/dt at time t from the force samples (cubic Hermite between them, zero outside).
+ForceSample force_at(const std::vector<ForceSample>& force, double t) {
+  const auto after = std::upper_bound(force.begin(), force.end(), t, [](double x, const ForceSample& s) {
+    return x < s.t;
+  });
+  if (after == force.begin() || after == force.end()) return {t, 0, 0};
+  const ForceSample &p = *(after - 1), &q = *after;
+  const double h = q.t - p.t, s = (t - p.t) / h, s2 = s * s, s3 = s2 * s;
+  const double value = (2 * s3 - 3 * s2 + 1) * p.force + (s3 - 2 * s2 + s) * h * p.rate +
+                       (-2 * s3 + 3 * s2) * q.force + (s3 - s2) * h * q.rate;
+  const double rate = ((6 * s2 - 6 * s) * p.force + (3 * s2 - 4 * s + 1) * h * p.rate +
+                       (-6 * s2 + 6 * s) * q.force + (3 * s2 - 2 * s) * h * q.rate) /
+                      h;
+  return {t, value, rate};
+}
+
+void reserve(ProbeHistory& p, std::size_t n) {
+  for (auto* v : {&p.displacement, &p.velocity, &p.acceleration, &p.vibration_displacement, &p.vibration_velocity,
+                  &p.vibration_acceleration})
+    v->reserve(n);
+}
+
+}  // namespace
+
+Histories impact_histories(const ModalBasis& basis, const SceneGeometry& g, const Ball& ball, double ball_speed,
+                           const std::vector<ForceSample>& force, const HistoryRequest& request) {
+  const ModalContact& body = g.contact;
+  const int n = body.count();
+  const std::size_t samples = static_cast<std::size_t>(std::floor(request.window / request.step + 1e-9)) + 1;
+  const detail::ModeResponse response(body.omega.array(), request.step, ball.mass);
+  const Eigen::ArrayXd psi = body.psi.array(), omega2 = body.omega.array().square();
+  const Eigen::ArrayXd vibrating = (body.omega.array() > 0).cast<double>();
+
+  std::vector<Eigen::ArrayXd> probe_shapes;
+  for (double z : request.probes) probe_shapes.push_back(g.shapes_at(basis, z).array());
+  Eigen::ArrayXd a = Eigen::ArrayXd::Zero(n), v = body.velocity0.array();
+  double s = 0, vb = -ball_speed;
+
+  Histories h;
+  h.probes.resize(request.probes.size());
+  for (ProbeHistory& p : h.probes) reserve(p, samples);
+  std::vector<double> start_velocity;
+  for (const Eigen::ArrayXd& shape : probe_shapes) start_velocity.push_back((shape * v).sum());
+  ForceSample f0 = force_at(force, 0);
+  for (std::size_t j = 0; j < samples; ++j) {
+    const double t = j * request.step;
+    const Eigen::ArrayXd acceleration = -omega2 * a - psi * f0.force;
+    h.time.push_back(t);
+    h.force.push_back(f0.force);
+    h.compression.push_back((psi * a).sum() - s);
+    h.ball_position.push_back(s);
+    for (std::size_t k = 0; k < probe_shapes.size(); ++k) {
+      const Eigen::ArrayXd& shape = probe_shapes[k];
+      ProbeHistory& p = h.probes[k];
+      p.displacement.push_back((shape * a).sum() - start_velocity[k] * t);
+      p.velocity.push_back((shape * v).sum() - start_velocity[k]);
+      p.acceleration.push_back((shape * acceleration).sum());
+      p.vibration_displacement.push_back((shape * vibrating * a).sum());
+      p.vibration_velocity.push_back((shape * vibrating * v).sum());
+      p.vibration_acceleration.push_back((shape * vibrating * acceleration).sum());
+    }
+    // Advance one interval in closed form under the cubic force through (F, F') at its ends.
+    const ForceSample f1 = force_at(force, t + request.step);
+    const Eigen::ArrayXd forcing_a = f0.force * response.dA + f0.rate * response.dB + f1.force * response.dC +
+                                     f1.rate * response.dD;
+    const Eigen::ArrayXd forcing_v = f0.force * response.qA + f0.rate * response.qB + f1.force * response.qC +
+                                     f1.rate * response.qD;
+    const Eigen::ArrayXd a_next = response.c * a + response.sn * v - psi * forcing_a;
+    v = response.c * v - response.w2sn * a - psi * forcing_v;
+    a = a_next;
+    const double* bd = response.ball_d;
+    const double* bq = response.ball_q;
+    s += vb * request.step + f0.force * bd[0] + f0.rate * bd[1] + f1.force * bd[2] + f1.rate * bd[3];
+    vb += f0.force * bq[0] + f0.rate * bq[1] + f1.force * bq[2] + f1.rate * bq[3];
+    f0 = f1;
+  }
+  return h;
+}
+
+}  // namespace sweetspot
