@@ -16,10 +16,14 @@
 #include <toml++/toml.h>
 
 #include "sweetspot/input_error.hpp"
+#include "toml_values.hpp"
 
 namespace sweetspot {
 
 namespace {
+
+using detail::describe;
+using detail::format_number;
 
 namespace fs = std::filesystem;
 
@@ -31,14 +35,6 @@ namespace fs = std::filesystem;
 
 std::string at_line(const fs::path& file, int line) {
   return file.string() + ":" + std::to_string(line);
-}
-
-// Enough digits to show the value the user wrote, few enough to hide binary round-off.
-std::string format_number(double x) {
-  std::ostringstream out;
-  out.precision(10);
-  out << x;
-  return out.str();
 }
 
 // `context` says why the file was wanted, for files the user did not name directly.
@@ -54,19 +50,6 @@ std::string read_text(const fs::path& file, const std::string& context = "") {
   return text.str();
 }
 
-// A TOML value as the user wrote it, with its type when it is not a number.
-std::string describe(const toml::node& node) {
-  if (node.is_number()) return format_number(*node.value<double>());
-  std::ostringstream out;
-  if (node.is_table())
-    out << "{...}";
-  else if (node.is_array())
-    out << "[...]";
-  else
-    node.visit([&](const auto& value) { out << value; });
-  out << " (" << node.type() << ")";
-  return out.str();
-}
 
 // One table of the bat file; `prefix` makes keys read "material.density" in messages.
 struct Section {
