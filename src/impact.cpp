@@ -53,14 +53,21 @@ ImpactResult collision_result(const Collision& c) {
 ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& scene) {
   validate(scene, basis);
   const SceneGeometry g = scene_geometry(scene, basis);
-  const Collision c = collide(g.contact, scene.ball, scene.ball_speed, scene.integrator);
+  CollisionOptions options = scene.integrator;
+  options.record_force |= scene.van_zandt_comparison;  // Van Zandt drives the modes with it
+  const Collision c = collide(g.contact, scene.ball, scene.ball_speed, options);
 
   ImpactResult r = collision_result(c);
+  if (!scene.integrator.record_force) r.force.clear();  // recorded for Van Zandt alone
   r.z = g.z;
   r.modes_kept = g.modes_kept;
   r.modes_error = g.modes_error;
+  if (scene.rigid_comparison) r.vf_rigid = rigid_exit_speed(scene.ball.e0, g.recoil, scene.ball_speed, g.bat_speed);
   if (c.status == CollisionStatus::refused_step) return r;
   r.e_eff = effective_cor(r.vf, g.recoil, scene.ball_speed, g.bat_speed);
+  // Only a whole force profile can drive the modes (the toy model does the same).
+  if (scene.van_zandt_comparison && c.status == CollisionStatus::ok)
+    r.vf_van_zandt = van_zandt_exit_speed(g.contact, scene.ball, g.recoil, scene.ball_speed, g.bat_speed, c.force);
 
   ImpactEnergy& e = r.energy;
   e.initial = 0.5 * scene.ball.mass * scene.ball_speed * scene.ball_speed + 0.5 * g.contact.velocity0.squaredNorm();

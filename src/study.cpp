@@ -191,7 +191,8 @@ struct OutputSpec {
 
 constexpr OutputSpec output_specs[] = {
     {"vf", every_kind, every_kind},
-    {"vf_van_zandt", toy, toy},
+    {"vf_rigid", impact, 0},
+    {"vf_van_zandt", impact | toy, toy},
     {"e_eff", ball_kinds, ball_kinds},
     {"contact_time", ball_kinds, ball_kinds},
     {"collision_time", ball_kinds, ball_kinds},
@@ -688,6 +689,9 @@ Study load_study(const fs::path& file) {
   base.scene.integrator.method = Method::exact;
   for (const Setting& setting : s.scene) setting.spec->set(base, setting.values[0]);
   if (!s["dt"]) base.scene.integrator.dt = default_step(base.scene.integrator.method);
+  // The comparisons cost time (Van Zandt records and integrates the force profile): only when asked.
+  base.scene.rigid_comparison = std::ranges::count(study.outputs, "vf_rigid") > 0;
+  base.scene.van_zandt_comparison = std::ranges::count(study.outputs, "vf_van_zandt") > 0;
   base.scene.swing.about_center = s["center"] != nullptr;
   study.base = base.scene;
   study.omega_tau = base.omega_tau;

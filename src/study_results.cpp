@@ -21,6 +21,7 @@ struct Description {
 const std::map<std::string, Description>& descriptions() {
   static const std::map<std::string, Description> d = {
       {"vf", {"m/s", "exit speed of the ball, positive away from the bat"}},
+      {"vf_rigid", {"m/s", "exit speed of the ball off a rigid bat at the same point (free or pivoted)"}},
       {"vf_van_zandt", {"m/s", "exit speed of the ball by Van Zandt's prescription (N2000 App. A)"}},
       {"e_eff", {"1", "effective coefficient of restitution"}},
       {"contact_time", {"s", "time the ball is in contact with the bat, summed over contacts"}},
@@ -84,6 +85,7 @@ double scalar_value(const ImpactResult& r, const std::string& name) {
   if (name == "status") return static_cast<double>(r.status);
   if (r.status != CollisionStatus::ok) return missing;
   if (name == "vf") return r.vf;
+  if (name == "vf_rigid") return r.vf_rigid;
   if (name == "vf_van_zandt") return r.vf_van_zandt;
   if (name == "e_eff") return r.e_eff;
   if (name == "contact_time") return r.contact_time;

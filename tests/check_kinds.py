@@ -54,7 +54,8 @@ def check_toy(ds):
     assert ds.omega_tau.attrs["long_name"] and ds.vf_van_zandt.attrs["long_name"]
 
 
-kind, path = sys.argv[1], sys.argv[2]
-with xr.open_dataset(path, engine="h5netcdf") as dataset:
-    {"wall": check_wall, "toy": check_toy}[kind](dataset)
-print(kind, "ok")
+if __name__ == "__main__":  # tests/check_figures.py imports the checks
+    kind, path = sys.argv[1], sys.argv[2]
+    with xr.open_dataset(path, engine="h5netcdf") as dataset:
+        {"wall": check_wall, "toy": check_toy}[kind](dataset)
+    print(kind, "ok")

@@ -82,6 +82,22 @@ TEST_CASE("With only the rigid modes, v_f is the rigid-bat formula (free and piv
         }
 }
 
+TEST_CASE("vf_rigid and vf_van_zandt: NaN unless asked, the closed forms when asked", "[impact]") {
+  ImpactScene s = high_impact(0.605);
+  const ImpactResult plain = simulate_impact(r161_modes(), s);
+  CHECK(std::isnan(plain.vf_rigid));
+  CHECK(std::isnan(plain.vf_van_zandt));
+  CHECK(plain.force.empty());
+  s.rigid_comparison = s.van_zandt_comparison = true;
+  const ImpactResult compared = simulate_impact(r161_modes(), s);
+  CHECK(compared.vf == plain.vf);  // recording the force changes nothing
+  CHECK(compared.vf_rigid == Approx(rigid_vf(s)).epsilon(1e-12));
+  CHECK(compared.force.empty());  // recorded for Van Zandt, not kept
+  // Van Zandt on a rigid bat (no vibrational mode) is the rigid formula.
+  s.vibrational_modes = 0;
+  CHECK(simulate_impact(r161_modes(), s).vf_van_zandt == Approx(rigid_vf(s)).epsilon(1e-12));
+}
+
 TEST_CASE("A lossless ball (e0 = 1) gives the exit speed of the R_n formula", "[impact]") {
   // g(omega) comes from the force profile alone; dt = 1 us keeps its quadrature below 1e-7.
   for (double z : {0.605, 0.705, 0.785}) {

@@ -124,9 +124,9 @@ std::vector<double> axis_values(const Study& study, std::string_view name) {
 
 TEST_CASE("every shipped study loads", "[study]") {
   const std::vector<std::pair<std::string, std::size_t>> expected = {
-      {"low_impact.toml", 54}, {"high_impact.toml", 3 * 44}, {"e_eff_full.toml", 44},
-      {"e_eff_half.toml", 44}, {"pivot.toml", 2 * 54},       {"design_space.toml", 2 * 44 * 21 * 21},
-      {"wall.toml", 18},       {"toy.toml", 61}};
+      {"low_impact.toml", 54},     {"high_impact.toml", 3 * 44}, {"high_impact_energy.toml", 44},
+      {"e_eff_full.toml", 44},     {"e_eff_half.toml", 44},      {"pivot.toml", 2 * 2 * 54},
+      {"design_space.toml", 2 * 44 * 21 * 21}, {"wall.toml", 18}, {"toy.toml", 61}};
   std::set<std::string> found;
   for (const auto& entry : fs::directory_iterator(source_path("studies"))) {
     if (entry.path().extension() != ".toml") continue;
@@ -356,6 +356,13 @@ TEST_CASE("outputs: any ImpactResult field, mode_energy with a fixed mode count"
   const Study study = dir.load(with(good_study, "[\"vf\", \"e_eff\"]", "[\"status\", \"mode_energy\", \"u_max\"]"));
   CHECK(study.outputs == std::vector<std::string>{"status", "mode_energy", "u_max"});
   CHECK(study.base.vibrational_modes == 18);
+  // The comparisons cost time: computed only for a study that names them.
+  CHECK_FALSE(study.base.rigid_comparison);
+  CHECK_FALSE(study.base.van_zandt_comparison);
+  const Study compared = dir.load(with(good_study, "[\"vf\", \"e_eff\"]", "[\"vf\", \"vf_van_zandt\", \"vf_rigid\"]"));
+  CHECK(compared.base.rigid_comparison);
+  CHECK(compared.base.van_zandt_comparison);
+  CHECK_FALSE(compared.base.integrator.record_force);  // simulate_impact records it for Van Zandt alone
   std::string all;
   for (const std::string& name : output_names()) all += (all.empty() ? "\"" : ", \"") + name + "\"";
   CHECK(dir.load(with(good_study, "[\"vf\", \"e_eff\"]", "[" + all + "]")).outputs == output_names());
@@ -364,7 +371,8 @@ TEST_CASE("outputs: any ImpactResult field, mode_energy with a fixed mode count"
 TEST_CASE("each kind has its outputs and its defaults", "[study]") {
   using V = std::vector<std::string>;
   CHECK(output_names() == output_names(StudyKind::impact));
-  CHECK(std::ranges::count(output_names(), "vf_van_zandt") == 0);
+  CHECK(std::ranges::count(output_names(), "vf_rigid") == 1);
+  CHECK(std::ranges::count(output_names(), "vf_van_zandt") == 1);
   CHECK(default_outputs(StudyKind::impact) == V{"vf", "e_eff", "contact_time", "collision_time", "status"});
   CHECK(output_names(StudyKind::wall) == V{"vf", "e_eff", "contact_time", "collision_time", "u_max", "peak_force",
                                            "impulse", "energy_initial", "energy_ball", "energy_ball_dissipated",
@@ -461,10 +469,10 @@ TEST_CASE("bad studies: the kind and what belongs to it", "[study]") {
     require_error(with(toy_study, "[\"vf\", \"status\"]", "[\"vf\", \"peak_force\"]"),
                   {"key 'output.variables[1]' = \"peak_force\"", "does not apply to kind \"toy\"", "vf_van_zandt"});
   }
-  SECTION("toy keys and outputs on a bat") {
+  SECTION("toy keys on a bat, bat outputs from the toy") {
     require_error("e0 = 0.5", "omega_tau = 2", {"key 'scene.omega_tau' = 2", "does not apply to kind \"impact\""});
-    require_error("[\"vf\", \"e_eff\"]", "[\"vf_van_zandt\"]",
-                  {"key 'output.variables[0]' = \"vf_van_zandt\"", "does not apply to kind \"impact\""});
+    require_error(with(toy_study, "[\"vf\", \"status\"]", "[\"vf_rigid\"]"),
+                  {"key 'output.variables[0]' = \"vf_rigid\"", "does not apply to kind \"toy\""});
   }
 }
 

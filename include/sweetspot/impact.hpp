@@ -38,8 +38,10 @@ struct ImpactResult {
   double u_max = 0;           // m
   double peak_force = 0;      // N
   double impulse = 0;         // N s
-  // Van Zandt's prescription for the same collision (physics.md §5), to compare with vf; only
-  // the toy model computes it so far, NaN elsewhere.
+  // Exit speeds to compare with vf (physics.md §5), NaN unless the scene asks for them: the rigid
+  // bat's at the same point (free or pivoted), and Van Zandt's prescription for the same
+  // collision (the toy model always gives it).
+  double vf_rigid = std::numeric_limits<double>::quiet_NaN();
   double vf_van_zandt = std::numeric_limits<double>::quiet_NaN();
   ImpactEnergy energy;
   std::vector<double> mode_energy;  // J per kept vibrational mode (of the held bat when pivoted)

@@ -24,7 +24,9 @@
 //            overrides the same key in [scene]. Required in one of them: impact: bat, z,
 //            ball_speed and the swing; wall: ball_speed; toy: omega_tau.
 //   [output] variables = names of ImpactResult fields the kind gives (output_names(kind));
-//            default default_outputs(kind). impact: all but vf_van_zandt; wall: vf, e_eff (the
+//            default default_outputs(kind). impact: vf, e_eff, contact_time, collision_time and
+//            status by default; vf_rigid and vf_van_zandt (the rigid bat's and Van Zandt's exit
+//            speeds at the same point) are computed only when named; wall: vf, e_eff (the
 //            restitution), contact_time, collision_time, u_max, peak_force, impulse, status and
 //            the energies of the ball (initial, ball, ball_dissipated, residual); toy: vf
 //            (v_f / v_i), vf_van_zandt, status and the energies initial, ball,

@@ -19,7 +19,17 @@ struct ModesOptions {
   int slices = 0;  // 0: the profile's own
   int count = 10;
   bool json = false;
+  bool shapes = false;
 };
+
+// psi of vibrational mode `mode` (1 = the first) at the slice centres, scaled to max |psi| = 1
+// and signed positive at the barrel end: the eigensolver's sign and normalisation are arbitrary.
+std::vector<double> unit_shape(const ModalBasis& basis, int mode) {
+  const Eigen::VectorXd psi = basis.psi.col(mode + 1);
+  const double scale = psi.cwiseAbs().maxCoeff() * (psi(psi.size() - 1) < 0 ? -1 : 1);
+  const Eigen::VectorXd unit = psi / scale;
+  return {unit.begin(), unit.end()};
+}
 
 void print_table(const Bat& bat, const MassProperties& mp, const ModalBasis& basis, int count) {
   std::printf("bat %s: L = %.4g m, %d slices, %s\n", bat.name.c_str(), bat.length, bat.slices(),
@@ -37,22 +47,27 @@ void print_table(const Bat& bat, const MassProperties& mp, const ModalBasis& bas
   }
 }
 
-void print_json(const Bat& bat, const MassProperties& mp, const ModalBasis& basis, int count) {
+void print_json(const Bat& bat, const MassProperties& mp, const ModalBasis& basis, int count, bool shapes) {
   const auto all = basis.vibrational_frequencies_hz();
   std::vector<Json> nodes;
   for (int mode = 1; mode <= count; ++mode) nodes.push_back(Json::numbers(basis.nodes(mode + 1)));
-  const Json out = Json::Object()
-                       .add("bat", bat.name)
-                       .add("theory", to_string(basis.theory))
-                       .add("slices", Json::integer(bat.slices()))
-                       .add("length_m", bat.length)
-                       .add("mass_kg", mp.mass)
-                       .add("z_cm_m", mp.z_cm)
-                       .add("r_g_m", mp.radius_of_gyration())
-                       .add("moment_of_inertia_cm_kg_m2", mp.moment_of_inertia_cm)
-                       .add("frequencies_hz", Json::numbers({all.begin(), all.begin() + count}))
-                       .add("nodes_m", Json::array(nodes));
-  std::printf("%s\n", out.text().c_str());
+  Json::Object out;
+  out.add("bat", bat.name)
+      .add("theory", to_string(basis.theory))
+      .add("slices", Json::integer(bat.slices()))
+      .add("length_m", bat.length)
+      .add("mass_kg", mp.mass)
+      .add("z_cm_m", mp.z_cm)
+      .add("r_g_m", mp.radius_of_gyration())
+      .add("moment_of_inertia_cm_kg_m2", mp.moment_of_inertia_cm)
+      .add("frequencies_hz", Json::numbers({all.begin(), all.begin() + count}))
+      .add("nodes_m", Json::array(nodes));
+  if (shapes) {  // N2000 Fig. 6
+    std::vector<Json> unit_shapes;
+    for (int mode = 1; mode <= count; ++mode) unit_shapes.push_back(Json::numbers(unit_shape(basis, mode)));
+    out.add("z_m", Json::numbers(basis.z)).add("shapes", Json::array(unit_shapes));
+  }
+  std::printf("%s\n", Json(out).text().c_str());
 }
 
 void run_modes(const ModesOptions& o) {
@@ -64,7 +79,7 @@ void run_modes(const ModesOptions& o) {
     throw InputError("--count " + std::to_string(o.count) + ": the bat has only " + std::to_string(available) +
                      " vibrational modes at " + std::to_string(bat.slices()) + " slices");
   const MassProperties mp = mass_properties(bat);
-  if (o.json) print_json(bat, mp, basis, o.count);
+  if (o.json) print_json(bat, mp, basis, o.count, o.shapes);
   else print_table(bat, mp, basis, o.count);
 }
 
@@ -82,7 +97,10 @@ void add_modes_command(CLI::App& app) {
   cmd->add_option("--count", options->count, "vibrational modes to print")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  cmd->add_flag("--json", options->json, "print one JSON object");
+  CLI::Option* json = cmd->add_flag("--json", options->json, "print one JSON object");
+  cmd->add_flag("--shapes", options->shapes,
+                "with --json: add the slice centres z_m and the shapes of the modes there (max |psi| = 1)")
+      ->needs(json);
   cmd->callback([options] { run_modes(*options); });
 }
 
