@@ -16,6 +16,7 @@
 
 #include "sweetspot/bat_file.hpp"
 #include "sweetspot/input_error.hpp"
+#include "toml_values.hpp"
 
 namespace sweetspot {
 
@@ -30,35 +31,9 @@ constexpr int default_modes = ImpactScene{}.vibrational_modes;
 
 // ---- Messages: "file:line: key 'axes.z.step' = 0: expected ..." -------------------------------
 
-std::string format_number(double x) {
-  std::ostringstream out;
-  out.precision(10);  // the value as the user wrote it, without binary round-off
-  out << x;
-  return out.str();
-}
-
-// Strings as TOML writes them in basic form, the form the study files use.
-std::string quote(std::string_view text) {
-  std::string out = "\"";
-  for (const char c : text) out += c == '"' || c == '\\' ? std::string("\\") + c : std::string(1, c);
-  return out + "\"";
-}
-
-// A TOML value as written, with its type when that is not a plain number or boolean.
-std::string describe(const toml::node& node) {
-  if (node.is_number()) return format_number(*node.value<double>());
-  if (node.is_boolean()) return node.as_boolean()->get() ? "true" : "false";
-  if (node.is_string()) return quote(node.as_string()->get()) + " (string)";
-  std::ostringstream out;
-  if (node.is_table())
-    out << "{...}";
-  else if (node.is_array())
-    out << "[...]";
-  else
-    node.visit([&](const auto& value) { out << value; });
-  out << " (" << node.type() << ")";
-  return out.str();
-}
+using detail::describe;
+using detail::format_number;
+using detail::quote;
 
 // Where a value sits in the study file; line 0 when it has none to show.
 struct Where {
