@@ -128,7 +128,6 @@ class CollisionRun {
     result_.peak_force = std::max(result_.peak_force, law.f_max());
     result_.impulse += ball_.mass * (y_(1) - v_start);
     result_.dissipated += law.loop_energy();
-    if (result_.contacts == 1) result_.first_separation = t_;
     return true;
   }
 

@@ -1,10 +1,8 @@
 // Bat files: the shipped bats load with the mass properties physics.md §2 quotes, and every kind
 // of bad file fails with one InputError line naming the file, the key or line, and the value.
-#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
-#include <random>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -12,6 +10,8 @@
 #include <catch2/catch.hpp>
 
 #include "program.hpp"
+#include "temp_dir.hpp"
+#include "text_edit.hpp"
 #include "sweetspot/bat.hpp"
 #include "sweetspot/bat_file.hpp"
 #include "sweetspot/input_error.hpp"
@@ -42,40 +42,12 @@ constexpr std::string_view good_csv =
     "2,0.15,0.050\n"
     "3,0.25,0.060\n";
 
-// `text` with its first occurrence of `from` replaced by `to` (which must be there).
-std::string with(std::string_view text, std::string_view from, std::string_view to) {
-  std::string out(text);
-  const auto at = out.find(from);
-  REQUIRE(at != std::string::npos);
-  return out.replace(at, from.size(), to);
-}
-
 // A fresh directory holding bat.toml and profile.csv, removed afterwards.
-struct BatDir {
-  fs::path dir;
-  fs::path toml;
-  fs::path csv;
+struct BatDir : TempDir {
+  fs::path toml, csv;
 
-  explicit BatDir(std::string_view toml_text = good_toml, std::string_view csv_text = good_csv) {
-    static std::atomic<int> counter = 0;
-    dir = fs::temp_directory_path() /
-          ("sweetspot_bat_file_" + std::to_string(std::random_device{}()) + "_" +
-           std::to_string(counter++));
-    fs::create_directories(dir);
-    toml = write("bat.toml", toml_text);
-    csv = write("profile.csv", csv_text);
-  }
-  ~BatDir() {
-    std::error_code ignored;
-    fs::remove_all(dir, ignored);
-  }
-  BatDir(const BatDir&) = delete;
-  BatDir& operator=(const BatDir&) = delete;
-
-  fs::path write(const std::string& name, std::string_view text) const {
-    std::ofstream(dir / name, std::ios::binary) << text;
-    return dir / name;
-  }
+  explicit BatDir(std::string_view toml_text = good_toml, std::string_view csv_text = good_csv)
+      : toml(write("bat.toml", toml_text)), csv(write("profile.csv", csv_text)) {}
 };
 
 // The program must refuse the bat with exit status 2 and the same one-line message.
@@ -185,12 +157,12 @@ TEST_CASE("a hollow bat with a shear coefficient", "[bat_file]") {
 
 TEST_CASE("bat file: missing TOML file", "[bat_file]") {
   const BatDir dir;
-  require_input_error(dir.dir / "nope.toml", {"nope.toml", "not found"});
+  require_input_error(dir.path / "nope.toml", {"nope.toml", "not found"});
 }
 
 TEST_CASE("bat file: TOML path is a directory", "[bat_file]") {
   const BatDir dir;
-  require_input_error(dir.dir, {dir.dir.string(), "not a regular file"});
+  require_input_error(dir.path, {dir.path.string(), "not a regular file"});
 }
 
 TEST_CASE("bat file: missing profile CSV", "[bat_file]") {

@@ -66,7 +66,6 @@ struct Collision {
   double impulse = 0;          // N s delivered to the ball
   double dissipated = 0;       // J lost in the ball (loop areas of all contacts)
   int contacts = 0;
-  double first_separation = 0;     // s, end of the first contact
   std::vector<ForceSample> force;  // only with record_force
 
   // Energy of mode n: 1/2 (a_n'^2 + omega_n^2 a_n^2).
