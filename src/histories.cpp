@@ -37,7 +37,7 @@ Histories impact_histories(const ModalBasis& basis, const SceneGeometry& g, cons
                            const std::vector<ForceSample>& force, const HistoryRequest& request) {
   const ModalContact& body = g.contact;
   const int n = body.count();
-  const std::size_t samples = static_cast<std::size_t>(std::floor(request.window / request.step + 1e-9)) + 1;
+  const std::size_t samples = request.samples();
   const detail::ModeResponse response(body.omega.array(), request.step, ball.mass);
   const Eigen::ArrayXd psi = body.psi.array(), omega2 = body.omega.array().square();
   const Eigen::ArrayXd vibrating = (body.omega.array() > 0).cast<double>();

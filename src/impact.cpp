@@ -6,12 +6,15 @@ namespace sweetspot {
 
 namespace {
 
+// Rigid modes at the front of the contact's: rotation about the pivot, or translation and rotation.
+int rigid_modes(const ImpactScene& scene) { return scene.pivoted ? 1 : 2; }
+
 // Splits the final energy of the bat among rigid translation, rotation and vibration. A pivoted
 // bat has one rigid mode, rotation about the pivot: its energy 1/2 I_p W^2 splits into the CM's
 // translation 1/2 M (W d)^2 and rotation 1/2 I_cm W^2 in the ratio M d^2 : I_cm.
 void bat_energies(const ImpactScene& scene, const SceneGeometry& g, const ModalBasis& basis, const Collision& c,
                   ImpactResult& r) {
-  const int rigid = scene.pivoted ? 1 : 2;
+  const int rigid = rigid_modes(scene);
   for (int n = rigid; n < g.contact.count(); ++n) {
     r.mode_energy.push_back(c.mode_energy(g.contact, n));
     r.energy.vibration += r.mode_energy.back();
@@ -27,7 +30,27 @@ void bat_energies(const ImpactScene& scene, const SceneGeometry& g, const ModalB
   }
 }
 
+// What a scene asks beside the collision that needs its whole force profile.
+void add_force_analyses(const ImpactScene& scene, const ModalBasis& basis, const SceneGeometry& g, const Collision& c,
+                        ImpactResult& r) {
+  if (scene.histories)
+    r.histories = impact_histories(basis, g, scene.ball, scene.ball_speed, c.force, scene.history);
+  if (scene.force_response)
+    for (const double omega_tau : force_response_grid())
+      r.force_response.push_back(force_response(c.force, omega_tau / c.collision_time));
+  if (scene.mode_response) {
+    const std::vector<double> all = mode_responses(g.contact, scene.ball.mass, c.force);
+    r.mode_response.assign(all.begin() + rigid_modes(scene), all.end());
+  }
+}
+
 }  // namespace
+
+std::vector<double> force_response_grid() {
+  std::vector<double> grid;
+  for (int i = 0; i <= 200; ++i) grid.push_back(i / 10.0);
+  return grid;
+}
 
 void close_balance(ImpactEnergy& e) {
   e.residual = e.initial - (e.ball + e.bat_translation + e.bat_rotation + e.vibration + e.ball_dissipated);
@@ -54,11 +77,12 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& scene) 
   validate(scene, basis);
   const SceneGeometry g = scene_geometry(scene, basis);
   CollisionOptions options = scene.integrator;
-  options.record_force |= scene.van_zandt_comparison;  // Van Zandt drives the modes with it
+  // Van Zandt and the force analyses drive the modes with the force profile.
+  options.record_force |= scene.van_zandt_comparison || scene.histories || scene.force_response || scene.mode_response;
   const Collision c = collide(g.contact, scene.ball, scene.ball_speed, options);
 
   ImpactResult r = collision_result(c);
-  if (!scene.integrator.record_force) r.force.clear();  // recorded for Van Zandt alone
+  if (!scene.integrator.record_force) r.force.clear();  // recorded for this function's use alone
   r.z = g.z;
   r.modes_kept = g.modes_kept;
   r.modes_error = g.modes_error;
@@ -68,6 +92,7 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& scene) 
   // Only a whole force profile can drive the modes (the toy model does the same).
   if (scene.van_zandt_comparison && c.status == CollisionStatus::ok)
     r.vf_van_zandt = van_zandt_exit_speed(g.contact, scene.ball, g.recoil, scene.ball_speed, g.bat_speed, c.force);
+  if (c.status == CollisionStatus::ok) add_force_analyses(scene, basis, g, c, r);
 
   ImpactEnergy& e = r.energy;
   e.initial = 0.5 * scene.ball.mass * scene.ball_speed * scene.ball_speed + 0.5 * g.contact.velocity0.squaredNorm();

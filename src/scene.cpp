@@ -78,6 +78,15 @@ ModalContact constrained_modes(const ModalContact& free, const Eigen::VectorXd& 
   return held;
 }
 
+void validate_history(const HistoryRequest& h, double length) {
+  require_positive("history_window", h.window);
+  require_positive("history_step", h.step);
+  if (h.window / h.step > max_history_samples)
+    reject("history_step", h.step, "gives more than 1e5 samples over the history window");
+  for (const double z : h.probes)
+    if (!(z >= 0 && z <= length)) reject("probes", z, "must lie on the bat (0 to " + std::to_string(length) + " m)");
+}
+
 }  // namespace
 
 Eigen::VectorXd SceneGeometry::shapes_at(const ModalBasis& basis, double z) const {
@@ -101,6 +110,7 @@ void validate(const ImpactScene& scene, const ModalBasis& basis) {
   require_positive("tolerance", scene.integrator.tolerance);
   require_positive("mode_tolerance", scene.mode_tolerance);
   require_positive("window", scene.integrator.window);
+  if (scene.histories) validate_history(scene.history, length);
   if (scene.pivoted && !scene.swing.about_center)
     reject("pivot", 1, "a pivoted bat is held at its rotation centre: give the centre, not the CM speed");
   if (scene.vibrational_modes != all_modes && scene.vibrational_modes != auto_modes &&

@@ -70,7 +70,8 @@ constexpr KindSet every_kind = impact | wall | toy;
 
 std::string kind_text(StudyKind kind) { return quote(to_string(kind)); }
 
-enum class Type { number, integer, boolean, bat, theory, modes, integrator };
+// `numbers`: a list of numbers in [scene] (probes), never an axis; `set` takes each in turn.
+enum class Type { number, integer, boolean, bat, theory, modes, integrator, numbers };
 
 // One key of [scene]: how its value is read, the rule validate() in scene.cpp applies to it, how
 // it sets a grid point, and the kinds of study it belongs to and must be given in. Every value
@@ -140,6 +141,13 @@ constexpr KeySpec keys[] = {
      [](GridPoint& p, double x) { p.scene.integrator.dt = x; }, ball_kinds},
     {"window", Type::number, "a finite number > 0 (s)", positive,
      [](GridPoint& p, double x) { p.scene.integrator.window = x; }, ball_kinds},
+    // Histories shape the dataset's dimensions (probe, time), so they are never axes.
+    {"probes", Type::numbers, "a list of points on the bat, each a finite number >= 0 (m from the knob)", on_bat,
+     [](GridPoint& p, double x) { p.scene.history.probes.push_back(x); }, impact, 0, false},
+    {"history_window", Type::number, "a finite number > 0 (s of history from first touch)", positive,
+     [](GridPoint& p, double x) { p.scene.history.window = x; }, impact, 0, false},
+    {"history_step", Type::number, "a finite number > 0 (s between history samples)", positive,
+     [](GridPoint& p, double x) { p.scene.history.step = x; }, impact, 0, false},
     {"omega_tau", Type::number, "a finite number > 0 (omega tau of the toy model)", positive,
      [](GridPoint& p, double x) { p.omega_tau = x; }, toy, toy},
 };
@@ -183,6 +191,17 @@ constexpr OutputSpec output_specs[] = {
     {"energy_ball_dissipated", ball_kinds, 0},
     {"energy_residual", every_kind, 0},
     {"mode_energy", impact, 0},
+    {"displacement", impact, 0},
+    {"velocity", impact, 0},
+    {"acceleration", impact, 0},
+    {"vibration_displacement", impact, 0},
+    {"vibration_velocity", impact, 0},
+    {"vibration_acceleration", impact, 0},
+    {"force", impact, 0},
+    {"compression", impact, 0},
+    {"ball_position", impact, 0},
+    {"force_response", impact, 0},
+    {"mode_response", impact, 0},
     {"modes_kept", impact, 0},
     {"modes_error", impact, 0},
     {"status", every_kind, every_kind},
@@ -234,7 +253,7 @@ struct Value {
 Value read_value(const Where& at, const KeySpec& spec, const toml::node& node) {
   const auto bad = [&] { reject(at, describe(node), "expected " + std::string(spec.expected)); };
   Value v;
-  if (spec.type == Type::number && node.is_number())
+  if ((spec.type == Type::number || spec.type == Type::numbers) && node.is_number())
     v.number = *node.value<double>();
   else if ((spec.type == Type::integer || spec.type == Type::modes) && node.is_integer())
     v.number = static_cast<double>(node.as_integer()->get());
@@ -389,6 +408,17 @@ Setting read_axis(const Where& at, const KeySpec& spec, const toml::node& node, 
   return s;
 }
 
+// A list-valued [scene] key (probes): one or more distinct values.
+Setting read_list(const Where& at, const KeySpec& spec, const toml::node& node) {
+  Setting s{&spec, at, {}, {}};
+  const toml::array* list = node.as_array();
+  if (!list || list->empty()) reject(at, describe(node), "expected " + std::string(spec.expected));
+  for (std::size_t i = 0; i < list->size(); ++i) add(s, read_value(at.item(i, (*list)[i]), spec, (*list)[i]));
+  if (const auto twice = first_repeat(s.values))
+    reject(at, format_number(*twice), "appears twice in the list; its values must differ");
+  return s;
+}
+
 // Why a key of the table cannot stand here, or empty when it can.
 std::string misplaced(const KeySpec* spec, StudyKind kind, bool axes) {
   if (!spec) return "unknown key";
@@ -411,6 +441,8 @@ std::vector<Setting> read_settings(const Where& top, const toml::table& doc, std
       reject(where, describe(*node), why + "; expected one of " + key_list(kind, axes));
     if (axes)
       settings.push_back(read_axis(where, *spec, *node, top.file->parent_path()));
+    else if (spec->type == Type::numbers)
+      settings.push_back(read_list(where, *spec, *node));
     else
       add(settings.emplace_back(Setting{spec, where, {}, {}}), read_value(where, *spec, *node));
   }
@@ -483,11 +515,12 @@ std::string bat_text(const std::vector<Bat>& bats, const Setting& bat, std::size
   return bats[b].name + " (" + bat.labels[b] + ")";
 }
 
-void check_on_bats(const Setting& z, const std::vector<Bat>& bats, const Setting& bat) {
-  for (const double x : z.values)
+// Points on the bat (z, probes) must be on every bat.
+void check_on_bats(const Setting& points, const std::vector<Bat>& bats, const Setting& bat) {
+  for (const double x : points.values)
     for (std::size_t b = 0; b < bats.size(); ++b)
       if (x > bats[b].length)
-        reject(z.where, format_number(x),
+        reject(points.where, format_number(x),
                "must lie on every bat of the study: 0 to " + format_number(bats[b].length) + " m for " +
                    bat_text(bats, bat, b));
 }
@@ -521,13 +554,25 @@ void check_grid_size(const Settings& s, const Where& top) {
     reject(Where{top.file, "axes", 0}, "{...}", "the grid has " + format_number(points) + " points; at most 1e9");
 }
 
+void check_history_samples(const Settings& s) {
+  const double window = s.values("history_window", HistoryRequest{}.window)[0];
+  const double step = s.values("history_step", HistoryRequest{}.step)[0];
+  if (window / step > max_history_samples) {
+    const Setting* at = s["history_step"] ? s["history_step"] : s["history_window"];
+    reject(at->where, format_number(at->values[0]),
+           "history_window / history_step = " + format_number(window / step) + " samples; at most 1e5");
+  }
+}
+
 // The impact kind's checks across keys: the swing, the bat files, z on every bat, mode counts.
 void check_bat_scene(Study& study, const Settings& s, const Where& top) {
   const Setting& bat = *s["bat"];
   check_swing(s, top);
   const std::vector<Bat> bats = load_bats(study, bat);
   check_on_bats(*s["z"], bats, bat);
+  if (const Setting* probes = s["probes"]) check_on_bats(*probes, bats, bat);
   check_mode_counts(s, top, bats, bat);
+  check_history_samples(s);
 }
 
 // ---- The kind ----------------------------------------------------------------------------------
@@ -580,7 +625,9 @@ std::vector<std::string> read_outputs(const Where& top, const toml::table& doc, 
     if (const std::string why = unavailable(item, kind); !why.empty()) reject(at.item(i, item), describe(item), why);
     if (std::ranges::count(outputs, name))
       reject(at.item(i, item), describe(item), "appears twice; list each output once");
-    if (name == "mode_energy" && !fixed_modes)
+    if (is_probe_history(name) && !s["probes"])
+      reject(at.item(i, item), describe(item), "needs probes = [z, ...] in [scene] (m from the knob)");
+    if ((name == "mode_energy" || name == "mode_response") && !fixed_modes)
       reject(at.item(i, item), describe(item),
              "needs a fixed number of modes >= 1 (modes a number in [scene], not \"all\" or an axis)");
     outputs.push_back(name);
@@ -662,11 +709,15 @@ Study load_study(const fs::path& file) {
   // Studies integrate by exact modal stepping unless they say otherwise: the fastest method for
   // a given accuracy (README, "Numerics"); each method has its own default step.
   base.scene.integrator.method = Method::exact;
-  for (const Setting& setting : s.scene) setting.spec->set(base, setting.values[0]);
+  for (const Setting& setting : s.scene)
+    for (const double x : setting.values) setting.spec->set(base, x);  // one value, or each of a list
   if (!s["dt"]) base.scene.integrator.dt = default_step(base.scene.integrator.method);
   // The comparisons cost time (Van Zandt records and integrates the force profile): only when asked.
   base.scene.rigid_comparison = std::ranges::count(study.outputs, "vf_rigid") > 0;
   base.scene.van_zandt_comparison = std::ranges::count(study.outputs, "vf_van_zandt") > 0;
+  base.scene.histories = std::ranges::any_of(study.outputs, is_history);
+  base.scene.force_response = std::ranges::count(study.outputs, "force_response") > 0;
+  base.scene.mode_response = std::ranges::count(study.outputs, "mode_response") > 0;
   base.scene.swing.about_center = s["center"] != nullptr;
   study.base = base.scene;
   study.omega_tau = base.omega_tau;
@@ -732,6 +783,16 @@ std::vector<std::size_t> task_order(const Study& study) {
   std::vector<std::size_t> order(study.points());
   for (std::size_t t = 0; t < order.size(); ++t) order[t] = task_point(study, t);
   return order;
+}
+
+bool is_probe_history(std::string_view name) {
+  static constexpr std::string_view names[] = {"displacement",           "velocity",           "acceleration",
+                                               "vibration_displacement", "vibration_velocity", "vibration_acceleration"};
+  return std::ranges::count(names, name) > 0;
+}
+
+bool is_history(std::string_view name) {
+  return is_probe_history(name) || name == "force" || name == "compression" || name == "ball_position";
 }
 
 const std::vector<std::string>& output_names(StudyKind kind) {

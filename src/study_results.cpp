@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <sstream>
 
 #include "sweetspot/version.hpp"
 
@@ -42,6 +43,17 @@ const std::map<std::string, Description>& descriptions() {
       {"energy_ball_dissipated", {"J", "energy dissipated in the ball"}},
       {"energy_residual", {"J", "energy balance residual (integration error)"}},
       {"mode_energy", {"J", "final energy of each vibrational mode"}},
+      {"mode_response", {"1", "response R_n = m psi_n^2 g(omega_n) of each kept vibrational mode"}},
+      {"force_response", {"1", "g(omega tau) = |integral of F(t)/impulse exp(i omega t) dt|^2 of the force profile"}},
+      {"displacement", {"m", "displacement of the probe point, in the frame where it is initially at rest"}},
+      {"velocity", {"m/s", "velocity of the probe point, in the frame where it is initially at rest"}},
+      {"acceleration", {"m/s^2", "acceleration of the probe point"}},
+      {"vibration_displacement", {"m", "vibrational displacement of the probe point (rigid modes left out)"}},
+      {"vibration_velocity", {"m/s", "vibrational velocity of the probe point (rigid modes left out)"}},
+      {"vibration_acceleration", {"m/s^2", "vibrational acceleration of the probe point (rigid modes left out)"}},
+      {"force", {"N", "contact force on the ball"}},
+      {"compression", {"m", "compression of the ball"}},
+      {"ball_position", {"m", "displacement of the ball from first touch, positive away from the bat"}},
       {"z", {"m", "impact location from the knob"}},
       {"ball_speed", {"m/s", "ball speed toward the bat"}},
       {"e0", {"1", "coefficient of restitution of the ball on a rigid wall"}},
@@ -132,32 +144,80 @@ Variable output_variable(const std::string& name, std::vector<std::string> dims,
   return v;
 }
 
+bool is_scalar(const std::string& name) {
+  return !(name == "mode_energy" || name == "mode_response" || name == "force_response" || is_history(name));
+}
+
+// The dimensions an output adds to the study's axes, slowest first.
+std::vector<std::string> extra_dims(const Study& study, const std::string& name) {
+  if (name == "mode_energy" || name == "mode_response") return {"mode"};
+  if (name == "force_response") return {"omega_tau"};
+  if (is_probe_history(name) && study.base.history.probes.size() > 1) return {"probe", "time"};
+  if (is_history(name)) return {"time"};
+  return {};
+}
+
+std::size_t dim_size(const Study& study, const std::string& dim) {
+  if (dim == "mode") return static_cast<std::size_t>(dataset_mode_count(study));
+  if (dim == "omega_tau") return force_response_grid().size();
+  if (dim == "probe") return study.base.history.probes.size();
+  return study.base.history.samples();  // time
+}
+
+std::vector<double> ProbeHistory::*probe_member(const std::string& name) {
+  if (name == "displacement") return &ProbeHistory::displacement;
+  if (name == "velocity") return &ProbeHistory::velocity;
+  if (name == "acceleration") return &ProbeHistory::acceleration;
+  if (name == "vibration_displacement") return &ProbeHistory::vibration_displacement;
+  if (name == "vibration_velocity") return &ProbeHistory::vibration_velocity;
+  return &ProbeHistory::vibration_acceleration;
+}
+
+// A point's values of an output that has extra dimensions, row-major over them (probes, then time).
+std::vector<double> array_value(const ImpactResult& r, const std::string& name) {
+  if (name == "mode_energy") return r.mode_energy;
+  if (name == "mode_response") return r.mode_response;
+  if (name == "force_response") return r.force_response;
+  if (name == "force") return r.histories.force;
+  if (name == "compression") return r.histories.compression;
+  if (name == "ball_position") return r.histories.ball_position;
+  std::vector<double> values;
+  for (const ProbeHistory& p : r.histories.probes) {
+    const std::vector<double>& history = p.*probe_member(name);
+    values.insert(values.end(), history.begin(), history.end());
+  }
+  return values;
+}
+
 }  // namespace
+
+int dataset_mode_count(const Study& study) {
+  const bool per_mode =
+      std::ranges::count(study.outputs, "mode_energy") + std::ranges::count(study.outputs, "mode_response") > 0;
+  return per_mode ? study.base.vibrational_modes : 10;
+}
 
 OutputLayout::OutputLayout(const Study& study) : names(study.outputs) {
   for (const std::string& name : names) {
+    std::size_t values = 1;
+    for (const std::string& dim : extra_dims(study, name)) values *= dim_size(study, dim);
     offsets.push_back(width);
-    widths.push_back(name == "mode_energy" ? study.base.vibrational_modes : 1);
+    widths.push_back(static_cast<int>(values));
     width += widths.back();
   }
 }
 
 void OutputLayout::extract(const ImpactResult& result, double* row) const {
   for (std::size_t i = 0; i < names.size(); ++i) {
-    if (names[i] != "mode_energy") {
+    if (is_scalar(names[i])) {
       row[offsets[i]] = scalar_value(result, names[i]);
       continue;
     }
-    for (int n = 0; n < widths[i]; ++n)
-      row[offsets[i] + n] = result.status == CollisionStatus::ok && n < static_cast<int>(result.mode_energy.size())
-                                ? result.mode_energy[n]
-                                : missing;
+    // A failed point has none; a point keeping fewer modes than the dimension leaves NaN after them.
+    const std::vector<double> values = result.status == CollisionStatus::ok ? array_value(result, names[i])
+                                                                             : std::vector<double>{};
+    for (int n = 0; n < widths[i]; ++n) row[offsets[i] + n] = n < static_cast<int>(values.size()) ? values[n] : missing;
   }
-}
-
-int dataset_mode_count(const Study& study) {
-  const bool per_mode = std::ranges::count(study.outputs, "mode_energy") > 0;
-  return per_mode ? study.base.vibrational_modes : 10;
 }
 
 namespace {
@@ -172,6 +232,32 @@ void add_bat_coordinates(const Study& study, Dataset& d) {
   d.coordinates.push_back(mode);
 }
 
+Coordinate history_coordinate(const Study& study, const std::string& dim) {
+  const HistoryRequest& h = study.base.history;
+  if (dim == "probe") return {"probe", "m", "probe point on the bat, from the knob", h.probes, {}};
+  if (dim == "omega_tau")
+    return {"omega_tau", "1", "angular frequency omega times the point's collision time tau", force_response_grid(), {}};
+  Coordinate time{"time", "s", "time since the ball first touches the bat", {}, {}};
+  for (std::size_t j = 0; j < h.samples(); ++j) time.values.push_back(static_cast<double>(j) * h.step);
+  return time;
+}
+
+// The dimensions of the histories and the force response that the outputs use, once each.
+void add_history_coordinates(const Study& study, Dataset& d) {
+  for (const std::string dim : {"probe", "time", "omega_tau"})
+    if (std::ranges::any_of(study.outputs,
+                            [&](const std::string& name) { return std::ranges::count(extra_dims(study, name), dim) > 0; }))
+      d.coordinates.push_back(history_coordinate(study, dim));
+}
+
+// A history at one probe has no probe dimension: the attribute says where it was taken.
+void add_probe_attribute(const Study& study, Variable& v) {
+  if (!is_probe_history(v.name) || study.base.history.probes.size() != 1) return;
+  std::ostringstream where;
+  where << study.base.history.probes[0] << " m from the knob";
+  v.text_attributes.push_back({"probe", where.str()});
+}
+
 void add_outputs(const Study& study, const OutputLayout& layout, const std::vector<double>& rows,
                  const std::vector<std::string>& dims, Dataset& d) {
   const std::size_t points = study.points();
@@ -181,11 +267,12 @@ void add_outputs(const Study& study, const OutputLayout& layout, const std::vect
       std::copy_n(rows.begin() + p * layout.width + layout.offsets[i], layout.widths[i],
                   values.begin() + p * layout.widths[i]);
     std::vector<std::string> variable_dims = dims;
-    if (layout.names[i] == "mode_energy") variable_dims.push_back("mode");
+    for (std::string& dim : extra_dims(study, layout.names[i])) variable_dims.push_back(std::move(dim));
     // The toy model is dimensionless (m = k = v_i = 1): speeds are ratios to v_i and energies
     // are in units of m v_i^2 (the initial energy is 1/2).
     const char* units = study.kind == StudyKind::toy ? "1" : nullptr;
     d.variables.push_back(output_variable(layout.names[i], variable_dims, std::move(values), units));
+    add_probe_attribute(study, d.variables.back());
   }
 }
 
@@ -216,6 +303,7 @@ Dataset make_dataset(const Study& study, const OutputLayout& layout, const std::
   // Wall and toy studies have no bat: no bat or mode dimension and no frequencies; a study of
   // rigid bats alone computed no modes, so it stores no frequencies either.
   if (has_bat(study.kind)) add_bat_coordinates(study, d);
+  add_history_coordinates(study, d);
   add_outputs(study, layout, rows, dims, d);
   if (!bat_frequencies_hz.empty()) d.variables.push_back(frequency_variable(study, bat_frequencies_hz));
 

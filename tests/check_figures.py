@@ -4,7 +4,8 @@ of the datasets it is drawn from, not on the images.
 
 Usage: /usr/bin/python3 tests/check_figures.py FIGURE DIR
   FIGURE: low_impact (Figs. 7-8), high_impact (Figs. 10-11), e_eff (Fig. 12), pivot (Fig. 16),
-          wall (Fig. 3), toy (Fig. 18) or modes (Fig. 6)
+          wall (Fig. 3), toy (Fig. 18), modes (Fig. 6), force_profile (Figs. 2 and 4),
+          low_impact_histories (Fig. 9) or handle (Figs. 13-15)
   DIR holds what the figure needs: DIR/STUDY.h5 as `sweetspot run studies/STUDY.toml -o
   DIR/STUDY.h5` writes it, or for modes DIR/modes.json from `sweetspot modes R161 --json
   --shapes --count 3`.
@@ -102,6 +103,64 @@ def toy():
         assert abs(float(ds.vf_van_zandt[end] / ds.vf[end]) - 1) < 0.01
 
 
+def force_profile():
+    ds = study("force_profile")
+    # Fig. 4: one universal g(omega tau) for 1-70 m/s, although tau halves and more.
+    g = ds.force_response.sel(omega_tau=slice(None, 2.95))
+    spread = float((g.max("ball_speed") - g.min("ball_speed")).max())
+    assert spread < 0.05, spread
+    assert float(ds.collision_time.sel(ball_speed=1) / ds.collision_time.sel(ball_speed=70)) > 2.5
+    # Fig. 2: the area of the loop F(u) is the energy the ball dissipates.
+    for v in ds.ball_speed.values:
+        at = ds.sel(ball_speed=v)
+        area = float(np.trapz(at.force, at.compression))
+        assert abs(area / float(at.energy_ball_dissipated) - 1) < 0.01, (v, area, float(at.energy_ball_dissipated))
+
+
+def spectrum(history, frequency_hz):
+    """|sum x(t) exp(-2 pi i f t)|: how strongly frequency f shows in a sampled history."""
+    t = history.time.values
+    return float(abs(np.sum(history.values * np.exp(-2j * np.pi * frequency_hz * t))))
+
+
+def low_impact_histories():
+    ds = study("histories_low")
+    f = ds.frequency.isel(bat=0).values
+    for probe in ds.probe.values:
+        a = ds.acceleration.sel(probe=probe)
+        m1, m2, m3 = (spectrum(a, f[n]) for n in range(3))
+        assert m2 < 0.2 * max(m1, m3), (probe, m1, m2, m3)  # the impact is at the node of mode 2
+        # 6 cm sees mode 1 most; 16 cm, near mode 1's node, mode 3.
+        assert (m1 > m3) if probe < 0.1 else (m3 > m1), (probe, m1, m3)
+
+
+def max_abs(x):
+    return float(abs(x).max("time"))
+
+
+def handle():
+    ds = study("histories_handle")
+    at68 = ds.sel(z=0.685)
+    # Fig. 13: 13 cm is near the centre of percussion of the 68-cm impact (13.8 cm for this
+    # profile): almost no rigid part; 6 and 20 cm, on either side of it, recoil opposite ways.
+    rigid = at68.displacement - at68.vibration_displacement
+    r6, r13, r20 = (rigid.sel(probe=p) for p in (0.06, 0.13, 0.20))
+    assert max_abs(r13) < 0.15 * min(max_abs(r6), max_abs(r20)), (max_abs(r6), max_abs(r13), max_abs(r20))
+    assert float(r6[-1] * r20[-1]) < 0, (float(r6[-1]), float(r20[-1]))
+    # Fig. 15: the velocity at 13 cm passes 5 % of its later maximum only 0.4-0.8 ms after first
+    # contact, when over 90 % of the impulse is already delivered.
+    v = abs(at68.velocity.sel(probe=0.13))
+    first = int(np.argmax(v.values > 0.05 * float(v.max())))
+    onset = float(v.time[first])
+    impulse = np.concatenate([[0], np.cumsum(np.diff(at68.time) * 0.5 * (at68.force[1:].values + at68.force[:-1].values))])
+    delivered = impulse[first] / impulse[-1]
+    assert 0.4e-3 <= onset <= 0.8e-3, onset
+    assert delivered > 0.9, delivered
+    # Fig. 14: the vibration at 13 cm is smallest for the impact at 71 cm, of 61, 71 and 81 cm.
+    amplitude = [max_abs(ds.vibration_displacement.sel(z=z, probe=0.13)) for z in (0.615, 0.715, 0.815)]
+    assert amplitude[1] < min(amplitude[0], amplitude[2]), amplitude
+
+
 def modes():
     m = json.loads((Path(sys.argv[2]) / "modes.json").read_text())
     z = np.array(m["z_m"])
@@ -116,5 +175,6 @@ def modes():
 
 if __name__ == "__main__":
     figure = sys.argv[1]
-    {f.__name__: f for f in (low_impact, high_impact, e_eff, pivot, wall, toy, modes)}[figure]()
+    checks = (low_impact, high_impact, e_eff, pivot, wall, toy, modes, force_profile, low_impact_histories, handle)
+    {f.__name__: f for f in checks}[figure]()
     print(figure, "ok")

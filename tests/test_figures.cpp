@@ -1,5 +1,4 @@
-// The N2000 figures that need no time histories (scripts/figures): each figure's claim of
-// physics.md §6 checked on the numbers of the datasets it is drawn from (tests/check_figures.py),
+// The N2000 figures (scripts/figures): each figure's claim of physics.md §6 checked on the numbers of the datasets it is drawn from (tests/check_figures.py),
 // and the script end to end.
 #include <catch2/catch.hpp>
 
@@ -78,6 +77,20 @@ TEST_CASE("Fig. 18: the toy model's limits 1/3 and 5/7, Van Zandt wrong between 
   check_figure("toy", {"toy"});
 }
 
+TEST_CASE("Figs. 2 and 4: one g(omega tau) for 1-70 m/s, the F(u) loop's area is the dissipated energy",
+          "[figures]") {
+  check_figure("force_profile", {"force_profile"});
+}
+
+TEST_CASE("Fig. 9: at 6 and 16 cm a low impact at 72 cm shows modes 1 and 3, not 2", "[figures]") {
+  check_figure("low_impact_histories", {"histories_low"});
+}
+
+TEST_CASE("Figs. 13-15: no rigid motion at 13 cm, the handle moves late, least vibration for 71 cm",
+          "[figures]") {
+  check_figure("handle", {"histories_handle"});
+}
+
 TEST_CASE("scripts/figures writes a PNG for every N2000 item it can draw", "[figures]") {
   TempDir dir;
   const ProgramRun run = run_command("SWEETSPOT=" + std::string(SWEETSPOT_PROGRAM) + " " +
@@ -86,7 +99,9 @@ TEST_CASE("scripts/figures writes a PNG for every N2000 item it can draw", "[fig
   REQUIRE(run.exit_code == 0);
   for (const char* name : {"table2", "fig03_collision_time", "fig06_mode_shapes", "fig07_low_impact_vf",
                            "fig08_low_impact_energy", "fig10_high_impact_vf", "fig11_high_impact_energy",
-                           "fig12_e_eff", "fig16_pivot", "fig18_toy"}) {
+                           "fig12_e_eff", "fig16_pivot", "fig18_toy", "fig02_force_compression",
+                           "fig04_force_profile", "fig09_low_impact_acceleration", "fig13_handle_displacement",
+                           "fig14_vibration_13cm", "fig15_handle_velocity"}) {
     const std::filesystem::path png = dir.path / "out" / (std::string(name) + ".png");
     INFO(png);
     REQUIRE(std::filesystem::exists(png));

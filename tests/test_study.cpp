@@ -365,7 +365,16 @@ TEST_CASE("outputs: any ImpactResult field, mode_energy with a fixed mode count"
   CHECK_FALSE(compared.base.integrator.record_force);  // simulate_impact records it for Van Zandt alone
   std::string all;
   for (const std::string& name : output_names()) all += (all.empty() ? "\"" : ", \"") + name + "\"";
-  CHECK(dir.load(with(good_study, "[\"vf\", \"e_eff\"]", "[" + all + "]")).outputs == output_names());
+  // The histories at the probes need probes.
+  const std::string probed = with(good_study, "e0 = 0.5\n", "e0 = 0.5\nprobes = [0.13]\n");
+  const Study every = dir.load(with(probed, "[\"vf\", \"e_eff\"]", "[" + all + "]"));
+  CHECK(every.outputs == output_names());
+  CHECK(every.base.histories);
+  CHECK(every.base.force_response);
+  CHECK(every.base.mode_response);
+  CHECK(every.base.history.probes == std::vector<double>{0.13});
+  CHECK_FALSE(study.base.histories);  // only when asked
+  CHECK_FALSE(study.base.force_response);
 }
 
 TEST_CASE("each kind has its outputs and its defaults", "[study]") {

@@ -13,11 +13,7 @@
 
 namespace sweetspot {
 
-struct HistoryRequest {
-  std::vector<double> probes;  // points on the bat, m from the knob
-  double window = 3e-3;        // s from first touch
-  double step = 5e-6;          // s between samples
-};
+// HistoryRequest (the probes and the time grid) is in scene.hpp, where a scene asks for histories.
 
 // Per probe, per sample. "Total" motion is in the frame where the probe is initially at rest
 // (its initial velocity taken out); "vibration" leaves out the rigid modes altogether.

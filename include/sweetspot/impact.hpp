@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "sweetspot/collision.hpp"
+#include "sweetspot/histories.hpp"
 #include "sweetspot/modes.hpp"
 #include "sweetspot/scene.hpp"
 
@@ -49,7 +50,16 @@ struct ImpactResult {
   double modes_error = 0;           // modes = auto: estimated relative vf error of the dropped ones
   int contacts = 0;
   std::vector<ForceSample> force;   // only when the scene records the force
+  // Only when the scene asks for them (ImpactScene::histories, force_response, mode_response)
+  // and the collision ends ok.
+  Histories histories;
+  std::vector<double> force_response;  // g(omega tau) at each force_response_grid() value
+  std::vector<double> mode_response;   // R_n per kept vibrational mode
 };
+
+// The omega tau at which a study gives g(omega tau): 0, 0.1, ..., 20 (tau = collision_time),
+// far enough for g to fall to nothing (N2000 Fig. 4).
+std::vector<double> force_response_grid();
 
 // What every collision gives whatever was struck: status, message, vf, the times, u_max,
 // peak_force, impulse, contacts and energy.ball_dissipated. The caller adds what depends on the

@@ -1,6 +1,8 @@
 #pragma once
 // One impact scene (physics.md §4, §6): where the ball hits, the ball, the bat's swing, whether the
 // bat is pivoted, which modes are kept and how the collision is integrated.
+#include <cmath>
+#include <cstddef>
 #include <vector>
 
 #include "sweetspot/ball.hpp"
@@ -22,6 +24,19 @@ inline constexpr int all_modes = -1;
 // Keep the modes the collision can excite (see mode_selection.hpp), within mode_tolerance.
 inline constexpr int auto_modes = -2;
 
+// Bounds a history's samples, so that a mistyped step cannot exhaust memory.
+inline constexpr double max_history_samples = 1e5;
+
+// Time histories of an impact (histories.hpp): where on the bat, and the uniform time grid.
+struct HistoryRequest {
+  std::vector<double> probes;  // points on the bat, m from the knob
+  double window = 3e-3;        // s from first touch
+  double step = 5e-6;          // s between samples
+
+  // Samples from 0 to the window, both ends included when the step divides it.
+  std::size_t samples() const { return static_cast<std::size_t>(std::floor(window / step + 1e-9)) + 1; }
+};
+
 struct ImpactScene {
   double z = 0.7;             // impact location, m from the knob (snapped to a slice centre)
   Ball ball;
@@ -36,6 +51,13 @@ struct ImpactScene {
   // (vf_rigid) and Van Zandt's prescription (vf_van_zandt), which records the force profile.
   bool rigid_comparison = false;
   bool van_zandt_comparison = false;
+  // Also only when asked, and each records the force profile: the time histories of `history`,
+  // the force response g(omega tau) on force_response_grid() (impact.hpp) and R_n per kept
+  // vibrational mode (physics.md §5).
+  HistoryRequest history;
+  bool histories = false;
+  bool force_response = false;
+  bool mode_response = false;
 };
 
 // Throws InputError naming the offending scene value (z outside the bat, speeds not finite,

@@ -12,7 +12,9 @@
 //   [scene]  impact: bat (path relative to the study file), theory ("timoshenko" |
 //              "euler-bernoulli"), slices (4..4096; default the profile's own), z, ball_speed, e0,
 //              ball_mass, ball_radius, k1, a, center | cm_speed (exactly one), omega, pivot
-//              (bool), modes (count or "all"), integrator ("exact" (default), "rk4", "dopri"), dt (default: the integrator's
+//              (bool), modes (count or "all"), probes (a list of points on the bat, m from the
+//              knob), history_window (s, default 3e-3), history_step (s, default 5e-6; at most
+//              1e5 samples), integrator ("exact" (default), "rk4", "dopri"), dt (default: the integrator's
 //            own), tolerance (dopri), window
 //            wall: ball_speed (> 0), e0, ball_mass, ball_radius, k1, a, integrator, dt, tolerance, window
 //            toy: omega_tau (> 0)
@@ -33,13 +35,21 @@
 //            bat_translation, vibration, residual (model units, m = k = v_i = 1).
 //            "mode_energy" adds a mode dimension of length base.vibrational_modes, so it needs
 //            one mode count >= 1 for the whole study: modes a number in [scene] (or the default
-//            18), not "all" and not an axis.
-//   Every value is checked before any work: types, the rules of validate() in scene.cpp, z on
-//   every bat, modes within what every (bat, slices, theory) discretisation has, no repeated
+//            18), not "all" and not an axis; so does "mode_response" (R_n per kept vibrational
+//            mode, physics.md §5). Time histories, only when asked (histories.hpp):
+//            displacement, velocity, acceleration and vibration_* of each of them at the points
+//            `probes` (needed; with more than one a `probe` dimension), and force, compression,
+//            ball_position, each over a `time` dimension from first touch to history_window
+//            every history_step; force_response = g(omega tau) over an `omega_tau` dimension
+//            (0 to 20 by 0.1, tau = the point's collision_time).
+//            Failed points give NaN.
+//   Every value is checked before any work: types, the rules of validate() in scene.cpp, z and
+//   probes on every bat, modes within what every (bat, slices, theory) discretisation has, no repeated
 //   axis values, bats with distinct names, at most 1e6 values per axis and 1e9 points.
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "sweetspot/modes.hpp"
@@ -117,6 +127,12 @@ GridPoint grid_point(const Study& study, std::size_t index);
 std::size_t models(const Study& study);
 std::size_t task_point(const Study& study, std::size_t task);  // grid index of task `task`
 std::vector<std::size_t> task_order(const Study& study);       // task_point for every task
+
+// Outputs that are time histories at the probes (displacement, velocity, acceleration and their
+// vibration parts), and those plus the histories of the impact itself (force, compression,
+// ball_position): all add a `time` dimension.
+bool is_probe_history(std::string_view name);
+bool is_history(std::string_view name);
 
 // Output variables a study of a kind may ask for, and the list used when [output] gives none.
 const std::vector<std::string>& output_names(StudyKind kind = StudyKind::impact);
