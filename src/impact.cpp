@@ -1,6 +1,7 @@
 #include "sweetspot/impact.hpp"
 
 #include "sweetspot/formulas.hpp"
+#include "sweetspot/step_selection.hpp"
 
 namespace sweetspot {
 
@@ -77,6 +78,9 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& scene) 
   validate(scene, basis);
   const SceneGeometry g = scene_geometry(scene, basis);
   CollisionOptions options = scene.integrator;
+  if (scene.accuracy > 0)
+    options = options_for_accuracy(options, scene.accuracy, scene.ball, scene.ball_speed + g.bat_speed, g.recoil,
+                                   g.contact.count() ? g.contact.omega.maxCoeff() : 0.0);
   // Van Zandt and the force analyses drive the modes with the force profile.
   options.record_force |= scene.van_zandt_comparison || scene.histories || scene.force_response || scene.mode_response;
   const Collision c = collide(g.contact, scene.ball, scene.ball_speed, options);

@@ -109,6 +109,7 @@ void validate(const ImpactScene& scene, const ModalBasis& basis) {
   require_positive("dt", scene.integrator.dt);
   require_positive("tolerance", scene.integrator.tolerance);
   require_positive("mode_tolerance", scene.mode_tolerance);
+  if (scene.accuracy != 0) require_positive("accuracy", scene.accuracy);
   require_positive("window", scene.integrator.window);
   if (scene.histories) validate_history(scene.history, length);
   if (scene.pivoted && !scene.swing.about_center)

@@ -133,6 +133,8 @@ constexpr KeySpec keys[] = {
      [](GridPoint& p, double x) { p.scene.vibrational_modes = static_cast<int>(x); }},
     {"mode_tolerance", Type::number, "a finite number > 0 (relative vf error allowed the dropped modes)", positive,
      [](GridPoint& p, double x) { p.scene.mode_tolerance = x; }},
+    {"accuracy", Type::number, "a finite number > 0 (relative vf error the integration may add)", positive,
+     [](GridPoint& p, double x) { p.scene.accuracy = x; }},
     {"integrator", Type::integrator, "\"exact\", \"rk4\" or \"dopri\"", any,
      [](GridPoint& p, double x) { p.scene.integrator.method = static_cast<Method>(x); }, ball_kinds, 0, false},
     {"tolerance", Type::number, "a finite number > 0 (relative error per step, dopri)", positive,

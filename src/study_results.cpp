@@ -34,6 +34,7 @@ const std::map<std::string, Description>& descriptions() {
       {"modes_kept", {"1", "vibrational modes kept (modes = auto)"}},
       {"modes_error", {"1", "estimated relative vf error of the dropped modes (modes = auto)"}},
       {"mode_tolerance", {"1", "relative vf error allowed the dropped modes (modes = auto)"}},
+      {"accuracy", {"1", "relative vf error the integration may add (sets the step)"}},
       {"status", {"1", "outcome of the impact"}},
       {"energy_initial", {"J", "initial kinetic energy of ball and bat"}},
       {"energy_ball", {"J", "final kinetic energy of the ball"}},

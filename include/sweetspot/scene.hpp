@@ -45,6 +45,9 @@ struct ImpactScene {
   bool pivoted = false;       // held at swing.center by a constraint force (N2000 Fig. 16)
   int vibrational_modes = 18; // kept vibrational modes, or all_modes, or auto_modes
   double mode_tolerance = 1e-5; // auto_modes: relative exit-speed error allowed the dropped modes
+  // Relative exit-speed error the integration may add; > 0 chooses the step (or tolerance) from
+  // the scene's pulse (step_selection.hpp) instead of integrator.dt. 0: integrator as given.
+  double accuracy = 0;
   CollisionOptions integrator;
   // The closed forms of physics.md §5 at the same point, computed beside the collision only when
   // asked (a study asks through its outputs), NaN otherwise: the rigid bat's exit speed

@@ -150,6 +150,8 @@ void add_impact_command(CLI::App& app) {
   cmd->add_option("--mode-tolerance", o->scene.mode_tolerance,
                   "with --modes auto: relative vf error allowed the dropped modes")
       ->capture_default_str();
+  cmd->add_option("--accuracy", o->scene.accuracy,
+                  "relative vf error the integration may add: chooses the step (or tolerance) instead of --dt");
   add_ball_options(*cmd, o->scene.ball);
   add_integrator_options(*cmd, o->scene.integrator);
   cmd->add_flag("--json", o->json, "print one JSON object");

@@ -1,0 +1,89 @@
+// A stated accuracy chooses the step: the exit speed then errs by no more than that, whatever the
+// scene's pulse (fast or slow, few or all modes) and the method.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "program.hpp"
+#include "sweetspot/bat_file.hpp"
+#include "sweetspot/impact.hpp"
+
+using namespace sweetspot;
+
+namespace {
+
+const ModalBasis& r161() {
+  static const ModalBasis basis = compute_modes(load_bat(source_path("studies/bats/r161.toml")), BeamTheory::timoshenko);
+  return basis;
+}
+
+struct Scene {
+  const char* name;
+  ImpactScene scene;
+};
+
+ImpactScene high_impact(double z, int modes, double speed = 40) {
+  ImpactScene s;
+  s.z = z;
+  s.ball_speed = speed;
+  s.swing = {51, true, 0, 0.09};
+  s.vibrational_modes = modes;
+  return s;
+}
+
+ImpactScene low_impact(double z) {
+  ImpactScene s;
+  s.z = z;
+  s.ball_speed = 1;
+  s.ball.e0 = 0.66;
+  s.swing = {0, false, 0, 0};
+  return s;
+}
+
+double vf(ImpactScene s) {
+  const ImpactResult r = simulate_impact(r161(), s);
+  REQUIRE(r.status == CollisionStatus::ok);
+  return r.vf;
+}
+
+double reference(ImpactScene s) {
+  s.accuracy = 0;
+  s.integrator.method = Method::dopri;
+  s.integrator.dt = 1e-7;
+  s.integrator.tolerance = 1e-13;
+  return vf(s);
+}
+
+}  // namespace
+
+TEST_CASE("A stated accuracy bounds the exit speed's error for every method", "[step_selection]") {
+  const Scene scenes[] = {{"high impact 60.5 cm, all modes", high_impact(0.605, all_modes)},
+                          {"high impact 70.5 cm, 18 modes", high_impact(0.705, 18)},
+                          {"high impact 80.5 cm, 150 m/s", high_impact(0.805, 18, 150)},
+                          {"low impact 60.5 cm", low_impact(0.605)}};
+  for (const Scene& c : scenes) {
+    const double exact = reference(c.scene);
+    for (Method method : {Method::exact, Method::rk4, Method::dopri})
+      for (double accuracy : {1e-4, 1e-6}) {
+        if (method == Method::dopri && c.scene.vibrational_modes == all_modes) continue;  // explicit: slow
+        ImpactScene s = c.scene;
+        s.integrator.method = method;
+        s.accuracy = accuracy;
+        const double error = std::abs(vf(s) / exact - 1);
+        INFO(c.name << ", " << to_string(method) << ", accuracy " << accuracy << ": error " << error);
+        CHECK(error <= accuracy);
+      }
+  }
+}
+
+TEST_CASE("Looser accuracy takes longer steps", "[step_selection]") {
+  // Fewer force samples (one per step) at 1e-4 than at 1e-8.
+  ImpactScene s = high_impact(0.705, 18);
+  s.integrator.method = Method::exact;
+  s.integrator.record_force = true;
+  s.accuracy = 1e-4;
+  const auto loose = simulate_impact(r161(), s).force.size();
+  s.accuracy = 1e-8;
+  const auto tight = simulate_impact(r161(), s).force.size();
+  CHECK(loose * 4 < tight);
+}
