@@ -1,13 +1,11 @@
 // Study files: the shipped studies load, the grid runs row-major over the axes in the order
 // written, defaults and overrides land where they should, and every kind of bad study fails
 // before any work with one InputError line naming the file, the key and the value.
-#include <atomic>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
-#include <random>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -15,6 +13,8 @@
 #include <vector>
 
 #include "program.hpp"
+#include "temp_dir.hpp"
+#include "text_edit.hpp"
 #include "sweetspot/input_error.hpp"
 #include "sweetspot/study.hpp"
 
@@ -57,37 +57,12 @@ omega_tau = 2
 variables = ["vf", "status"]
 )";
 
-// `text` with its first occurrence of `from` replaced by `to` (which must be there).
-std::string with(std::string_view text, std::string_view from, std::string_view to) {
-  std::string out(text);
-  const auto at = out.find(from);
-  REQUIRE(at != std::string::npos);
-  return out.replace(at, from.size(), to);
-}
-
 // A fresh directory with a copy of studies/bats, for study files that name bats relative to
 // themselves; removed afterwards.
-struct StudyDir {
-  fs::path dir;
+struct StudyDir : TempDir {
+  const fs::path& dir = path;
 
-  StudyDir() {
-    static std::atomic<int> counter = 0;
-    dir = fs::temp_directory_path() /
-          ("sweetspot_study_" + std::to_string(std::random_device{}()) + "_" + std::to_string(counter++));
-    fs::create_directories(dir);
-    fs::copy(source_path("studies/bats"), dir / "bats", fs::copy_options::recursive);
-  }
-  ~StudyDir() {
-    std::error_code ignored;
-    fs::remove_all(dir, ignored);
-  }
-  StudyDir(const StudyDir&) = delete;
-  StudyDir& operator=(const StudyDir&) = delete;
-
-  fs::path write(const std::string& name, std::string_view text) const {
-    std::ofstream(dir / name, std::ios::binary) << text;
-    return dir / name;
-  }
+  StudyDir() { fs::copy(source_path("studies/bats"), path / "bats", fs::copy_options::recursive); }
   Study load(std::string_view text) const { return load_study(write("study.toml", text)); }
 };
 
