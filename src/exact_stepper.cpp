@@ -121,12 +121,11 @@ StepCoefficients::StepCoefficients(std::shared_ptr<const ModeResponse> r, const 
                                    double compliance)
     : response(std::move(r)), psi2_sum(psi.square().sum()) {
   const ModeResponse& m = *response;
-  pdA = psi * m.dA, pdB = psi * m.dB, pdC = psi * m.dC, pdD = psi * m.dD;
-  pqA = psi * m.qA, pqB = psi * m.qB, pqC = psi * m.qC, pqD = psi * m.qD;
-  gC = (psi * pdC).sum() + m.ball_d[2] + compliance;
-  gD = (psi * pdD).sum() + m.ball_d[3];
-  hC = (psi * pqC).sum() + m.ball_q[2];
-  hD = (psi * pqD).sum() + m.ball_q[3] + compliance;
+  const Eigen::ArrayXd psi2 = psi.square();
+  gC = (psi2 * m.dC).sum() + m.ball_d[2] + compliance;
+  gD = (psi2 * m.dD).sum() + m.ball_d[3];
+  hC = (psi2 * m.qC).sum() + m.ball_q[2];
+  hD = (psi2 * m.qD).sum() + m.ball_q[3] + compliance;
 }
 
 namespace {
@@ -239,8 +238,8 @@ void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, 
   const double ddu0 = -psi_w2a - f0 * (k.psi2_sum + 1 / state_.ball_mass());
 
   // Everything known before the end force: free rotation plus the response to F0 and F0'.
-  a_known_ = m.c * a + m.sn * v - f0 * k.pdA - r0 * k.pdB;
-  v_known_ = m.c * v - m.w2sn * a - f0 * k.pqA - r0 * k.pqB;
+  a_known_ = m.c * a + m.sn * v - psi_ * (f0 * m.dA + r0 * m.dB);
+  v_known_ = m.c * v - m.w2sn * a - psi_ * (f0 * m.qA + r0 * m.qB);
   const double s_known = y(0) + y(1) * m.h + f0 * m.ball_d[0] + r0 * m.ball_d[1];
   const double vb_known = y(1) + f0 * m.ball_q[0] + r0 * m.ball_q[1];
   const double u_known = (psi_ * a_known_).sum() - s_known;
@@ -255,8 +254,8 @@ void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, 
   out.resize(y.size());
   out(0) = s_known + f1 * m.ball_d[2] + r1 * m.ball_d[3];
   out(1) = vb_known + f1 * m.ball_q[2] + r1 * m.ball_q[3];
-  out.segment(2, n).array() = a_known_ - f1 * k.pdC - r1 * k.pdD;
-  out.segment(2 + n, n).array() = v_known_ - f1 * k.pqC - r1 * k.pqD;
+  out.segment(2, n).array() = a_known_ - psi_ * (f1 * m.dC + r1 * m.dD);
+  out.segment(2 + n, n).array() = v_known_ - psi_ * (f1 * m.qC + r1 * m.qD);
 }
 
 }  // namespace sweetspot::detail

@@ -35,8 +35,6 @@ struct StepCoefficients {
   std::shared_ptr<const ModeResponse> response;
   double gC = 0, gD = 0, hC = 0, hD = 0;
   double psi2_sum = 0;  // sum psi_n^2: how the force accelerates the compression
-  // psi_n times each forced response, so that a step is a few fused vector operations.
-  Eigen::ArrayXd pdA, pdB, pdC, pdD, pqA, pqB, pqC, pqD;
 
   StepCoefficients() = default;
   StepCoefficients(std::shared_ptr<const ModeResponse> r, const Eigen::ArrayXd& psi, double compliance);
