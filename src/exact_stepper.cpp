@@ -131,21 +131,24 @@ StepCoefficients::StepCoefficients(std::shared_ptr<const ModeResponse> r, const 
 namespace {
 
 // The responses at the nominal step and at the graded first steps are the same for every impact
-// on one modal basis (only the mode shapes at the contact differ), so each thread keeps the last
-// few it made.
+// that keeps the same modes (only the mode shapes at the contact differ), so each thread keeps
+// them, keyed by step, ball mass and frequencies. With modes = auto the kept set varies from
+// impact to impact; a few thousand sets cover a study, and the cache starts over past that.
 std::shared_ptr<const ModeResponse> cached_response(const Eigen::ArrayXd& omega, double h, double ball_mass) {
-  struct Entry {
-    std::shared_ptr<const ModeResponse> response;
-    double ball_mass;
-  };
-  thread_local std::vector<Entry> cache;
-  for (const Entry& e : cache)
-    if (e.response->h == h && e.ball_mass == ball_mass && e.response->omega.size() == omega.size() &&
-        (e.response->omega == omega).all())
-      return e.response;
-  if (cache.size() >= 16) cache.erase(cache.begin());
-  cache.push_back({std::make_shared<ModeResponse>(omega, h, ball_mass, true), ball_mass});
-  return cache.back().response;
+  std::size_t key = std::hash<double>()(h) ^ (std::hash<double>()(ball_mass) << 1);
+  for (double w : omega) key = key * 1099511628211ull ^ std::hash<double>()(w);
+  thread_local std::unordered_multimap<std::size_t, std::pair<double, std::shared_ptr<const ModeResponse>>> cache;
+  const auto [first, last] = cache.equal_range(key);
+  for (auto it = first; it != last; ++it) {
+    const auto& [mass, response] = it->second;
+    if (response->h == h && mass == ball_mass && response->omega.size() == omega.size() &&
+        (response->omega == omega).all())
+      return response;
+  }
+  if (cache.size() >= 4096) cache.clear();
+  auto response = std::make_shared<const ModeResponse>(omega, h, ball_mass, true);
+  cache.emplace(key, std::make_pair(ball_mass, response));
+  return response;
 }
 
 }  // namespace
