@@ -6,7 +6,10 @@ namespace sweetspot {
 
 double ContactForce::operator()(double u) const {
   if (u <= 0) return 0;  // also guards round-off: no tension, no pow of a negative number
-  return expanding_ ? f_max_ * std::pow(u / u_max_, b_) : ball_.k1 * std::pow(u, ball_.a);
+  if (u == last_u_) return last_force_;
+  last_u_ = u;
+  last_force_ = expanding_ ? f_max_ * std::pow(u / u_max_, b_) : ball_.k1 * std::pow(u, ball_.a);
+  return last_force_;
 }
 
 double ContactForce::stiffness(double u) const {
@@ -15,6 +18,7 @@ double ContactForce::stiffness(double u) const {
 }
 
 void ContactForce::start_expansion(double u_max) {
+  last_u_ = -1;  // the branch changes
   u_max_ = u_max;
   f_max_ = ball_.k1 * std::pow(u_max, ball_.a);
   expanding_ = true;

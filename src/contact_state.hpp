@@ -32,6 +32,14 @@ class ContactState {
   // geometric one, u_ball + c F(u_ball) = u (the same when no mode was dropped, c = 0).
   double ball_compression(double u, const ContactForce& law) const {
     if (compliance_ == 0 || u <= 0) return u;
+    // Asked again for the same state (samples, step limits, the next step's start): reuse.
+    if (u == last_u_ && &law == last_law_ && law.expanding() == last_expanding_ && law.u_max() == last_u_max_)
+      return last_ball_u_;
+    last_u_ = u, last_law_ = &law, last_expanding_ = law.expanding(), last_u_max_ = law.u_max();
+    last_ball_u_ = solve_ball_compression(u, law);
+    return last_ball_u_;
+  }
+  double solve_ball_compression(double u, const ContactForce& law) const {
     double lo = 0, hi = u, x = u;
     for (int iteration = 0; iteration < 100; ++iteration) {
       const double f = law(x), g = x + compliance_ * f - u, slope = 1 + compliance_ * law.exponent() * f / x;
@@ -82,6 +90,9 @@ class ContactState {
   Eigen::ArrayXd omega2_;
   double compliance_;
   double mobility_;
+  mutable double last_u_ = -1, last_ball_u_ = 0, last_u_max_ = 0;
+  mutable const ContactForce* last_law_ = nullptr;
+  mutable bool last_expanding_ = false;
 };
 
 // What a stepper says of an attempted step: adaptive ones may reject it and propose a new size.

@@ -42,6 +42,9 @@ class ContactForce {
   bool expanding_ = false;
   double u_max_ = 0;
   double f_max_ = 0;
+  // The integrators ask for the force at the same compression several times a step (the step's
+  // end is the next one's start, samples, step limits); the last answer saves a pow.
+  mutable double last_u_ = -1, last_force_ = 0;
 };
 
 }  // namespace sweetspot
