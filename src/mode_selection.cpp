@@ -57,25 +57,24 @@ ModeSelection select_modes(const Eigen::VectorXd& omega, const Eigen::VectorXd& 
   const double pulse_omega = 4 * std::numbers::pi / s.pulse_duration;
 
   const int n = static_cast<int>(omega.size());
-  std::vector<int> order;
-  std::vector<double> take(n, 0.0);
+  std::vector<std::pair<double, int>> takes;  // what dropping each mode costs, and the mode
+  takes.reserve(n);
   for (int i = 2; i < n; ++i) {
     const double ratio = pulse_omega / omega(i), psi2 = psi(i) * psi(i), lag = std::min(1.0, ratio * ratio);
-    take[i] = recoil_sensitivity * ball.mass * psi2 * response_bound(omega(i), s.pulse_duration) +
-              compliance_sensitivity * psi2 / (omega(i) * omega(i)) * lag;
-    order.push_back(i);
+    takes.emplace_back(recoil_sensitivity * ball.mass * psi2 * response_bound(omega(i), s.pulse_duration) +
+                           compliance_sensitivity * psi2 / (omega(i) * omega(i)) * lag,
+                       i);
   }
   // Drop the modes that take least while their sum stays within the tolerance.
-  std::ranges::sort(order, [&](int a, int b) { return take[a] < take[b]; });
-  std::vector<bool> dropped(n, false);
-  for (int i : order) {
-    if (s.error_estimate + take[i] > tolerance) break;
-    s.error_estimate += take[i];
+  std::ranges::sort(takes);
+  std::size_t dropped = 0;
+  for (; dropped < takes.size() && s.error_estimate + takes[dropped].first <= tolerance; ++dropped) {
+    const int i = takes[dropped].second;
+    s.error_estimate += takes[dropped].first;
     s.residual_compliance += psi(i) * psi(i) / (omega(i) * omega(i));
-    dropped[i] = true;
   }
-  for (int i = 2; i < n; ++i)
-    if (!dropped[i]) s.kept.push_back(i);
+  for (std::size_t k = dropped; k < takes.size(); ++k) s.kept.push_back(takes[k].second);
+  std::ranges::sort(s.kept);
   return s;
 }
 
