@@ -65,15 +65,21 @@ ModeSelection select_modes(const Eigen::VectorXd& omega, const Eigen::VectorXd& 
                            compliance_sensitivity * psi2 / (omega(i) * omega(i)) * lag,
                        i);
   }
-  // Drop the modes that take least while their sum stays within the tolerance.
-  std::ranges::sort(takes);
-  std::size_t dropped = 0;
-  for (; dropped < takes.size() && s.error_estimate + takes[dropped].first <= tolerance; ++dropped) {
-    const int i = takes[dropped].second;
-    s.error_estimate += takes[dropped].first;
+  // Drop the modes that take least while their sum stays within the tolerance: equivalently,
+  // keep the ones that take most until what is left fits. Few are kept, so a heap finds them.
+  double left = 0;
+  for (const auto& t : takes) left += t.first;
+  std::ranges::make_heap(takes);
+  while (!takes.empty() && left > tolerance) {
+    std::ranges::pop_heap(takes);
+    left -= takes.back().first;
+    s.kept.push_back(takes.back().second);
+    takes.pop_back();
+  }
+  for (const auto& [take, i] : takes) {
+    s.error_estimate += take;
     s.residual_compliance += psi(i) * psi(i) / (omega(i) * omega(i));
   }
-  for (std::size_t k = dropped; k < takes.size(); ++k) s.kept.push_back(takes[k].second);
   std::ranges::sort(s.kept);
   return s;
 }
