@@ -2,6 +2,8 @@
 // Internal: the state of ball and modes during a collision, shared by the steppers.
 // y = [s, v, a_0..a_{n-1}, a_0'..a_{n-1}'], s the ball's displacement from first touch (+y).
 #include <Eigen/Dense>
+#include <array>
+#include <cmath>
 
 #include "sweetspot/ball.hpp"
 #include "sweetspot/collision.hpp"
@@ -24,9 +26,16 @@ class ContactState {
 
   // The geometric compression u = y_k - s: the ball touches while u > 0. Events (maximum
   // compression, separation) are its zero crossings and those of u'.
-  double compression(const Eigen::VectorXd& y) const { return body_.psi.dot(y.segment(2, n_)) - y(0); }
+  double compression(const Eigen::VectorXd& y) const {
+    return known(y) ? known_u_ : body_.psi.dot(y.segment(2, n_)) - y(0);
+  }
   double compression_rate(const Eigen::VectorXd& y) const {
-    return body_.psi.dot(y.segment(2 + n_, n_)) - y(1);
+    return known(y) ? known_du_ : body_.psi.dot(y.segment(2 + n_, n_)) - y(1);
+  }
+  // A stepper that knows u and u' of a state it made in closed form leaves them here: events,
+  // samples and the next step ask for them again, and then cost no dot product over the modes.
+  void remember(const Eigen::VectorXd& y, double u, double du) const {
+    known_key_ = key(y), known_u_ = u, known_du_ = du;
   }
   // The ball's own compression: the dropped modes' static yield c F takes up part of the
   // geometric one, u_ball + c F(u_ball) = u (the same when no mode was dropped, c = 0).
@@ -91,6 +100,14 @@ class ContactState {
   double compliance_;
   double mobility_;
   mutable double last_u_ = -1, last_ball_u_ = 0, last_u_max_ = 0;
+  // The state remembered (ball position and speed, first and last modal coordinates) and its u, u'.
+  using Key = std::array<double, 4>;
+  Key key(const Eigen::VectorXd& y) const {
+    return {y(0), y(1), n_ ? y(2) : 0.0, n_ ? y(y.size() - 1) : 0.0};
+  }
+  bool known(const Eigen::VectorXd& y) const { return known_key_ == key(y); }
+  mutable Key known_key_ = {std::nan(""), 0, 0, 0};
+  mutable double known_u_ = 0, known_du_ = 0;
   mutable const ContactForce* last_law_ = nullptr;
   mutable bool last_expanding_ = false;
 };

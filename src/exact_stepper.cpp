@@ -124,10 +124,12 @@ StepCoefficients::StepCoefficients(std::shared_ptr<const ModeResponse> r, const 
     : response(std::move(r)), psi2_sum(psi.square().sum()) {
   const ModeResponse& m = *response;
   const Eigen::ArrayXd psi2 = psi.square();
-  gC = (psi2 * m.dC).sum() + m.ball_d[2] + compliance;
-  gD = (psi2 * m.dD).sum() + m.ball_d[3];
-  hC = (psi2 * m.qC).sum() + m.ball_q[2];
-  hD = (psi2 * m.qD).sum() + m.ball_q[3] + compliance;
+  mode_dC = (psi2 * m.dC).sum(), mode_dD = (psi2 * m.dD).sum();
+  mode_qC = (psi2 * m.qC).sum(), mode_qD = (psi2 * m.qD).sum();
+  gC = mode_dC + m.ball_d[2] + compliance;
+  gD = mode_dD + m.ball_d[3];
+  hC = mode_qC + m.ball_q[2];
+  hD = mode_qD + m.ball_q[3] + compliance;
 }
 
 namespace {
@@ -247,7 +249,8 @@ void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, 
   const auto v = y.segment(2 + n, n).array();
 
   // The start: the ball's compression, its rate and acceleration, the force and its rate.
-  const double psi_a = (psi_ * a).sum(), psi_v = (psi_ * v).sum(), psi_w2a = (psi_w2_ * a).sum();
+  const double psi_a = state_.compression(y) + y(0), psi_v = state_.compression_rate(y) + y(1);
+  const double psi_w2a = (psi_w2_ * a).sum();
   const double u0 = state_.ball_compression(psi_a - y(0), law), du0_geometric = psi_v - y(1);
   const double f0 = law(u0), k0 = u0 > 0 ? law.exponent() * f0 / u0 : 0.0;
   const double du0 = du0_geometric / (1 + state_.compliance() * k0), r0 = k0 * du0;
@@ -272,6 +275,9 @@ void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, 
   out(1) = vb_known + f1 * m.ball_q[2] + r1 * m.ball_q[3];
   out.segment(2, n).array() = a_known_ - psi_ * (f1 * m.dC + r1 * m.dD);
   out.segment(2 + n, n).array() = v_known_ - psi_ * (f1 * m.qC + r1 * m.qD);
+  // The end's u and u' follow from the sums already made, without another pass over the modes.
+  state_.remember(out, u_known + s_known - f1 * k.mode_dC - r1 * k.mode_dD - out(0),
+                  du_known + vb_known - f1 * k.mode_qC - r1 * k.mode_qD - out(1));
 }
 
 }  // namespace sweetspot::detail

@@ -35,6 +35,8 @@ struct StepCoefficients {
   std::shared_ptr<const ModeResponse> response;
   double gC = 0, gD = 0, hC = 0, hD = 0;
   double psi2_sum = 0;  // sum psi_n^2: how the force accelerates the compression
+  // The modes' part alone of those sums (no ball, no compliance): sum psi^2 dC, dD, qC, qD.
+  double mode_dC = 0, mode_dD = 0, mode_qC = 0, mode_qD = 0;
 
   StepCoefficients() = default;
   StepCoefficients(std::shared_ptr<const ModeResponse> r, const Eigen::ArrayXd& psi, double compliance);
