@@ -160,7 +160,7 @@ std::shared_ptr<const ModeResponse> cached_response(const Eigen::ArrayXd& omega,
 }  // namespace
 
 ExactStepper::ExactStepper(const ContactState& state, const CollisionOptions& options)
-    : state_(state), psi_(state.body().psi.array()),
+    : state_(state), psi_(state.body().psi.array()), psi_w2_(psi_ * state.omega2()),
       nominal_(cached_response(state.body().omega.array(), options.dt, state.ball_mass()), psi_,
                state.compliance()),
       a_known_(state.modes()), v_known_(state.modes()) {}
@@ -250,9 +250,11 @@ void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, 
 
   // The start: the ball's compression, its rate and acceleration, the force and its rate.
   const double psi_a = state_.compression(y) + y(0), psi_v = state_.compression_rate(y) + y(1);
+  const double psi_w2a = (psi_w2_ * a).sum();
   const double u0 = state_.ball_compression(psi_a - y(0), law), du0_geometric = psi_v - y(1);
   const double f0 = law(u0), k0 = u0 > 0 ? law.exponent() * f0 / u0 : 0.0;
   const double du0 = du0_geometric / (1 + state_.compliance() * k0), r0 = k0 * du0;
+  const double ddu0 = -psi_w2a - f0 * (k.psi2_sum + 1 / state_.ball_mass());
 
   // Everything known before the end force: free rotation plus the response to F0 and F0'.
   a_known_ = m.c * a + m.sn * v - psi_ * (f0 * m.dA + r0 * m.dB);
@@ -262,9 +264,6 @@ void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, 
   const double u_known = (psi_ * a_known_).sum() - s_known;
   const double du_known = (psi_ * v_known_).sum() - vb_known;
 
-  // Newton starts from the start's Taylor line, bent by the last step's change of u'.
-  const double ddu0 = last_h_ > 0 ? (du0 - last_du0_) / last_h_ : 0.0;
-  last_du0_ = du0, last_h_ = m.h;
   const double guess = u0 + m.h * du0 + 0.5 * m.h * m.h * ddu0;
   const double u1 = end_compression(k, law, u_known, du_known, guess);
   const double f1 = law(u1);

@@ -66,11 +66,10 @@ class ExactStepper {
   void advance(const StepCoefficients& k, const Eigen::VectorXd& y, const ContactForce& law, Eigen::VectorXd& out);
 
   const ContactState& state_;
-  Eigen::ArrayXd psi_;  // mode shapes at the contact
+  Eigen::ArrayXd psi_, psi_w2_;  // mode shapes at the contact, and times omega^2
   StepCoefficients nominal_, other_;
   std::vector<StepCoefficients> graded_;
   Eigen::ArrayXd a_known_, v_known_;
-  double last_du0_ = 0, last_h_ = 0;  // the previous step's start, for Newton's first guess
 };
 
 }  // namespace sweetspot::detail
