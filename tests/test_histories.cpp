@@ -8,6 +8,7 @@
 #include <complex>
 #include <numbers>
 
+#include "n2000_scenes.hpp"
 #include "program.hpp"
 #include "sweetspot/bat_file.hpp"
 #include "sweetspot/histories.hpp"
@@ -24,11 +25,7 @@ const ModalBasis& r161() {
 
 // N2000's high-impact swing (Figs. 13-15) or the low-impact scene (Fig. 9), exact stepping.
 ImpactScene scene(double z, bool high) {
-  ImpactScene s;
-  s.z = z;
-  s.ball_speed = high ? 40 : 1;
-  s.ball.e0 = high ? 0.5 : 0.66;
-  s.swing = high ? Swing{51, true, 0, 0.09} : Swing{0, false, 0, 0};
+  ImpactScene s = high ? n2000_high_impact(z) : n2000_low_impact(z);
   s.integrator.method = Method::exact;
   s.integrator.record_force = true;
   return s;

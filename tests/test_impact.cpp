@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "n2000_scenes.hpp"
 #include "program.hpp"
 #include "sweetspot/bat_file.hpp"
 #include "sweetspot/formulas.hpp"
@@ -20,27 +21,8 @@ const ModalBasis& r161_modes() {
   return basis;
 }
 
-// N2000 Figs. 10-12: ball 40 m/s, bat rotating at 51 rad/s about a point 9 cm from the knob.
-ImpactScene high_impact(double z, int modes = 18) {
-  ImpactScene s;
-  s.z = z;
-  s.ball.e0 = 0.5;
-  s.ball_speed = 40;
-  s.swing = {51, true, 0, 0.09};
-  s.vibrational_modes = modes;
-  return s;
-}
-
-// N2000 Figs. 7-9: ball 1 m/s on the bat at rest, e0 = 0.66.
-ImpactScene low_impact(double z, int modes = 18) {
-  ImpactScene s;
-  s.z = z;
-  s.ball.e0 = 0.66;
-  s.ball_speed = 1;
-  s.swing = {0, false, 0, 0};
-  s.vibrational_modes = modes;
-  return s;
-}
+ImpactScene high_impact(double z, int modes = 18) { return n2000_high_impact(z, modes); }
+ImpactScene low_impact(double z, int modes = 18) { return n2000_low_impact(z, modes); }
 
 double rigid_vf(const ImpactScene& scene) {
   const SceneGeometry g = scene_geometry(scene, r161_modes());

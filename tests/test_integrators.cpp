@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "n2000_scenes.hpp"
 #include "program.hpp"
 #include "sweetspot/bat_file.hpp"
 #include "sweetspot/formulas.hpp"
@@ -20,11 +21,7 @@ const ModalBasis& r161() {
 }
 
 ImpactScene high_impact(double z, int modes, Method method, double dt, double tolerance = 1e-9) {
-  ImpactScene s;
-  s.z = z;
-  s.ball_speed = 40;
-  s.swing = {51, true, 0, 0.09};
-  s.vibrational_modes = modes;
+  ImpactScene s = n2000_high_impact(z, modes);
   s.integrator.method = method;
   s.integrator.dt = dt;
   s.integrator.tolerance = tolerance;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "n2000_scenes.hpp"
 #include "program.hpp"
 #include "sweetspot/bat_file.hpp"
 #include "sweetspot/impact.hpp"
@@ -19,11 +20,8 @@ const ModalBasis& r161() {
 }
 
 ImpactResult impact(double z, double speed, int modes, double tolerance = 1e-5) {
-  ImpactScene s;
-  s.z = z;
+  ImpactScene s = n2000_high_impact(z, modes);
   s.ball_speed = speed;
-  s.swing = {51, true, 0, 0.09};
-  s.vibrational_modes = modes;
   s.mode_tolerance = tolerance;
   s.integrator.method = Method::exact;
   s.integrator.dt = 2e-6;  // integration error far below the tolerances tested

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "n2000_scenes.hpp"
 #include "program.hpp"
 #include "sweetspot/bat_file.hpp"
 #include "sweetspot/impact.hpp"
@@ -23,22 +24,12 @@ struct Scene {
 };
 
 ImpactScene high_impact(double z, int modes, double speed = 40) {
-  ImpactScene s;
-  s.z = z;
+  ImpactScene s = n2000_high_impact(z, modes);
   s.ball_speed = speed;
-  s.swing = {51, true, 0, 0.09};
-  s.vibrational_modes = modes;
   return s;
 }
 
-ImpactScene low_impact(double z) {
-  ImpactScene s;
-  s.z = z;
-  s.ball_speed = 1;
-  s.ball.e0 = 0.66;
-  s.swing = {0, false, 0, 0};
-  return s;
-}
+ImpactScene low_impact(double z) { return n2000_low_impact(z); }
 
 double vf(ImpactScene s) {
   const ImpactResult r = simulate_impact(r161(), s);

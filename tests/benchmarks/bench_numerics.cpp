@@ -9,6 +9,7 @@
 
 #include "sweetspot/bat_file.hpp"
 #include "sweetspot/impact.hpp"
+#include "../n2000_scenes.hpp"
 #include "timing.hpp"
 
 using namespace sweetspot;
@@ -16,11 +17,7 @@ using namespace sweetspot;
 namespace {
 
 ImpactScene scene(double z, int modes, Method method, double dt) {
-  ImpactScene s;
-  s.z = z;
-  s.ball_speed = 40;
-  s.swing = {51, true, 0, 0.09};
-  s.vibrational_modes = modes;
+  ImpactScene s = n2000_high_impact(z, modes);
   s.integrator.method = method;
   s.integrator.dt = dt;
   return s;
