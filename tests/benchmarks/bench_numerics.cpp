@@ -57,8 +57,9 @@ int main(int argc, char** argv) {
   const double z = 0.605, target = 1e-6;
   const double reference = reference_vf(basis, z);
   const double rk4_stable = 0.999 * rk4_stability_limit / basis.omega.maxCoeff();
-  const double exact_dt = largest_step(basis, z, Method::exact, {80e-6, 60e-6, 40e-6, 30e-6, 20e-6, 15e-6, 10e-6},
-                                       target, reference);
+  std::vector<double> exact_steps;  // 80 us down by 5 % at a time
+  for (double dt = 80e-6; dt > 5e-6; dt *= 0.95) exact_steps.push_back(dt);
+  const double exact_dt = largest_step(basis, z, Method::exact, exact_steps, target, reference);
   const double rk4_dt = largest_step(basis, z, Method::rk4, {rk4_stable, rk4_stable / 2, rk4_stable / 4}, target,
                                      reference);
   const double exact_time = seconds_per_impact(basis, {scene(z, all_modes, Method::exact, exact_dt)});
