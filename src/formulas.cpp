@@ -54,16 +54,21 @@ double lossless_exit_speed(double response_sum, double ball_speed, double bat_sp
   return ((1 - response_sum) * ball_speed + 2 * bat_speed) / (1 + response_sum);
 }
 
-double force_response(const std::vector<ForceSample>& force, double omega) {
+std::vector<double> force_responses(const std::vector<ForceSample>& force, const std::vector<double>& omegas) {
   const std::complex<double> i(0, 1);
-  const std::complex<double> transform = integrate(force, [&](double t) { return std::exp(i * omega * t); });
-  return std::norm(transform / impulse(force));
+  const double j = impulse(force);
+  std::vector<double> g;
+  for (double omega : omegas)
+    g.push_back(std::norm(integrate(force, [&](double t) { return std::exp(i * omega * t); }) / j));
+  return g;
 }
 
+double force_response(const std::vector<ForceSample>& force, double omega) { return force_responses(force, {omega})[0]; }
+
 std::vector<double> mode_responses(const ModalContact& body, double ball_mass, const std::vector<ForceSample>& force) {
+  const std::vector<double> g = force_responses(force, {body.omega.data(), body.omega.data() + body.count()});
   std::vector<double> r;
-  for (int n = 0; n < body.count(); ++n)
-    r.push_back(ball_mass * body.psi(n) * body.psi(n) * force_response(force, body.omega(n)));
+  for (int n = 0; n < body.count(); ++n) r.push_back(ball_mass * body.psi(n) * body.psi(n) * g[n]);
   return r;
 }
 

@@ -36,9 +36,11 @@ void add_force_analyses(const ImpactScene& scene, const ModalBasis& basis, const
                         ImpactResult& r) {
   if (scene.histories)
     r.histories = impact_histories(basis, g, scene.ball, scene.ball_speed, c.force, scene.history);
-  if (scene.force_response)
-    for (const double omega_tau : force_response_grid())
-      r.force_response.push_back(force_response(c.force, omega_tau / c.collision_time));
+  if (scene.force_response) {
+    std::vector<double> omegas;
+    for (const double omega_tau : force_response_grid()) omegas.push_back(omega_tau / c.collision_time);
+    r.force_response = force_responses(c.force, omegas);
+  }
   if (scene.mode_response) {
     const std::vector<double> all = mode_responses(g.contact, scene.ball.mass, c.force);
     r.mode_response.assign(all.begin() + rigid_modes(scene), all.end());

@@ -19,6 +19,8 @@ double lossless_exit_speed(double response_sum, double ball_speed, double bat_sp
 // g(omega) = |integral Fhat(t) e^(i omega t) dt|^2 with Fhat = F / impulse, from force samples
 // (cubic Hermite between samples, Gauss-Legendre on each segment).
 double force_response(const std::vector<ForceSample>& force, double omega);
+// g at each of several omegas, the impulse integrated once.
+std::vector<double> force_responses(const std::vector<ForceSample>& force, const std::vector<double>& omegas);
 
 // R_n = m psi_n^2 g(omega_n) for every mode of the body.
 std::vector<double> mode_responses(const ModalContact& body, double ball_mass, const std::vector<ForceSample>& force);
