@@ -34,8 +34,13 @@ class ContactState {
   }
   // A stepper that knows u and u' of a state it made in closed form leaves them here: events,
   // samples and the next step ask for them again, and then cost no dot product over the modes.
+  // It may know the ball's own compression too (it solved for it): that saves solving again.
   void remember(const Eigen::VectorXd& y, double u, double du) const {
     known_key_ = key(y), known_u_ = u, known_du_ = du;
+  }
+  void remember(const Eigen::VectorXd& y, double u, double du, const ContactForce& law, double ball_u) const {
+    remember(y, u, du);
+    remember_ball_compression(u, law, ball_u);
   }
   // The ball's own compression: the dropped modes' static yield c F takes up part of the
   // geometric one, u_ball + c F(u_ball) = u (the same when no mode was dropped, c = 0).
@@ -44,8 +49,7 @@ class ContactState {
     // Asked again for the same state (samples, step limits, the next step's start): reuse.
     if (u == last_u_ && &law == last_law_ && law.expanding() == last_expanding_ && law.u_max() == last_u_max_)
       return last_ball_u_;
-    last_u_ = u, last_law_ = &law, last_expanding_ = law.expanding(), last_u_max_ = law.u_max();
-    last_ball_u_ = solve_ball_compression(u, law);
+    remember_ball_compression(u, law, solve_ball_compression(u, law));
     return last_ball_u_;
   }
   double solve_ball_compression(double u, const ContactForce& law) const {
@@ -58,6 +62,10 @@ class ContactState {
       x = next > lo && next < hi ? next : (lo + hi) / 2;
     }
     return x;
+  }
+  void remember_ball_compression(double u, const ContactForce& law, double ball_u) const {
+    last_u_ = u, last_law_ = &law, last_expanding_ = law.expanding(), last_u_max_ = law.u_max();
+    last_ball_u_ = ball_u;
   }
   double force(const Eigen::VectorXd& y, const ContactForce& law) const {
     return law(ball_compression(compression(y), law));

@@ -27,12 +27,14 @@ struct ModeResponse {
   ModeResponse(const Eigen::ArrayXd& omega, double h, double ball_mass, bool memoize = false);
 };
 
-// A response with the sums over the contact point's mode shapes that tie the ball's compression
-// u1 and its rate at the end of the step to F1 and F1': u1 = known - gC F1 - gD F1',
-// u1' = known - hC F1 - hD F1' (the residual compliance c of dropped modes adds c F1 to the first
-// and c F1' to the second).
+// A response for one contact point: the force drives mode n as -psi_n F, so each mode's response
+// is kept times psi_n; and the sums over the modes that tie the ball's compression u1 and its rate
+// at the end of the step to F1 and F1': u1 = known - gC F1 - gD F1', u1' = known - hC F1 - hD F1'
+// (the residual compliance c of dropped modes adds c F1 to the first and c F1' to the second).
 struct StepCoefficients {
   std::shared_ptr<const ModeResponse> response;
+  enum Column { dA, dB, qA, qB, dC, dD, qC, qD };
+  Eigen::ArrayXXd driven;  // psi_n times the response to A, B, C, D: one column each (Column)
   double gC = 0, gD = 0, hC = 0, hD = 0;
   double psi2_sum = 0;  // sum psi_n^2: how the force accelerates the compression
   // The modes' part alone of those sums (no ball, no compliance): sum psi^2 dC, dD, qC, qD.
@@ -69,7 +71,6 @@ class ExactStepper {
   Eigen::ArrayXd psi_, psi_w2_;  // mode shapes at the contact, and times omega^2
   StepCoefficients nominal_, other_;
   std::vector<StepCoefficients> graded_;
-  Eigen::ArrayXd a_known_, v_known_;
 };
 
 }  // namespace sweetspot::detail
