@@ -47,6 +47,13 @@ double hermite_integral(const ForceSample& p, const ForceSample& q, double tau) 
               (-s4 / 2 + s3) * q.force + (s4 / 4 - s3 / 3) * h * q.rate);
 }
 
+// The cubic Hermite interpolant of F itself at tau into the segment.
+double hermite_value(const ForceSample& p, const ForceSample& q, double tau) {
+  const double h = q.t - p.t, s = tau / h, s2 = s * s, s3 = s2 * s;
+  return (2 * s3 - 3 * s2 + 1) * p.force + (s3 - 2 * s2 + s) * h * p.rate + (-2 * s3 + 3 * s2) * q.force +
+         (s3 - s2) * h * q.rate;
+}
+
 std::string format(const char* pattern, double x, double y) {
   char buf[256];
   std::snprintf(buf, sizeof buf, pattern, x, y);
@@ -291,12 +298,20 @@ double impulse_time(const std::vector<ForceSample>& force, double fraction) {
       delivered += segment;
       continue;
     }
-    double lo = 0, hi = q.t - p.t;
-    for (int iteration = 0; iteration < 100; ++iteration) {
-      const double mid = (lo + hi) / 2;
-      (delivered + hermite_integral(p, q, mid) < target ? lo : hi) = mid;
+    // The impulse is a quartic in time over the segment, its slope the force: Newton, kept
+    // inside the bracket by bisection where the interpolant's force dips to zero or below.
+    const double h = q.t - p.t;
+    double lo = 0, hi = h, tau = segment > 0 ? (target - delivered) / segment * h : h / 2;
+    for (int iteration = 0; iteration < 100 && hi - lo > 1e-15 * h; ++iteration) {
+      const double excess = delivered + hermite_integral(p, q, tau) - target;
+      (excess < 0 ? lo : hi) = tau;
+      const double rate = hermite_value(p, q, tau), step = rate > 0 ? excess / rate : 0.0;
+      double next = tau - step;
+      if (!(next > lo && next < hi) || rate <= 0) next = (lo + hi) / 2;
+      if (std::abs(step) <= 1e-15 * h && rate > 0) return p.t + next;
+      tau = next;
     }
-    return p.t + (lo + hi) / 2;
+    return p.t + tau;
   }
   return force.empty() ? 0.0 : force.back().t;
 }

@@ -139,9 +139,9 @@ namespace {
 // that keeps the same modes (only the mode shapes at the contact differ), so each thread keeps
 // them, keyed by step, ball mass and frequencies. With modes = auto the kept set varies from
 // impact to impact, and event steps vary too; the cache starts over when it grows large.
-std::shared_ptr<const ModeResponse> cached_response(const Eigen::ArrayXd& omega, double h, double ball_mass) {
-  std::size_t key = std::hash<double>()(h) ^ (std::hash<double>()(ball_mass) << 1);
-  for (double w : omega) key = key * 1099511628211ull ^ std::hash<double>()(w);
+std::shared_ptr<const ModeResponse> cached_response(const Eigen::ArrayXd& omega, std::size_t omega_key, double h,
+                                                    double ball_mass) {
+  const std::size_t key = omega_key ^ std::hash<double>()(h) ^ (std::hash<double>()(ball_mass) << 1);
   thread_local std::unordered_multimap<std::size_t, std::pair<double, std::shared_ptr<const ModeResponse>>> cache;
   const auto [first, last] = cache.equal_range(key);
   for (auto it = first; it != last; ++it) {
@@ -160,10 +160,19 @@ std::shared_ptr<const ModeResponse> cached_response(const Eigen::ArrayXd& omega,
 
 }  // namespace
 
+std::size_t ExactStepper::frequencies_key(const Eigen::ArrayXd& omega) {
+  std::size_t key = omega.size();
+  for (double w : omega) key = key * 1099511628211ull ^ std::hash<double>()(w);
+  return key;
+}
+
+std::shared_ptr<const ModeResponse> ExactStepper::response(double h) const {
+  return cached_response(state_.body().omega.array(), omega_key_, h, state_.ball_mass());
+}
+
 ExactStepper::ExactStepper(const ContactState& state, const CollisionOptions& options)
     : state_(state), psi_(state.body().psi.array()), psi_w2_(psi_ * state.omega2()),
-      nominal_(cached_response(state.body().omega.array(), options.dt, state.ball_mass()), psi_,
-               state.compliance()) {}
+      omega_key_(frequencies_key(state.body().omega.array())), nominal_(response(options.dt), psi_, state.compliance()) {}
 
 void ExactStepper::step(const Eigen::VectorXd& y, double h, const ContactForce& law, Eigen::VectorXd& out) {
   if (h == nominal_.h()) return advance(nominal_, y, law, out);
@@ -172,8 +181,7 @@ void ExactStepper::step(const Eigen::VectorXd& y, double h, const ContactForce& 
   if (graded) {
     for (const StepCoefficients& k : graded_)
       if (k.h() == h) return advance(k, y, law, out);
-    graded_.emplace_back(cached_response(state_.body().omega.array(), h, state_.ball_mass()), psi_,
-                         state_.compliance());
+    graded_.emplace_back(response(h), psi_, state_.compliance());
     return advance(graded_.back(), y, law, out);
   }
   if (h != other_.h())
@@ -203,8 +211,7 @@ double ExactStepper::locate(const Eigen::VectorXd& y, double h, const ContactFor
   // for the contact time; free flight from there is exact.
   const double fraction = std::ceil(hi * event_grid) / event_grid;
   if (fraction >= 1) return h;
-  const StepCoefficients k(cached_response(state_.body().omega.array(), fraction * h, state_.ball_mass()), psi_,
-                           state_.compliance());
+  const StepCoefficients k(response(fraction * h), psi_, state_.compliance());
   Eigen::VectorXd trial(y.size());
   advance(k, y, law, trial);
   out = trial;

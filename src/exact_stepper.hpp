@@ -66,9 +66,13 @@ class ExactStepper {
 
  private:
   void advance(const StepCoefficients& k, const Eigen::VectorXd& y, const ContactForce& law, Eigen::VectorXd& out);
+  // Responses are kept per thread by frequencies and step; the frequencies' hash is made once.
+  static std::size_t frequencies_key(const Eigen::ArrayXd& omega);
+  std::shared_ptr<const ModeResponse> response(double h) const;
 
   const ContactState& state_;
   Eigen::ArrayXd psi_, psi_w2_;  // mode shapes at the contact, and times omega^2
+  std::size_t omega_key_;
   StepCoefficients nominal_, other_;
   std::vector<StepCoefficients> graded_;
 };

@@ -24,6 +24,12 @@ double response_bound(double omega, double duration) {
   return x <= 2 ? 1.0 : 1 / ((x * x - 1) * (x * x - 1));
 }
 
+// A dropped mode: its error adds to the estimate, its static compliance psi^2 / omega^2 stays.
+void drop(ModeSelection& s, double psi, double omega, double take) {
+  s.error_estimate += take;
+  s.residual_compliance += psi * psi / (omega * omega);
+}
+
 }  // namespace
 
 double pulse_duration(const Ball& ball, double approach_speed, double recoil) {
@@ -57,28 +63,33 @@ ModeSelection select_modes(const Eigen::VectorXd& omega, const Eigen::VectorXd& 
   const double pulse_omega = 4 * std::numbers::pi / s.pulse_duration;
 
   const int n = static_cast<int>(omega.size());
-  std::vector<std::pair<double, int>> takes;  // what dropping each mode costs, and the mode
-  takes.reserve(n);
+  std::vector<double> take(n, 0.0);  // what dropping each mode costs
   for (int i = 2; i < n; ++i) {
     const double ratio = pulse_omega / omega(i), psi2 = psi(i) * psi(i), lag = std::min(1.0, ratio * ratio);
-    takes.emplace_back(recoil_sensitivity * ball.mass * psi2 * response_bound(omega(i), s.pulse_duration) +
-                           compliance_sensitivity * psi2 / (omega(i) * omega(i)) * lag,
-                       i);
+    take[i] = recoil_sensitivity * ball.mass * psi2 * response_bound(omega(i), s.pulse_duration) +
+              compliance_sensitivity * psi2 / (omega(i) * omega(i)) * lag;
   }
-  // Drop the modes that take least while their sum stays within the tolerance: equivalently,
-  // keep the ones that take most until what is left fits. Few are kept, so a heap finds them.
-  double left = 0;
-  for (const auto& t : takes) left += t.first;
-  std::ranges::make_heap(takes);
-  while (!takes.empty() && left > tolerance) {
-    std::ranges::pop_heap(takes);
-    left -= takes.back().first;
-    s.kept.push_back(takes.back().second);
-    takes.pop_back();
+  // Drop the modes that take least while their sum stays within the tolerance. Those taking
+  // under tolerance / n are among the least and sum to under the tolerance: they go without
+  // sorting, and only the few others are ordered.
+  std::vector<int> candidates;
+  double dropped = 0;
+  for (int i = 2; i < n; ++i) {
+    if (take[i] * n <= tolerance) {
+      dropped += take[i];
+      drop(s, psi(i), omega(i), take[i]);
+    } else {
+      candidates.push_back(i);
+    }
   }
-  for (const auto& [take, i] : takes) {
-    s.error_estimate += take;
-    s.residual_compliance += psi(i) * psi(i) / (omega(i) * omega(i));
+  std::ranges::sort(candidates, [&take](int i, int j) { return take[i] < take[j]; });
+  for (const int i : candidates) {
+    if (dropped + take[i] <= tolerance) {
+      dropped += take[i];
+      drop(s, psi(i), omega(i), take[i]);
+    } else {
+      s.kept.push_back(i);
+    }
   }
   std::ranges::sort(s.kept);
   return s;
