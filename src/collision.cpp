@@ -42,6 +42,7 @@ void evolve_free(const ModalContact& body, const VectorXd& y, double tau, Vector
 
 // Integral over [0, tau] of the cubic Hermite interpolant of F on a segment of length h.
 double hermite_integral(const ForceSample& p, const ForceSample& q, double tau) {
+  if (q.t <= p.t) return 0;  // a touch found right at separation leaves two samples at one time
   const double h = q.t - p.t, s = tau / h, s2 = s * s, s3 = s2 * s, s4 = s3 * s;
   return h * ((s4 / 2 - s3 + s) * p.force + (s4 / 4 - 2 * s3 / 3 + s2 / 2) * h * p.rate +
               (-s4 / 2 + s3) * q.force + (s4 / 4 - s3 / 3) * h * q.rate);
@@ -294,7 +295,7 @@ double impulse_time(const std::vector<ForceSample>& force, double fraction) {
   for (std::size_t i = 1; i < force.size(); ++i) {
     const ForceSample &p = force[i - 1], &q = force[i];
     const double segment = hermite_integral(p, q, q.t - p.t);
-    if (delivered + segment < target) {
+    if (delivered + segment < target || q.t <= p.t) {
       delivered += segment;
       continue;
     }
