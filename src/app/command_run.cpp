@@ -29,10 +29,13 @@ void run(const RunCommandOptions& o) {
   Study study;
   try {
     study = load_study(o.study);  // every rank validates; a bad study stops before any work
-  } catch (const InputError&) {
+  } catch (const InputError& e) {
+    // Rank 0 says why, and the others wait until it has: mpirun stops the job at the first
+    // non-zero exit, which could otherwise cut rank 0 off before its message.
+    if (rank == 0) std::fprintf(stderr, "sweetspot: error: %s\n", e.what());
+    MPI_Barrier(MPI_COMM_WORLD);
     MPI_Finalize();
-    if (rank == 0) throw;
-    std::exit(2);  // rank 0 says why
+    std::exit(2);
   }
   RunOptions options;
   options.output = o.output.empty() ? std::filesystem::path(o.study).stem().string() + ".h5" : o.output;
