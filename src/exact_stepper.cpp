@@ -242,8 +242,14 @@ double end_compression(const StepCoefficients& k, const ContactForce& law, doubl
     (value > 0 ? hi : lo) = u;
     double next = u - value / slope;
     // Newton converges quadratically: after a step of 1e-9 the error is of order 1e-18 (times
-    // the law's curvature, below 1e-13 even for the stiffest expansion of a dead ball).
-    if (std::abs(next - u) <= 1e-9 * u || hi - lo <= 1e-15 * hi) return next;
+    // the law's curvature, below 1e-13 even for the stiffest expansion of a dead ball). The
+    // force there is F(u) (1 + x)^e, x = (next - u) / u, to second order: exact to round-off.
+    if (std::abs(next - u) <= 1e-9 * u) {
+      const double x = (next - u) / u;
+      law.remember(next, law(u) * (1 + e * x * (1 + (e - 1) / 2 * x)));
+      return next;
+    }
+    if (hi - lo <= 1e-15 * hi) return next;
     if (!(next > lo && next < hi) || !(slope > 0)) next = (lo + hi) / 2;
     u = next;
   }

@@ -25,6 +25,9 @@ class ContactForce {
   double operator()(double u) const;
   // dF/du at u, for the time derivative of the force profile.
   double stiffness(double u) const;
+  // Takes `force` as the force at u, to be answered without a pow: for a caller that has it from
+  // a neighbouring evaluation (to round-off).
+  void remember(double u, double force) const { last_u_ = u, last_force_ = force; }
   // Switches to the expansion branch at maximum compression u_m.
   void start_expansion(double u_max);
   bool expanding() const { return expanding_; }
