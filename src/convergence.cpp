@@ -128,6 +128,7 @@ ConvergenceTable run_convergence(const ModalBasis& basis, const ImpactScene& sce
   table.kept_modes = scene_geometry(scene, basis).contact.count();
   table.rk4_largest_step = largest_stable_rk4_step(basis, scene);
   table.reference = reference_run(basis, scene);
+  table.reference.richardson_order = std::min(6.0, scene.ball.a + 1);
   for (Method method : {Method::rk4, Method::exact, Method::dopri}) {
     IntegratorConvergence integrator{method, settings(method, table.rk4_largest_step, quick)};
     for (ConvergenceRun& run : integrator.runs) measure(basis, with_setting(scene, method, run), quick, run);
@@ -181,7 +182,7 @@ Variable column_variable(const ConvergenceTable& table, const Column& column, st
 std::string describe_reference(const ConvergenceReference& ref) {
   char text[256];
   std::snprintf(text, sizeof text,
-                "dopri at tolerance %g, first step %g s; cross-checked by Richardson extrapolation (order %d) "
+                "dopri at tolerance %g, first step %g s; cross-checked by Richardson extrapolation (order %g) "
                 "of the two finest exact runs",
                 ref.tolerance, ref.first_step, ref.richardson_order);
   return text;

@@ -10,20 +10,22 @@ namespace sweetspot::detail {
 namespace {
 
 constexpr double event_grid = 4096;  // event steps end on this many divisions of the step
+constexpr int powers = 6;            // the interpolants are polynomials of degree up to 5
 
-// P_k = int_0^h sin(w (h - t)) / w t^k dt and Q_k = int_0^h cos(w (h - t)) t^k dt, k = 0..3:
-// the response of a mode to the forcing t^k. For w h >= 1, integration by parts from P_0 =
+// P_k = int_0^h sin(w (h - t)) / w t^k dt and Q_k = int_0^h cos(w (h - t)) t^k dt, k = 0..5:
+// the response of a mode to the forcing t^k. For w h >= 4, integration by parts from P_0 =
 // (1 - cos)/w^2, Q_0 = sin/w: Q_k = k P_{k-1}, P_k = (h^k - k Q_{k-1}) / w^2. Below that the
 // recursion cancels, and the power series (exact at w = 0) takes over:
 //   P_k = h^(k+2) k! sum_j (-x^2)^j / (k+2j+2)!,  Q_k = h^(k+1) k! sum_j (-x^2)^j / (k+2j+1)!.
-void monomial_responses(double w, double h, double cos_x, double sin_x, double p[4], double q[4]) {
+void monomial_responses(double w, double h, double cos_x, double sin_x, double p[powers], double q[powers]) {
   const double x = w * h;
-  const double h_power[5] = {1, h, h * h, h * h * h, h * h * h * h};
-  if (x >= 1) {
+  double h_power[powers + 2] = {1};  // h^0 .. h^(powers + 1)
+  for (int k = 1; k < powers + 2; ++k) h_power[k] = h_power[k - 1] * h;
+  if (x >= 4) {
     const double w2 = w * w;
     p[0] = (1 - cos_x) / w2;
     q[0] = sin_x / w;
-    for (int k = 1; k < 4; ++k) {
+    for (int k = 1; k < powers; ++k) {
       q[k] = k * p[k - 1];
       p[k] = (h_power[k] - k * q[k - 1]) / w2;
     }
@@ -31,13 +33,13 @@ void monomial_responses(double w, double h, double cos_x, double sin_x, double p
   }
   const double x2 = x * x;
   double factorial = 1;  // k!
-  for (int k = 0; k < 4; ++k) {
+  for (int k = 0; k < powers; ++k) {
     if (k > 0) factorial *= k;
     double denom_q = 1;
     for (int j = 2; j <= k + 1; ++j) denom_q *= j;  // (k + 1)!
     double denom_p = denom_q * (k + 2);             // (k + 2)!
     double sp = 0, sq = 0, term = 1;
-    for (int j = 0; j < 12 && std::abs(term) > 1e-18 * denom_q; ++j) {
+    for (int j = 0; j < 40 && std::abs(term) > 1e-18 * denom_q; ++j) {
       sq += term / denom_q;
       sp += term / denom_p;
       term *= -x2;
@@ -45,115 +47,134 @@ void monomial_responses(double w, double h, double cos_x, double sin_x, double p
       denom_p *= (k + 2 * j + 3) * (k + 2 * j + 4);
     }
     q[k] = h_power[k + 1] * factorial * sq;
-    p[k] = h_power[k + 1] * h * factorial * sp;
+    p[k] = h_power[k + 2] * factorial * sp;
   }
 }
 
-// Cubic Hermite basis on [0, h] as polynomials in t: rows A (F0), B (h F0' folded: weight of F0'),
-// C (F1), D (F1'); columns t^0..t^3.
-void hermite_weights(double h, double b[4][4]) {
-  const double h2 = h * h, h3 = h2 * h;
-  const double rows[4][4] = {{1, 0, -3 / h2, 2 / h3}, {0, 1, -2 / h, 1 / h2}, {0, 0, 3 / h2, -2 / h3}, {0, 0, -1 / h, 1 / h2}};
-  for (int r = 0; r < 4; ++r)
-    for (int k = 0; k < 4; ++k) b[r][k] = rows[r][k];
+// An interpolant's basis: row j is the polynomial (coefficients of t^0..t^5) that datum j
+// weights.
+using Basis = Eigen::Matrix<double, data_count, powers>;
+
+// The basis in s = t / h, from the conditions at the nodes s = -past_ratio (quintic only), 0 and
+// 1 on the value (a force datum) or the slope (a rate datum, which enters as h F').
+Basis basis_in_s(double past_ratio) {
+  struct Condition {
+    Datum datum;
+    double node;
+    bool slope;
+  };
+  std::vector<Condition> conditions = {{start_force, 0, false}, {start_rate, 0, true}, {end_force, 1, false},
+                                       {end_rate, 1, true}};
+  if (past_ratio > 0)
+    conditions.insert(conditions.begin(), {{past_force, -past_ratio, false}, {past_rate, -past_ratio, true}});
+  const int m = static_cast<int>(conditions.size());
+  Eigen::MatrixXd conditions_matrix(m, m);  // row i: condition i on the polynomial sum_k c_k s^k
+  for (int i = 0; i < m; ++i)
+    for (int k = 0; k < m; ++k) {
+      const Condition& c = conditions[i];
+      conditions_matrix(i, k) = c.slope ? (k == 0 ? 0.0 : k * std::pow(c.node, k - 1)) : std::pow(c.node, k);
+    }
+  const Eigen::MatrixXd coefficients = conditions_matrix.fullPivLu().inverse();  // column i: datum i's polynomial
+  Basis b = Basis::Zero();
+  for (int i = 0; i < m; ++i) b.row(conditions[i].datum).head(m) = coefficients.col(i).transpose();
+  return b;
 }
 
-}  // namespace
+Basis interpolant_basis(double past_ratio, double h) {
+  Basis b = basis_in_s(past_ratio);
+  for (int k = 0; k < powers; ++k) b.col(k) /= std::pow(h, k);
+  for (const Datum rate : {past_rate, start_rate, end_rate}) b.row(rate) *= h;
+  return b;
+}
 
-namespace {
+// One mode's closed-form response over a step: c, sn, w2sn, then d and q for each datum.
+using ModeCoefficients = std::array<double, 3 + 2 * data_count>;
 
-// One mode's closed-form response over a step: c, sn, w2sn, then dA..dD and qA..qD.
-using ModeCoefficients = std::array<double, 11>;
-
-ModeCoefficients mode_coefficients(double w, double h) {
-  double b[4][4];
-  hermite_weights(h, b);
-  const auto combine = [&b](const double m[4], int row) {
-    return b[row][0] * m[0] + b[row][1] * m[1] + b[row][2] * m[2] + b[row][3] * m[3];
-  };
+ModeCoefficients mode_coefficients(double w, double h, const Basis& b) {
   const double cos_x = std::cos(w * h), sin_x = std::sin(w * h);
-  double p[4], q[4];
+  double p[powers], q[powers];
   monomial_responses(w, h, cos_x, sin_x, p, q);
-  return {cos_x,         w == 0 ? h : sin_x / w, w * sin_x,     combine(p, 0), combine(p, 1), combine(p, 2),
-          combine(p, 3), combine(q, 0),          combine(q, 1), combine(q, 2), combine(q, 3)};
+  ModeCoefficients m = {cos_x, w == 0 ? h : sin_x / w, w * sin_x};
+  for (int j = 0; j < data_count; ++j)
+    for (int k = 0; k < powers; ++k) {
+      m[3 + j] += b(j, k) * p[k];
+      m[3 + data_count + j] += b(j, k) * q[k];
+    }
+  return m;
 }
 
 // Steps of the lengths a run reuses (nominal, graded) meet the same frequencies again and again
 // even when the kept modes differ from impact to impact (modes = auto), so each thread remembers
-// every mode's coefficients by (omega, h).
-const ModeCoefficients& memoized_coefficients(double w, double h) {
+// every mode's coefficients by (omega, h, past ratio).
+const ModeCoefficients& memoized_coefficients(double w, double h, double past_ratio, const Basis& b) {
   struct Key {
-    double w, h;
+    double w, h, past_ratio;
     bool operator==(const Key&) const = default;
   };
   struct Hash {
     std::size_t operator()(const Key& k) const {
-      return std::hash<double>()(k.w) * 31 + std::hash<double>()(k.h);
+      return (std::hash<double>()(k.w) * 31 + std::hash<double>()(k.h)) * 31 + std::hash<double>()(k.past_ratio);
     }
   };
   thread_local std::unordered_map<Key, ModeCoefficients, Hash> memo;
   if (memo.size() > 100000) memo.clear();  // bounded: a long run over many bases
-  const auto [it, inserted] = memo.try_emplace(Key{w, h});
-  if (inserted) it->second = mode_coefficients(w, h);
+  const auto [it, inserted] = memo.try_emplace(Key{w, h, past_ratio});
+  if (inserted) it->second = mode_coefficients(w, h, b);
   return it->second;
 }
 
 }  // namespace
 
-ModeResponse::ModeResponse(const Eigen::ArrayXd& w, double step, double ball_mass, bool memoize)
-    : h(step), omega(w) {
+ModeResponse::ModeResponse(const Eigen::ArrayXd& w, double step, double ball_mass, double past, bool memoize)
+    : h(step), past_ratio(past), omega(w) {
   const int n = static_cast<int>(omega.size());
-  Eigen::ArrayXd* columns[11] = {&c, &sn, &w2sn, &dA, &dB, &dC, &dD, &qA, &qB, &qC, &qD};
-  for (Eigen::ArrayXd* a : columns) a->resize(n);
+  c.resize(n), sn.resize(n), w2sn.resize(n), d.resize(n, data_count), q.resize(n, data_count);
+  const Basis b = interpolant_basis(past_ratio, h);
   for (int i = 0; i < n; ++i) {
-    const ModeCoefficients computed = memoize ? ModeCoefficients{} : mode_coefficients(omega(i), h);
-    const ModeCoefficients& m = memoize ? memoized_coefficients(omega(i), h) : computed;
-    for (int j = 0; j < 11; ++j) (*columns[j])(i) = m[j];
+    const ModeCoefficients computed = memoize ? ModeCoefficients{} : mode_coefficients(omega(i), h, b);
+    const ModeCoefficients& m = memoize ? memoized_coefficients(omega(i), h, past_ratio, b) : computed;
+    c(i) = m[0], sn(i) = m[1], w2sn(i) = m[2];
+    for (int j = 0; j < data_count; ++j) d(i, j) = m[3 + j], q(i, j) = m[3 + data_count + j];
   }
-  double b[4][4], p[4], q[4];
-  hermite_weights(h, b);
-  monomial_responses(0, h, 1, 0, p, q);
-  for (int r = 0; r < 4; ++r) {
-    ball_d[r] = (b[r][0] * p[0] + b[r][1] * p[1] + b[r][2] * p[2] + b[r][3] * p[3]) / ball_mass;
-    ball_q[r] = (b[r][0] * q[0] + b[r][1] * q[1] + b[r][2] * q[2] + b[r][3] * q[3]) / ball_mass;
-  }
+  const ModeCoefficients ball = mode_coefficients(0, h, b);
+  for (int j = 0; j < data_count; ++j) ball_d[j] = ball[3 + j] / ball_mass, ball_q[j] = ball[3 + data_count + j] / ball_mass;
 }
 
-StepCoefficients::StepCoefficients(std::shared_ptr<const ModeResponse> r, const Eigen::ArrayXd& psi,
+StepCoefficients::StepCoefficients(std::shared_ptr<const ModeResponse> r, const Eigen::ArrayXd& psi2,
                                    double compliance)
-    : response(std::move(r)), driven(psi.size(), 8), psi2_sum(psi.square().sum()) {
+    : response(std::move(r)), psi2_sum(psi2.sum()) {
   const ModeResponse& m = *response;
-  const Eigen::ArrayXd* columns[8] = {&m.dA, &m.dB, &m.qA, &m.qB, &m.dC, &m.dD, &m.qC, &m.qD};
-  for (int j = 0; j < 8; ++j) driven.col(j) = psi * *columns[j];
-  mode_dC = (psi * driven.col(dC)).sum(), mode_dD = (psi * driven.col(dD)).sum();
-  mode_qC = (psi * driven.col(qC)).sum(), mode_qD = (psi * driven.col(qD)).sum();
-  gC = mode_dC + m.ball_d[2] + compliance;
-  gD = mode_dD + m.ball_d[3];
-  hC = mode_qC + m.ball_q[2];
-  hD = mode_qD + m.ball_q[3] + compliance;
+  mode_dC = (psi2 * m.d.col(end_force)).sum(), mode_dD = (psi2 * m.d.col(end_rate)).sum();
+  mode_qC = (psi2 * m.q.col(end_force)).sum(), mode_qD = (psi2 * m.q.col(end_rate)).sum();
+  gC = mode_dC + m.ball_d[end_force] + compliance;
+  gD = mode_dD + m.ball_d[end_rate];
+  hC = mode_qC + m.ball_q[end_force];
+  hD = mode_qD + m.ball_q[end_rate] + compliance;
 }
 
 namespace {
 
 // The responses at the nominal step and at the graded first steps are the same for every impact
 // that keeps the same modes (only the mode shapes at the contact differ), so each thread keeps
-// them, keyed by step, ball mass and frequencies. With modes = auto the kept set varies from
-// impact to impact, and event steps vary too; the cache starts over when it grows large.
+// them, keyed by step, past ratio, ball mass and frequencies. With modes = auto the kept set
+// varies from impact to impact, and event steps vary too; the cache starts over when it grows
+// large.
 std::shared_ptr<const ModeResponse> cached_response(const Eigen::ArrayXd& omega, std::size_t omega_key, double h,
-                                                    double ball_mass) {
-  const std::size_t key = omega_key ^ std::hash<double>()(h) ^ (std::hash<double>()(ball_mass) << 1);
+                                                    double ball_mass, double past_ratio) {
+  const std::size_t key = omega_key ^ std::hash<double>()(h) ^ (std::hash<double>()(ball_mass) << 1) ^
+                          (std::hash<double>()(past_ratio) << 2);
   thread_local std::unordered_multimap<std::size_t, std::pair<double, std::shared_ptr<const ModeResponse>>> cache;
   const auto [first, last] = cache.equal_range(key);
   for (auto it = first; it != last; ++it) {
     const auto& [mass, response] = it->second;
-    if (response->h == h && mass == ball_mass && response->omega.size() == omega.size() &&
-        (response->omega == omega).all())
+    if (response->h == h && response->past_ratio == past_ratio && mass == ball_mass &&
+        response->omega.size() == omega.size() && (response->omega == omega).all())
       return response;
   }
   thread_local std::size_t stored = 0;  // doubles held: at most about 32 MB per thread
   if (stored > 4'000'000) cache.clear(), stored = 0;
-  stored += 11 * omega.size();
-  auto response = std::make_shared<const ModeResponse>(omega, h, ball_mass, true);
+  stored += (3 + 2 * data_count) * omega.size();
+  auto response = std::make_shared<const ModeResponse>(omega, h, ball_mass, past_ratio, true);
   cache.emplace(key, std::make_pair(ball_mass, response));
   return response;
 }
@@ -166,28 +187,32 @@ std::size_t ExactStepper::frequencies_key(const Eigen::ArrayXd& omega) {
   return key;
 }
 
-std::shared_ptr<const ModeResponse> ExactStepper::response(double h) const {
-  return cached_response(state_.body().omega.array(), omega_key_, h, state_.ball_mass());
+ExactStepper::ExactStepper(const ContactState& state, const CollisionOptions& options)
+    : state_(state), psi_(state.body().psi.array()), psi2_(psi_.square()), psi_w2_(psi_ * state.omega2()),
+      omega_key_(frequencies_key(state.body().omega.array())), nominal_(options.dt) {}
+
+const StepCoefficients& ExactStepper::coefficients(double h, double past_ratio) {
+  for (const StepCoefficients& k : kept_)
+    if (k.h() == h && k.past_ratio() == past_ratio) return k;
+  kept_.emplace_back(cached_response(state_.body().omega.array(), omega_key_, h, state_.ball_mass(), past_ratio),
+                     psi2_, state_.compliance());
+  return kept_.back();
 }
 
-ExactStepper::ExactStepper(const ContactState& state, const CollisionOptions& options)
-    : state_(state), psi_(state.body().psi.array()), psi_w2_(psi_ * state.omega2()),
-      omega_key_(frequencies_key(state.body().omega.array())), nominal_(response(options.dt), psi_, state.compliance()) {}
+double ExactStepper::past_ratio(const Eigen::VectorXd& y, double h, const ContactForce& law) const {
+  const bool continues = past_.expanding == law.expanding() && y(0) == past_.end_s && y(1) == past_.end_v;
+  // Past data far from the step (ratio over 8) add little; close to it (under 1/4) they would
+  // make the interpolant ill-conditioned.
+  const double ratio = past_.h / h;
+  return continues && ratio >= 0.25 && ratio <= 8 ? ratio : 0.0;
+}
 
 void ExactStepper::step(const Eigen::VectorXd& y, double h, const ContactForce& law, Eigen::VectorXd& out) {
-  if (h == nominal_.h()) return advance(nominal_, y, law, out);
-  // Halvings of the nominal step (the graded start, the stiff expansion) recur: keep them.
-  const bool graded = h < nominal_.h() && std::exp2(std::round(std::log2(nominal_.h() / h))) * h == nominal_.h();
-  if (graded) {
-    for (const StepCoefficients& k : graded_)
-      if (k.h() == h) return advance(k, y, law, out);
-    graded_.emplace_back(response(h), psi_, state_.compliance());
-    return advance(graded_.back(), y, law, out);
-  }
-  if (h != other_.h())
-    other_ = StepCoefficients(std::make_shared<ModeResponse>(state_.body().omega.array(), h, state_.ball_mass()),
-                              psi_, state_.compliance());
-  advance(other_, y, law, out);
+  past_at_step_start_ = past_;
+  if (const double ratio = past_ratio(y, h, law); ratio > 0) return advance(coefficients(h, ratio), y, law, out);
+  advance(coefficients(h / 4, 0), y, law, quarter_);
+  advance(coefficients(h / 4, 1), quarter_, law, half_);
+  advance(coefficients(h / 2, 0.5), half_, law, out);
 }
 
 double ExactStepper::locate(const Eigen::VectorXd& y, double h, const ContactForce& law, ContactEvent event,
@@ -198,12 +223,14 @@ double ExactStepper::locate(const Eigen::VectorXd& y, double h, const ContactFor
     const double s2 = s * s, s3 = s2 * s;
     return (2 * s3 - 3 * s2 + 1) * f0 + (s3 - 2 * s2 + s) * d0 + (-2 * s3 + 3 * s2) * f1 + (s3 - s2) * d1;
   };
+  // Bisection, so that the cubic is <= 0 at `hi`: a step ending just short of separation would
+  // leave the ball touching, and the next contact would start at once.
   double lo = 0, hi = 1;
   for (int iteration = 0; iteration < 60; ++iteration) {
     const double mid = (lo + hi) / 2;
     (cubic(mid) > 0 ? lo : hi) = mid;
   }
-  if (hi == 1) return h;  // `out` already is the state at the end of the step
+  if (hi >= 1) return h;  // `out` already is the state at the end of the step
   // The event step ends on a 1/4096 grid of the step just past the root, so its response recurs
   // from impact to impact and is kept. Where it lands (within h/4096, ~2 ns at 10 us) changes
   // nothing that matters: the force is stationary there (F' = 0 at maximum compression, F = 0
@@ -211,10 +238,8 @@ double ExactStepper::locate(const Eigen::VectorXd& y, double h, const ContactFor
   // for the contact time; free flight from there is exact.
   const double fraction = std::ceil(hi * event_grid) / event_grid;
   if (fraction >= 1) return h;
-  const StepCoefficients k(response(fraction * h), psi_, state_.compliance());
-  Eigen::VectorXd trial(y.size());
-  advance(k, y, law, trial);
-  out = trial;
+  past_ = past_at_step_start_;  // the event step is redone from the last step's start
+  step(y, fraction * h, law, out);
   return event == ContactEvent::separation ? hi * h : fraction * h;
 }
 
@@ -257,8 +282,8 @@ double end_compression(const StepCoefficients& k, const ContactForce& law, doubl
 }
 
 // One pass over the modes for what is known before the end force (free rotation plus the
-// response to F0 and F0'), summing the contact's u and u' on the way; a second adds the response
-// to F1 and F1'. Plain loops: Eigen would make a pass per expression and one per sum.
+// response to the past and start data), summing the contact's u and u' on the way; a second adds
+// the response to F1 and F1'. Plain loops: Eigen would make a pass per expression and one per sum.
 void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, const ContactForce& law,
                            Eigen::VectorXd& out) {
   const ModeResponse& m = *k.response;
@@ -267,24 +292,30 @@ void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, 
   const double *a = y.data() + 2, *v = a + n;
   double *out_a = out.data() + 2, *out_v = out_a + n;
   const double *c = m.c.data(), *sn = m.sn.data(), *w2sn = m.w2sn.data(), *psi = psi_.data(), *psi_w2 = psi_w2_.data();
-  const auto column = [&k](StepCoefficients::Column j) { return k.driven.col(j).data(); };
+  const auto d = [&m](Datum j) { return m.d.col(j).data(); };
+  const auto q = [&m](Datum j) { return m.q.col(j).data(); };
 
   // The start: the ball's compression, its rate and acceleration, the force and its rate.
   const double u0 = state_.ball_compression(state_.compression(y), law), du0_geometric = state_.compression_rate(y);
   const double f0 = law(u0), k0 = u0 > 0 ? law.exponent() * f0 / u0 : 0.0;
   const double du0 = du0_geometric / (1 + state_.compliance() * k0), r0 = k0 * du0;
+  const bool quintic = m.past_ratio > 0;
+  const double fp = quintic ? past_.force : 0.0, rp = quintic ? past_.rate : 0.0;
 
-  const double *dA = column(k.dA), *dB = column(k.dB), *qA = column(k.qA), *qB = column(k.qB);
+  const double *dP = d(past_force), *dQ = d(past_rate), *dA = d(start_force), *dB = d(start_rate);
+  const double *qP = q(past_force), *qQ = q(past_rate), *qA = q(start_force), *qB = q(start_rate);
   double psi_a = 0, psi_v = 0, psi_w2a = 0;
 #pragma omp simd reduction(+ : psi_a, psi_v, psi_w2a)
   for (int i = 0; i < n; ++i) {
-    const double a_known = c[i] * a[i] + sn[i] * v[i] - f0 * dA[i] - r0 * dB[i];
-    const double v_known = c[i] * v[i] - w2sn[i] * a[i] - f0 * qA[i] - r0 * qB[i];
+    const double a_known = c[i] * a[i] + sn[i] * v[i] - psi[i] * (fp * dP[i] + rp * dQ[i] + f0 * dA[i] + r0 * dB[i]);
+    const double v_known = c[i] * v[i] - w2sn[i] * a[i] - psi[i] * (fp * qP[i] + rp * qQ[i] + f0 * qA[i] + r0 * qB[i]);
     out_a[i] = a_known, out_v[i] = v_known;
     psi_a += psi[i] * a_known, psi_v += psi[i] * v_known, psi_w2a += psi_w2[i] * a[i];
   }
-  const double s_known = y(0) + y(1) * m.h + f0 * m.ball_d[0] + r0 * m.ball_d[1];
-  const double vb_known = y(1) + f0 * m.ball_q[0] + r0 * m.ball_q[1];
+  const double s_known = y(0) + y(1) * m.h + fp * m.ball_d[past_force] + rp * m.ball_d[past_rate] +
+                         f0 * m.ball_d[start_force] + r0 * m.ball_d[start_rate];
+  const double vb_known = y(1) + fp * m.ball_q[past_force] + rp * m.ball_q[past_rate] + f0 * m.ball_q[start_force] +
+                          r0 * m.ball_q[start_rate];
   const double u_known = psi_a - s_known, du_known = psi_v - vb_known;
 
   const double ddu0 = -psi_w2a - f0 * (k.psi2_sum + 1 / state_.ball_mass());
@@ -294,18 +325,19 @@ void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, 
   const double stiffness = u1 > 0 ? law.exponent() * f1 / u1 : 0.0;
   const double r1 = stiffness * (du_known - k.hC * f1) / (1 + k.hD * stiffness);
 
-  out(0) = s_known + f1 * m.ball_d[2] + r1 * m.ball_d[3];
-  out(1) = vb_known + f1 * m.ball_q[2] + r1 * m.ball_q[3];
-  const double *dC = column(k.dC), *dD = column(k.dD), *qC = column(k.qC), *qD = column(k.qD);
+  out(0) = s_known + f1 * m.ball_d[end_force] + r1 * m.ball_d[end_rate];
+  out(1) = vb_known + f1 * m.ball_q[end_force] + r1 * m.ball_q[end_rate];
+  const double *dC = d(end_force), *dD = d(end_rate), *qC = q(end_force), *qD = q(end_rate);
 #pragma omp simd
   for (int i = 0; i < n; ++i) {
-    out_a[i] -= f1 * dC[i] + r1 * dD[i];
-    out_v[i] -= f1 * qC[i] + r1 * qD[i];
+    out_a[i] -= psi[i] * (f1 * dC[i] + r1 * dD[i]);
+    out_v[i] -= psi[i] * (f1 * qC[i] + r1 * qD[i]);
   }
   // The end's u and u' follow from the sums already made, without another pass over the modes.
   // The geometric u is the ball's own plus the residual compliance's yield (equal to the sums to
   // round-off, and exactly consistent with u1, whose force is known).
   state_.remember(out, u1 + state_.compliance() * f1, psi_v - f1 * k.mode_qC - r1 * k.mode_qD - out(1), law, u1);
+  past_ = {m.h, f0, r0, out(0), out(1), law.expanding()};
 }
 
 }  // namespace sweetspot::detail

@@ -38,7 +38,7 @@ Histories impact_histories(const ModalBasis& basis, const SceneGeometry& g, cons
   const ModalContact& body = g.contact;
   const int n = body.count();
   const std::size_t samples = request.samples();
-  const detail::ModeResponse response(body.omega.array(), request.step, ball.mass);
+  const detail::ModeResponse response(body.omega.array(), request.step, ball.mass, 0);  // cubic
   const Eigen::ArrayXd psi = body.psi.array(), omega2 = body.omega.array().square();
   const Eigen::ArrayXd vibrating = (body.omega.array() > 0).cast<double>();
 
@@ -72,17 +72,19 @@ Histories impact_histories(const ModalBasis& basis, const SceneGeometry& g, cons
     }
     // Advance one interval in closed form under the cubic force through (F, F') at its ends.
     const ForceSample f1 = force_at(force, t + request.step);
-    const Eigen::ArrayXd forcing_a = f0.force * response.dA + f0.rate * response.dB + f1.force * response.dC +
-                                     f1.rate * response.dD;
-    const Eigen::ArrayXd forcing_v = f0.force * response.qA + f0.rate * response.qB + f1.force * response.qC +
-                                     f1.rate * response.qD;
-    const Eigen::ArrayXd a_next = response.c * a + response.sn * v - psi * forcing_a;
-    v = response.c * v - response.w2sn * a - psi * forcing_v;
+    const auto forcing = [&](const Eigen::ArrayXXd& r) {
+      return f0.force * r.col(detail::start_force) + f0.rate * r.col(detail::start_rate) +
+             f1.force * r.col(detail::end_force) + f1.rate * r.col(detail::end_rate);
+    };
+    const Eigen::ArrayXd a_next = response.c * a + response.sn * v - psi * forcing(response.d);
+    v = response.c * v - response.w2sn * a - psi * forcing(response.q);
     a = a_next;
-    const double* bd = response.ball_d;
-    const double* bq = response.ball_q;
-    s += vb * request.step + f0.force * bd[0] + f0.rate * bd[1] + f1.force * bd[2] + f1.rate * bd[3];
-    vb += f0.force * bq[0] + f0.rate * bq[1] + f1.force * bq[2] + f1.rate * bq[3];
+    const auto ball = [&](const double* r) {
+      return f0.force * r[detail::start_force] + f0.rate * r[detail::start_rate] + f1.force * r[detail::end_force] +
+             f1.rate * r[detail::end_rate];
+    };
+    s += vb * request.step + ball(response.ball_d);
+    vb += ball(response.ball_q);
     f0 = f1;
   }
   return h;
