@@ -21,7 +21,6 @@ using Eigen::VectorXd;
 using detail::ContactState;
 
 constexpr int max_contacts = 50;  // more than this is chatter, not a collision
-constexpr double contact_step_limit = 2;  // omega_c h for the fixed-step methods
 
 // Free flight: the ball coasts, every mode oscillates in closed form (rigid modes drift).
 void evolve_free(const ModalContact& body, const VectorXd& y, double tau, VectorXd& out) {
@@ -152,13 +151,13 @@ class CollisionRun {
                     format("the ball did not separate within %g s of touching (contact %g)", options_.max_contact_time,
                            result_.contacts));
       const detail::StepOutcome outcome = stepper_.attempt(y_, h, law, next);
-      // u and u' sum every mode, so a non-finite one shows there without a pass of its own.
-      if (!std::isfinite(next(0) + next(1) + state_.compression(next) + state_.compression_rate(next)))
-        return fail(CollisionStatus::non_finite, format("non-finite state at t = %g s (step %g s)", t_, h));
-      if (!outcome.accepted) {
+      if (!outcome.accepted && outcome.next_h > 0) {  // a NaN proposal (from a NaN state) fails below
         h = outcome.next_h;
         continue;
       }
+      // u and u' sum every mode, so a non-finite one shows there without a pass of its own.
+      if (!std::isfinite(next(0) + next(1) + state_.compression(next) + state_.compression_rate(next)))
+        return fail(CollisionStatus::non_finite, format("non-finite state at t = %g s (step %g s)", t_, h));
       bool separated = false;
       if (!law.expanding() && state_.compression_rate(next) <= 0) {
         h = stepper_.locate(y_, h, law, detail::ContactEvent::max_compression, next);
@@ -184,11 +183,12 @@ class CollisionRun {
   // The fixed-step methods must also resolve the contact's own ringing (contact_frequency): a
   // nearly dead ball is so stiff on the expansion branch that a step fit for the modes would
   // blow up. Such steps are halved until omega_c h <= 2 (powers of two, so the exact stepper's
-  // responses are reused); the adaptive method finds its own.
+  // responses are reused), here at the start and by the steppers at the end; the adaptive
+  // method finds its own.
   double stiffness_limited(double h, const ContactForce& law) const {
     if constexpr (std::is_same_v<Stepper, detail::DopriStepper>) return h;
     const double omega_c = state_.contact_frequency(y_, law);
-    while (omega_c * h > contact_step_limit && h > 1e-12) h /= 2;
+    while (omega_c * h > detail::contact_step_limit && h > detail::smallest_step) h /= 2;
     return h;
   }
 

@@ -62,9 +62,13 @@ class ExactStepper {
   // A contact starts with steps of h/16, h/8, h/4, h/2: the force grows as t^a from first
   // touch, which no polynomial follows, and short first steps keep that error small.
   double first_step() const { return nominal_ / 16; }
-  std::string refusal() const { return {}; }  // unconditionally stable
+  std::string refusal() const { return {}; }  // stable at any step for the modes
   StepOutcome attempt(const Eigen::VectorXd& y, double h, const ContactForce& law, Eigen::VectorXd& out) {
     step(y, h, law, out);
+    if (too_stiff_at_end(state_, out, h, law)) {
+      past_ = past_at_step_start_;  // as if the step had not been made
+      return {false, h / 2};
+    }
     return {true, std::min(nominal_, 2 * h)};
   }
   // A step with no past to weight (a contact's first, the first after maximum compression) is

@@ -29,6 +29,7 @@ class Rk4Stepper {
 
   StepOutcome attempt(const Eigen::VectorXd& y, double h, const ContactForce& law, Eigen::VectorXd& out) {
     step(y, h, law, out);
+    if (too_stiff_at_end(state_, out, h, law)) return {false, h / 2};
     return {true, dt_};
   }
 
