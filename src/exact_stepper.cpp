@@ -262,14 +262,16 @@ double end_compression(const StepCoefficients& k, const ContactForce& law, doubl
   };
   double lo = 0, hi = u_known, slope = 0;
   double u = guess > 0 && guess < u_known ? guess : u_known / 2;
+  // Newton converges quadratically: after a step of x u the error is about K x^2 u, K = u |g''| /
+  // 2 g' at most 1 + |e - 1| / 2 for the power law. It stops once that is below 1e-13 of u.
+  const double converged = std::sqrt(1e-13 / (1 + std::abs(e - 1) / 2));
   for (int iteration = 0; iteration < 100; ++iteration) {
     const double value = g(u, slope);
     (value > 0 ? hi : lo) = u;
     double next = u - value / slope;
-    // Newton converges quadratically: after a step of 1e-9 the error is of order 1e-18 (times
-    // the law's curvature, below 1e-13 even for the stiffest expansion of a dead ball). The
-    // force there is F(u) (1 + x)^e, x = (next - u) / u, to second order: exact to round-off.
-    if (std::abs(next - u) <= 1e-9 * u) {
+    // The force at `next` is F(u) (1 + x)^e, x = (next - u) / u, to second order: exact to
+    // round-off at such small x.
+    if (std::abs(next - u) <= converged * u) {
       const double x = (next - u) / u;
       law.remember(next, law(u) * (1 + e * x * (1 + (e - 1) / 2 * x)));
       return next;
