@@ -107,6 +107,7 @@ class CollisionRun {
         stepper_(make_stepper(ball_speed)), y_(2 + 2 * body.count()) {
     y_.setZero();
     y_(1) = -ball_speed;
+    samples_.reserve(256);  // a contact's steps, mostly, without reallocation
     y_.tail(body.count()) = body.velocity0;
   }
 
@@ -218,7 +219,7 @@ class CollisionRun {
     const FreeRotations& rotations = free_rotations(body_.omega);
     const int n = body_.count();
     Eigen::ArrayXd a = y_.segment(2, n).array(), v = y_.segment(2 + n, n).array(), next_a(n);
-    const Eigen::ArrayXd psi = body_.psi.array();
+    const auto psi = body_.psi.array();
     double s = y_(0), tau = 0, previous = 0;
     while (tau < end) {
       const double u = (psi * a).sum() - s;

@@ -189,7 +189,10 @@ std::size_t ExactStepper::frequencies_key(const Eigen::ArrayXd& omega) {
 
 ExactStepper::ExactStepper(const ContactState& state, const CollisionOptions& options)
     : state_(state), psi_(state.body().psi.array()), psi2_(psi_.square()), psi_w2_(psi_ * state.omega2()),
-      omega_key_(frequencies_key(state.body().omega.array())), nominal_(options.dt) {}
+      omega_key_(frequencies_key(state.body().omega.array())), nominal_(options.dt),
+      quarter_(state.size()), half_(state.size()) {
+  kept_.reserve(16);  // a contact's usual lengths: graded, split, nominal and event steps
+}
 
 const StepCoefficients& ExactStepper::coefficients(double h, double past_ratio) {
   for (const StepCoefficients& k : kept_)
@@ -238,8 +241,9 @@ double ExactStepper::locate(const Eigen::VectorXd& y, double h, const ContactFor
   // for the contact time; free flight from there is exact.
   const double fraction = std::ceil(hi * event_grid) / event_grid;
   if (fraction >= 1) return h;
-  past_ = past_at_step_start_;  // the event step is redone from the last step's start
-  step(y, fraction * h, law, out);
+  // Its length is new at every impact, so its response is computed afresh: the cubic's, in one
+  // piece (the quintic's would need its own basis, and a split step three responses).
+  advance(coefficients(fraction * h, 0), y, law, out);
   return event == ContactEvent::separation ? hi * h : fraction * h;
 }
 

@@ -18,17 +18,14 @@ double quarter_period(double q) {
 }
 
 // Upper envelope of g for a half-sine pulse of duration T (|F^| = |cos(w T/2)| / |1 - (w T/pi)^2|):
-// 1 up to w T = 2 pi, then 1 / ((w T / pi)^2 - 1)^2. Real pulses are smoother, so g is smaller.
-double response_bound(double omega, double duration) {
-  const double x = omega * duration / std::numbers::pi;
-  return x <= 2 ? 1.0 : 1 / ((x * x - 1) * (x * x - 1));
-}
+// 1 up to w T = 2 pi, then 1 / ((w T / pi)^2 - 1)^2, here from x2 = (w T / pi)^2. Real pulses are
+// smoother, so g is smaller.
+double response_bound(double x2) { return x2 <= 4 ? 1.0 : 1 / ((x2 - 1) * (x2 - 1)); }
 
-// A dropped mode: its error adds to the estimate, its static compliance psi^2 / omega^2 stays.
-void drop(ModeSelection& s, double psi, double omega, double take) {
-  s.error_estimate += take;
-  s.residual_compliance += psi * psi / (omega * omega);
-}
+// What dropping a mode costs, and the static compliance psi^2 / omega^2 it leaves.
+struct Take {
+  double cost = 0, compliance = 0;
+};
 
 }  // namespace
 
@@ -63,33 +60,33 @@ ModeSelection select_modes(const Eigen::VectorXd& omega, const Eigen::VectorXd& 
   const double pulse_omega = 4 * std::numbers::pi / s.pulse_duration;
 
   const int n = static_cast<int>(omega.size());
-  std::vector<double> take(n, 0.0);  // what dropping each mode costs
+  const double pulse_omega2 = pulse_omega * pulse_omega;
+  const double duration2 = s.pulse_duration * s.pulse_duration / (std::numbers::pi * std::numbers::pi);
+  std::vector<Take> take(n);
   for (int i = 2; i < n; ++i) {
-    const double ratio = pulse_omega / omega(i), psi2 = psi(i) * psi(i), lag = std::min(1.0, ratio * ratio);
-    take[i] = recoil_sensitivity * ball.mass * psi2 * response_bound(omega(i), s.pulse_duration) +
-              compliance_sensitivity * psi2 / (omega(i) * omega(i)) * lag;
+    const double w2 = omega(i) * omega(i), inverse_w2 = 1 / w2, psi2 = psi(i) * psi(i);
+    const double lag = std::min(1.0, pulse_omega2 * inverse_w2);
+    take[i].compliance = psi2 * inverse_w2;
+    take[i].cost = recoil_sensitivity * ball.mass * psi2 * response_bound(w2 * duration2) +
+                   compliance_sensitivity * take[i].compliance * lag;
   }
-  // Drop the modes that take least while their sum stays within the tolerance. Those taking
+  // Drop the modes that cost least while their sum stays within the tolerance. Those costing
   // under tolerance / n are among the least and sum to under the tolerance: they go without
-  // sorting, and only the few others are ordered.
+  // sorting, and only the few others are ordered. A dropped mode's cost adds to the estimate,
+  // its compliance stays.
+  const auto drop = [&s](const Take& t) {
+    s.error_estimate += t.cost;
+    s.residual_compliance += t.compliance;
+  };
   std::vector<int> candidates;
-  double dropped = 0;
   for (int i = 2; i < n; ++i) {
-    if (take[i] * n <= tolerance) {
-      dropped += take[i];
-      drop(s, psi(i), omega(i), take[i]);
-    } else {
-      candidates.push_back(i);
-    }
+    if (take[i].cost * n <= tolerance) drop(take[i]);
+    else candidates.push_back(i);
   }
-  std::ranges::sort(candidates, [&take](int i, int j) { return take[i] < take[j]; });
+  std::ranges::sort(candidates, [&take](int i, int j) { return take[i].cost < take[j].cost; });
   for (const int i : candidates) {
-    if (dropped + take[i] <= tolerance) {
-      dropped += take[i];
-      drop(s, psi(i), omega(i), take[i]);
-    } else {
-      s.kept.push_back(i);
-    }
+    if (s.error_estimate + take[i].cost <= tolerance) drop(take[i]);
+    else s.kept.push_back(i);
   }
   std::ranges::sort(s.kept);
   return s;
