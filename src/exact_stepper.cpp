@@ -103,7 +103,7 @@ ModeCoefficients mode_coefficients(double w, double h, const Basis& b) {
   return m;
 }
 
-// Steps of the lengths a run reuses (nominal, graded) meet the same frequencies again and again
+// Steps of the lengths a run reuses (nominal, split) meet the same frequencies again and again
 // even when the kept modes differ from impact to impact (modes = auto), so each thread remembers
 // every mode's coefficients by (omega, h, past ratio).
 const ModeCoefficients& memoized_coefficients(double w, double h, double past_ratio, const Basis& b) {
@@ -154,7 +154,7 @@ StepCoefficients::StepCoefficients(std::shared_ptr<const ModeResponse> r, const 
 
 namespace {
 
-// The responses at the nominal step and at the graded first steps are the same for every impact
+// The responses at the nominal step and at its split parts are the same for every impact
 // that keeps the same modes (only the mode shapes at the contact differ), so each thread keeps
 // them, keyed by step, past ratio, ball mass and frequencies. With modes = auto the kept set
 // varies from impact to impact, and event steps vary too; the cache starts over when it grows
@@ -191,7 +191,7 @@ ExactStepper::ExactStepper(const ContactState& state, const CollisionOptions& op
     : state_(state), psi_(state.body().psi.array()), psi2_(psi_.square()), psi_w2_(psi_ * state.omega2()),
       omega_key_(frequencies_key(state.body().omega.array())), nominal_(options.dt),
       quarter_(state.size()), half_(state.size()) {
-  kept_.reserve(16);  // a contact's usual lengths: graded, split, nominal and event steps
+  kept_.reserve(16);  // a contact's usual lengths: split, nominal, halved and event steps
 }
 
 const StepCoefficients& ExactStepper::coefficients(double h, double past_ratio) {

@@ -59,9 +59,9 @@ class ExactStepper {
  public:
   ExactStepper(const ContactState& state, const CollisionOptions& options);
 
-  // A contact starts with steps of h/16, h/8, h/4, h/2: the force grows as t^a from first
-  // touch, which no polynomial follows, and short first steps keep that error small.
-  double first_step() const { return nominal_ / 16; }
+  // A contact's first step has no past, so it is split (below): the quarter steps also follow
+  // the force's t^a growth from first touch, which no polynomial does, closely enough.
+  double first_step() const { return nominal_; }
   std::string refusal() const { return {}; }  // stable at any step for the modes
   StepOutcome attempt(const Eigen::VectorXd& y, double h, const ContactForce& law, Eigen::VectorXd& out) {
     step(y, h, law, out);
@@ -73,7 +73,7 @@ class ExactStepper {
   }
   // A step with no past to weight (a contact's first, the first after maximum compression) is
   // made as a cubic quarter step and quintic quarter and half steps: its error then falls below
-  // the quintic steps' own.
+  // the quintic steps' own. After a step halved for stiffness, steps grow back by doubling.
   void step(const Eigen::VectorXd& y, double h, const ContactForce& law, Eigen::VectorXd& out);
   // A step of a new length costs a new response, so an event is found as the root of the cubic
   // Hermite interpolant of its value over the step (error O(h^4) in time, and the force is
