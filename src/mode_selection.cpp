@@ -74,9 +74,10 @@ ModeSelection select_modes(const Eigen::VectorXd& omega, const Eigen::VectorXd& 
   // under tolerance / n are among the least and sum to under the tolerance: they go without
   // sorting, and only the few others are ordered. A dropped mode's cost adds to the estimate,
   // its compliance stays.
-  const auto drop = [&s](const Take& t) {
-    s.error_estimate += t.cost;
-    s.residual_compliance += t.compliance;
+  Take dropped;
+  const auto drop = [&dropped](const Take& t) {
+    dropped.cost += t.cost;
+    dropped.compliance += t.compliance;
   };
   std::vector<int> candidates;
   for (int i = 2; i < n; ++i) {
@@ -85,9 +86,11 @@ ModeSelection select_modes(const Eigen::VectorXd& omega, const Eigen::VectorXd& 
   }
   std::ranges::sort(candidates, [&take](int i, int j) { return take[i].cost < take[j].cost; });
   for (const int i : candidates) {
-    if (s.error_estimate + take[i].cost <= tolerance) drop(take[i]);
+    if (dropped.cost + take[i].cost <= tolerance) drop(take[i]);
     else s.kept.push_back(i);
   }
+  s.error_estimate = dropped.cost;
+  s.residual_compliance = dropped.compliance;
   std::ranges::sort(s.kept);
   return s;
 }
