@@ -279,7 +279,7 @@ double end_compression(const StepCoefficients& k, const ContactForce& law, doubl
     return u - u_known + k.gC * f + k.gD * rate;
   };
   double lo = 0, hi = u_known, slope = 0;
-  double u = guess > 0 && guess < u_known ? guess : u_known / 2;
+  double u = guess > 0 && guess < u_known ? guess : u_known;  // from above, Newton does not overshoot
   // Newton converges quadratically: after a step of x u the error is about K x^2 u, K = u |g''| /
   // 2 g' at most 1 + |e - 1| / 2 for the power law. It stops once that is below 1e-13 of u.
   const double converged = std::sqrt(1e-13 / (1 + std::abs(e - 1) / 2));
@@ -295,7 +295,10 @@ double end_compression(const StepCoefficients& k, const ContactForce& law, doubl
       return next;
     }
     if (hi - lo <= 1e-15 * hi) return next;
-    if (!(next > lo && next < hi) || !(slope > 0)) next = (lo + hi) / 2;
+    // Near separation the force is all but zero and the root sits at the bracket's top, u_known:
+    // Newton may land on or just past it, which bisection would approach only slowly.
+    if (next >= hi && value < 0 && slope > 0) next = hi;
+    else if (!(next > lo && next < hi) || !(slope > 0)) next = (lo + hi) / 2;
     u = next;
   }
   return u;

@@ -29,12 +29,15 @@ double reference_vf(const ModalBasis& basis, double z) {
   return simulate_impact(basis, s).vf;
 }
 
-// Seconds per impact over the given scenes (median of repeats).
+// Seconds per impact over the given scenes: the median of 7 repeats, each of enough rounds over
+// the scenes to last about 0.2 s (shorter ones catch too much of the machine's other work).
 double seconds_per_impact(const ModalBasis& basis, const std::vector<ImpactScene>& scenes) {
-  const int rounds = std::max<int>(1, 2000 / static_cast<int>(scenes.size()) / 10);
+  const auto round = [&] {
+    for (const ImpactScene& s : scenes) simulate_impact(basis, s);
+  };
+  const int rounds = std::max(1, static_cast<int>(0.2 / median_seconds(3, round)));
   const double t = median_seconds(7, [&] {
-    for (int r = 0; r < rounds; ++r)
-      for (const ImpactScene& s : scenes) simulate_impact(basis, s);
+    for (int r = 0; r < rounds; ++r) round();
   });
   return t / (rounds * scenes.size());
 }
