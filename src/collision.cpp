@@ -183,13 +183,13 @@ class CollisionRun {
 
   // The fixed-step methods must also resolve the contact's own ringing (contact_frequency): a
   // nearly dead ball is so stiff on the expansion branch that a step fit for the modes would
-  // blow up. Such steps are halved until omega_c h <= 2 (powers of two, so the exact stepper's
-  // responses are reused), here at the start and by the steppers at the end; the adaptive
-  // method finds its own.
+  // blow up. Such steps are halved until omega_c h <= contact_phase_limit (2, or less for a
+  // stated accuracy; powers of two, so the exact stepper's responses are reused), here at the
+  // start and by the steppers at the end; the adaptive method finds its own.
   double stiffness_limited(double h, const ContactForce& law) const {
     if constexpr (std::is_same_v<Stepper, detail::DopriStepper>) return h;
     const double omega_c = state_.contact_frequency(y_, law);
-    while (omega_c * h > detail::contact_step_limit && h > detail::smallest_step) h /= 2;
+    while (omega_c * h > options_.contact_phase_limit && h > detail::smallest_step) h /= 2;
     return h;
   }
 

@@ -126,15 +126,15 @@ struct StepOutcome {
   double next_h = 0;
 };
 
-// The fixed-step methods resolve the contact's own ringing: omega_c h stays below this at both
-// ends of a step (at the start by choosing h, at the end by redoing the step at half length: a
-// nearly dead ball re-compressed on its steep expansion branch stiffens a thousandfold in a step).
-constexpr double contact_step_limit = 2;
+// The fixed-step methods resolve the contact's own ringing: omega_c h stays below the options'
+// contact_phase_limit at both ends of a step (at the start by choosing h, at the end by redoing
+// the step at half length: a nearly dead ball re-compressed on its steep expansion branch
+// stiffens a thousandfold in a step).
 constexpr double smallest_step = 1e-12;  // s
 
 inline bool too_stiff_at_end(const ContactState& state, const Eigen::VectorXd& out, double h,
-                             const ContactForce& law) {
-  return h > smallest_step && state.contact_frequency(out, law) * h > contact_step_limit;
+                             const ContactForce& law, const CollisionOptions& options) {
+  return h > smallest_step && state.contact_frequency(out, law) * h > options.contact_phase_limit;
 }
 
 // The two events of a contact: maximum compression (u' falls through 0: the force law switches)

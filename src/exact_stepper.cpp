@@ -188,7 +188,7 @@ std::size_t ExactStepper::frequencies_key(const Eigen::ArrayXd& omega) {
 }
 
 ExactStepper::ExactStepper(const ContactState& state, const CollisionOptions& options)
-    : state_(state), psi_(state.body().psi.array()), psi2_(psi_.square()), psi_w2_(psi_ * state.omega2()),
+    : state_(state), options_(options), psi_(state.body().psi.array()), psi2_(psi_.square()), psi_w2_(psi_ * state.omega2()),
       omega_key_(frequencies_key(state.body().omega.array())), nominal_(options.dt),
       quarter_(state.size()), half_(state.size()) {
   kept_.reserve(16);  // a contact's usual lengths: split, nominal, halved and event steps

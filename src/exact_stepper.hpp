@@ -65,7 +65,7 @@ class ExactStepper {
   std::string refusal() const { return {}; }  // stable at any step for the modes
   StepOutcome attempt(const Eigen::VectorXd& y, double h, const ContactForce& law, Eigen::VectorXd& out) {
     step(y, h, law, out);
-    if (too_stiff_at_end(state_, out, h, law)) {
+    if (too_stiff_at_end(state_, out, h, law, options_)) {
       past_ = past_at_step_start_;  // as if the step had not been made
       return {false, h / 2};
     }
@@ -98,6 +98,7 @@ class ExactStepper {
   static std::size_t frequencies_key(const Eigen::ArrayXd& omega);
 
   const ContactState& state_;
+  CollisionOptions options_;
   Eigen::ArrayXd psi_, psi2_, psi_w2_;  // mode shapes at the contact, squared, and times omega^2
   std::size_t omega_key_;
   double nominal_;

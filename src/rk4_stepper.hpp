@@ -9,7 +9,8 @@ namespace sweetspot::detail {
 
 class Rk4Stepper {
  public:
-  Rk4Stepper(const ContactState& state, const CollisionOptions& options) : state_(state), dt_(options.dt) {
+  Rk4Stepper(const ContactState& state, const CollisionOptions& options)
+      : state_(state), options_(options), dt_(options.dt) {
     for (Eigen::VectorXd* k : {&k1_, &k2_, &k3_, &k4_, &tmp_}) k->resize(state.size());
   }
 
@@ -29,7 +30,7 @@ class Rk4Stepper {
 
   StepOutcome attempt(const Eigen::VectorXd& y, double h, const ContactForce& law, Eigen::VectorXd& out) {
     step(y, h, law, out);
-    if (too_stiff_at_end(state_, out, h, law)) return {false, h / 2};
+    if (too_stiff_at_end(state_, out, h, law, options_)) return {false, h / 2};
     return {true, dt_};
   }
 
@@ -51,6 +52,7 @@ class Rk4Stepper {
 
  private:
   const ContactState& state_;
+  CollisionOptions options_;
   double dt_;
   Eigen::VectorXd k1_, k2_, k3_, k4_, tmp_;
 };

@@ -43,6 +43,10 @@ struct CollisionOptions {
   double window = 5e-3;            // s of free flight followed after each separation
   double max_contact_time = 0.05;  // s; a contact lasting longer is reported as no separation
   bool record_force = false;       // keep the force samples F(t) in the result
+  // rk4, exact: steps are halved until omega_c h stays below this at both ends, omega_c the
+  // contact's own ringing (the ball's stiffness against the contact's mobility). 2 keeps them
+  // stable; a stated accuracy asks less (a nearly dead ball's force falls within a few 1/omega_c).
+  double contact_phase_limit = 2;
 };
 
 enum class CollisionStatus { ok, no_separation, non_finite, refused_step };
