@@ -74,23 +74,29 @@ ModeSelection select_modes(const Eigen::VectorXd& omega, const Eigen::VectorXd& 
   // under tolerance / n are among the least and sum to under the tolerance: they go without
   // sorting, and only the few others are ordered. A dropped mode's cost adds to the estimate,
   // its compliance stays.
-  Take dropped;
-  const auto drop = [&dropped](const Take& t) {
-    dropped.cost += t.cost;
-    dropped.compliance += t.compliance;
-  };
+  // (Plain local sums: a struct or a lambda's capture would keep them in memory.)
+  double dropped_cost = 0, dropped_compliance = 0;
   std::vector<int> candidates;
+  candidates.reserve(n);
   for (int i = 2; i < n; ++i) {
-    if (take[i].cost * n <= tolerance) drop(take[i]);
-    else candidates.push_back(i);
+    if (take[i].cost * n <= tolerance) {
+      dropped_cost += take[i].cost;
+      dropped_compliance += take[i].compliance;
+    } else {
+      candidates.push_back(i);
+    }
   }
   std::ranges::sort(candidates, [&take](int i, int j) { return take[i].cost < take[j].cost; });
   for (const int i : candidates) {
-    if (dropped.cost + take[i].cost <= tolerance) drop(take[i]);
-    else s.kept.push_back(i);
+    if (dropped_cost + take[i].cost <= tolerance) {
+      dropped_cost += take[i].cost;
+      dropped_compliance += take[i].compliance;
+    } else {
+      s.kept.push_back(i);
+    }
   }
-  s.error_estimate = dropped.cost;
-  s.residual_compliance = dropped.compliance;
+  s.error_estimate = dropped_cost;
+  s.residual_compliance = dropped_compliance;
   std::ranges::sort(s.kept);
   return s;
 }
