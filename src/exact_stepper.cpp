@@ -137,7 +137,10 @@ ModeResponse::ModeResponse(const Eigen::ArrayXd& w, double step, double ball_mas
     for (int j = 0; j < data_count; ++j) d(i, j) = m[3 + j], q(i, j) = m[3 + data_count + j];
   }
   const ModeCoefficients ball = mode_coefficients(0, h, b);
-  for (int j = 0; j < data_count; ++j) ball_d[j] = ball[3 + j] / ball_mass, ball_q[j] = ball[3 + data_count + j] / ball_mass;
+  for (int j = 0; j < data_count; ++j) {
+    ball_d[j] = ball[3 + j] / ball_mass;
+    ball_q[j] = ball[3 + data_count + j] / ball_mass;
+  }
 }
 
 StepCoefficients::StepCoefficients(std::shared_ptr<const ModeResponse> r, const Eigen::ArrayXd& psi2,
@@ -188,8 +191,8 @@ std::size_t ExactStepper::frequencies_key(const Eigen::ArrayXd& omega) {
 }
 
 ExactStepper::ExactStepper(const ContactState& state, const CollisionOptions& options)
-    : state_(state), options_(options), psi_(state.body().psi.array()), psi2_(psi_.square()), psi_w2_(psi_ * state.omega2()),
-      omega_key_(frequencies_key(state.body().omega.array())), nominal_(options.dt),
+    : state_(state), options_(options), psi_(state.body().psi.array()), psi2_(psi_.square()),
+      psi_w2_(psi_ * state.omega2()), omega_key_(frequencies_key(state.body().omega.array())), nominal_(options.dt),
       quarter_(state.size()), half_(state.size()) {
   kept_.reserve(16);  // a contact's usual lengths: split, nominal, halved and event steps
 }
@@ -273,8 +276,8 @@ double end_compression(const StepCoefficients& k, const ContactForce& law, doubl
     const double stiffness_rate = (e - 1) * stiffness * inverse_u;
     const double inverse_denominator = 1 / (1 + k.hD * stiffness), numerator = du_known - k.hC * f;
     const double rate = stiffness * numerator * inverse_denominator;
-    const double rate_slope =
-        (stiffness_rate * numerator - stiffness * k.hC * stiffness - rate * k.hD * stiffness_rate) * inverse_denominator;
+    const double rate_slope = (stiffness_rate * numerator - stiffness * k.hC * stiffness -
+                               rate * k.hD * stiffness_rate) * inverse_denominator;
     slope = 1 + k.gC * stiffness + k.gD * rate_slope;
     return u - u_known + k.gC * f + k.gD * rate;
   };

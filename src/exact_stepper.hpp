@@ -103,7 +103,7 @@ class ExactStepper {
   std::size_t omega_key_;
   double nominal_;
   std::vector<StepCoefficients> kept_;  // this impact's steps so far, by length and past ratio
-  PastStep past_, past_at_step_start_;     // the latter for an event step redone from that start
+  PastStep past_, past_at_step_start_;  // the latter restored when a step is redone shorter
   Eigen::VectorXd quarter_, half_;      // the states inside a split step
 };
 
