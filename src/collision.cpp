@@ -257,7 +257,8 @@ class CollisionRun {
     result_.ball_velocity = y_(1);
     result_.a = y_.segment(2, n);
     result_.a_dot = y_.segment(2 + n, n);
-    if (result_.status == CollisionStatus::ok) result_.collision_time = impulse_time(samples_, 0.99);
+    if (!options_.find_collision_time) result_.collision_time = std::nan("");
+    else if (result_.status == CollisionStatus::ok) result_.collision_time = impulse_time(samples_, 0.99);
     if (options_.record_force) result_.force = std::move(samples_);
   }
 

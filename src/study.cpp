@@ -720,6 +720,7 @@ Study load_study(const fs::path& file) {
   base.scene.histories = std::ranges::any_of(study.outputs, is_history);
   base.scene.force_response = std::ranges::count(study.outputs, "force_response") > 0;
   base.scene.mode_response = std::ranges::count(study.outputs, "mode_response") > 0;
+  base.scene.integrator.find_collision_time = std::ranges::count(study.outputs, "collision_time") > 0;
   base.scene.swing.about_center = s["center"] != nullptr;
   study.base = base.scene;
   study.omega_tau = base.omega_tau;

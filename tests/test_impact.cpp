@@ -80,6 +80,20 @@ TEST_CASE("vf_rigid and vf_van_zandt: NaN unless asked, the closed forms when as
   CHECK(simulate_impact(r161_modes(), s).vf_van_zandt == Approx(rigid_vf(s)).epsilon(1e-12));
 }
 
+TEST_CASE("The collision time is found only when asked, and asking changes nothing else", "[impact]") {
+  ImpactScene s = high_impact(0.605);
+  const ImpactResult asked = simulate_impact(r161_modes(), s);
+  CHECK(asked.collision_time > 0);
+  s.integrator.find_collision_time = false;
+  const ImpactResult skipped = simulate_impact(r161_modes(), s);
+  CHECK(std::isnan(skipped.collision_time));
+  CHECK(skipped.vf == asked.vf);
+  CHECK(skipped.contact_time == asked.contact_time);
+  // g(omega tau) is on a grid in units of tau, so it finds tau anyway.
+  s.force_response = true;
+  CHECK(simulate_impact(r161_modes(), s).collision_time == asked.collision_time);
+}
+
 TEST_CASE("A lossless ball (e0 = 1) gives the exit speed of the R_n formula", "[impact]") {
   // g(omega) comes from the force profile alone; dt = 1 us keeps its quadrature below 1e-7.
   for (double z : {0.605, 0.705, 0.785}) {

@@ -43,6 +43,7 @@ struct CollisionOptions {
   double window = 5e-3;            // s of free flight followed after each separation
   double max_contact_time = 0.05;  // s; a contact lasting longer is reported as no separation
   bool record_force = false;       // keep the force samples F(t) in the result
+  bool find_collision_time = true;  // the 99 % impulse time (NaN when not asked: a study may not)
   // rk4, exact: steps are halved until omega_c h stays below this at both ends, omega_c the
   // contact's own ringing (the ball's stiffness against the contact's mobility). 2 keeps them
   // stable; a stated accuracy asks less (a nearly dead ball's force falls within a few 1/omega_c).
@@ -64,7 +65,7 @@ struct Collision {
   double ball_velocity = 0;    // final, m/s, positive away from the bat
   Eigen::VectorXd a, a_dot;    // final modal state
   double contact_time = 0;     // s in contact, summed over contacts
-  double collision_time = 0;   // s from first touch until 99 % of the impulse is delivered
+  double collision_time = 0;   // s from first touch until 99 % of the impulse is delivered (or NaN)
   double u_max = 0;            // largest compression, m
   double peak_force = 0;       // N
   double impulse = 0;          // N s delivered to the ball
