@@ -107,7 +107,7 @@ class CollisionRun {
         stepper_(make_stepper(ball_speed)), y_(2 + 2 * body.count()) {
     y_.setZero();
     y_(1) = -ball_speed;
-    samples_.reserve(256);  // a contact's steps, mostly, without reallocation
+    if (keeps_samples()) samples_.reserve(256);  // a contact's steps, mostly, without reallocation
     y_.tail(body.count()) = body.velocity0;
   }
 
@@ -142,7 +142,7 @@ class CollisionRun {
     ContactForce law(ball_);
     const double touch = t_;
     const double v_start = y_(1);
-    samples_.push_back(state_.sample(t_, y_, law));
+    record_sample(law);
     VectorXd next(y_.size());
     double h = stepper_.first_step();
     while (true) {
@@ -169,7 +169,7 @@ class CollisionRun {
       }
       y_.swap(next);
       t_ += h;
-      samples_.push_back(state_.sample(t_, y_, law));
+      record_sample(law);
       if (separated) break;
       h = outcome.next_h;
     }
@@ -248,8 +248,14 @@ class CollisionRun {
     }
     evolve_free(body_, y_, hi, trial);
     y_ = trial;
-    samples_.push_back({t_ + lo, 0.0, 0.0});  // the force stays zero over the gap
+    if (keeps_samples()) samples_.push_back({t_ + lo, 0.0, 0.0});  // the force stays zero over the gap
     t_ += hi;
+  }
+
+  // The force samples serve the collision time and the recorded profile: nothing else.
+  bool keeps_samples() const { return options_.record_force || options_.find_collision_time; }
+  void record_sample(const ContactForce& law) {
+    if (keeps_samples()) samples_.push_back(state_.sample(t_, y_, law));
   }
 
   void finish() {

@@ -62,6 +62,12 @@ ModeSelection select_modes(const Eigen::VectorXd& omega, const Eigen::VectorXd& 
   const int n = static_cast<int>(omega.size());
   const double pulse_omega2 = pulse_omega * pulse_omega;
   const double duration2 = s.pulse_duration * s.pulse_duration / (std::numbers::pi * std::numbers::pi);
+  // Drop the modes that cost least while their sum stays within the tolerance. Those costing
+  // under tolerance / n are among the least and sum to under the tolerance: they go at once,
+  // and only the few others are ordered. A dropped mode's cost adds to the estimate, its
+  // compliance stays. (The sums are plain locals, and the first loop calls nothing: otherwise
+  // they would go through memory at every mode.)
+  double dropped_cost = 0, dropped_compliance = 0;
   std::vector<Take> take(n);
   for (int i = 2; i < n; ++i) {
     const double w2 = omega(i) * omega(i), inverse_w2 = 1 / w2, psi2 = psi(i) * psi(i);
@@ -69,23 +75,14 @@ ModeSelection select_modes(const Eigen::VectorXd& omega, const Eigen::VectorXd& 
     take[i].compliance = psi2 * inverse_w2;
     take[i].cost = recoil_sensitivity * ball.mass * psi2 * response_bound(w2 * duration2) +
                    compliance_sensitivity * take[i].compliance * lag;
-  }
-  // Drop the modes that cost least while their sum stays within the tolerance. Those costing
-  // under tolerance / n are among the least and sum to under the tolerance: they go without
-  // sorting, and only the few others are ordered. A dropped mode's cost adds to the estimate,
-  // its compliance stays.
-  // (Plain local sums: a struct or a lambda's capture would keep them in memory.)
-  double dropped_cost = 0, dropped_compliance = 0;
-  std::vector<int> candidates;
-  candidates.reserve(n);
-  for (int i = 2; i < n; ++i) {
     if (take[i].cost * n <= tolerance) {
       dropped_cost += take[i].cost;
       dropped_compliance += take[i].compliance;
-    } else {
-      candidates.push_back(i);
     }
   }
+  std::vector<int> candidates;
+  for (int i = 2; i < n; ++i)
+    if (take[i].cost * n > tolerance) candidates.push_back(i);
   std::ranges::sort(candidates, [&take](int i, int j) { return take[i].cost < take[j].cost; });
   for (const int i : candidates) {
     if (dropped_cost + take[i].cost <= tolerance) {
