@@ -13,6 +13,7 @@ double ContactForce::operator()(double u) const {
 }
 
 double ContactForce::stiffness(double u) const {
+  if (u == 0 && !expanding_ && ball_.a == 1) return ball_.k1;
   if (u <= 0) return 0;
   return exponent() * (*this)(u) / u;
 }

@@ -87,7 +87,7 @@ class ContactState {
   // Force and its time derivative dF/dt = F'(u_ball) u_ball', u_ball' = u' / (1 + c F').
   ForceSample sample(double t, const Eigen::VectorXd& y, const ContactForce& law) const {
     const double u = ball_compression(compression(y), law), force = law(u);
-    const double stiffness = u > 0 ? law.exponent() * force / u : 0.0;  // F'(u), without a second pow
+    const double stiffness = law.stiffness(u);  // F'(u): the force's pow is remembered
     return {t, force, stiffness * compression_rate(y) / (1 + compliance_ * stiffness)};
   }
 

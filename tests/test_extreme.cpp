@@ -223,11 +223,11 @@ std::vector<Run> run_and_check(const std::vector<Case>& cases) {
 
 TEST_CASE("All modes at N = 84 and 336 under every integrator", "[extreme]") { run_and_check(mode_count_cases()); }
 
-TEST_CASE("Extreme balls: e0 = 0.05, 0.2, 1; a = 1, 3; 0.1 and 150 m/s", "[extreme]") {
+TEST_CASE("Extreme balls: e0 = 0.05, 0.2 and 1, a = 1 and 3, 0.1 and 150 m/s", "[extreme]") {
   run_and_check(ball_cases());
 }
 
-TEST_CASE("Impacts at the knob, the handle and the tip; several contacts on the handle", "[extreme]") {
+TEST_CASE("Impacts at the knob, the handle and the tip, with several contacts on the handle", "[extreme]") {
   const std::vector<Case> cases = location_cases();
   const std::vector<Run> runs = run_and_check(cases);
   for (std::size_t i = 0; i < cases.size(); ++i)

@@ -52,7 +52,7 @@ TEST_CASE("A study gives the same dataset bit for bit on any ranks and threads",
   }
 }
 
-TEST_CASE("xarray opens the dataset; its values are those of sweetspot impact", "[run]") {
+TEST_CASE("xarray opens the dataset and its values are those of sweetspot impact", "[run]") {
   TempDir dir;
   const auto study = dir.write("study.toml", small_study());
   REQUIRE(run_program("run " + study.string() + " -o " + dir / "out.h5 --quiet").exit_code == 0);

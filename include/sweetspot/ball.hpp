@@ -23,7 +23,8 @@ class ContactForce {
 
   // Force for compression u (zero when the ball does not touch, u <= 0).
   double operator()(double u) const;
-  // dF/du at u, for the time derivative of the force profile.
+  // dF/du at u, for the time derivative of the force profile. At first touch (u = 0) its limit
+  // from above: k1 for a linear ball (a = 1), whose force rises at once; 0 for a > 1.
   double stiffness(double u) const;
   // Takes `force` as the force at u, to be answered without a pow: for a caller that has it from
   // a neighbouring evaluation (to round-off).
