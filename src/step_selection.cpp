@@ -39,4 +39,29 @@ CollisionOptions options_for_accuracy(CollisionOptions options, double accuracy,
   return options;
 }
 
+Collision collide_within(const ModalContact& body, const Ball& ball, double ball_speed, CollisionOptions options,
+                         double accuracy) {
+  if (options.method == Method::dopri) return collide(body, ball, ball_speed, options);
+  constexpr int max_halvings = 8;
+  const double gain = std::pow(2.0, std::min(ball.a + 1, 4.0)) - 1;
+  CollisionOptions coarse = options;
+  coarse.dt *= 2;
+  Collision previous = collide(body, ball, ball_speed, coarse);  // may be refused (RK4): then one more halving
+  int agreed = 0;
+  for (int halving = 0;; ++halving) {
+    Collision c = collide(body, ball, ball_speed, options);
+    if (c.status != CollisionStatus::ok) return c;
+    if (previous.status == CollisionStatus::ok) {
+      const double scale = std::max(std::abs(c.ball_velocity), 0.05 * std::abs(ball_speed));
+      const double estimate = std::abs(c.ball_velocity - previous.ball_velocity) / gain;
+      agreed = estimate <= accuracy * scale ? agreed + 1 : 0;
+      // A ball caught again may be caught differently at a finer step, after two coarse runs
+      // agreed on a wrong second contact: there, two checks in a row must pass.
+      if (agreed >= (c.contacts > 1 ? 2 : 1) || halving == max_halvings) return c;
+    }
+    previous = std::move(c);
+    options.dt /= 2;
+  }
+}
+
 }  // namespace sweetspot
