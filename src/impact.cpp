@@ -86,8 +86,9 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& scene) 
   // Van Zandt and the force analyses drive the modes with the force profile.
   options.record_force |= scene.van_zandt_comparison || scene.histories || scene.force_response || scene.mode_response;
   options.find_collision_time |= scene.force_response;  // its omega grid is in units of 1/tau
-  const Collision c = scene.accuracy > 0 ? collide_within(g.contact, scene.ball, scene.ball_speed, options, scene.accuracy)
-                                         : collide(g.contact, scene.ball, scene.ball_speed, options);
+  const Collision c = scene.accuracy > 0
+                          ? collide_within(g.contact, scene.ball, scene.ball_speed, options, scene.accuracy)
+                          : collide(g.contact, scene.ball, scene.ball_speed, options);
 
   ImpactResult r = collision_result(c);
   if (!scene.integrator.record_force) r.force.clear();  // recorded for this function's use alone
