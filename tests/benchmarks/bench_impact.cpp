@@ -9,7 +9,7 @@
 int main(int argc, char** argv) {
   using namespace sweetspot;
   const ModalBasis basis =
-      compute_modes(load_bat(argc > 1 ? argv[1] : "studies/bats/r161.toml"), BeamTheory::timoshenko);
+      compute_modes(load_bat(argc > 1 ? argv[1] : SWEETSPOT_R161), BeamTheory::timoshenko);
   ImpactScene scene;
   scene.z = 0.705;
   scene.ball_speed = 40;

@@ -7,7 +7,7 @@
 
 int main(int argc, char** argv) {
   using namespace sweetspot;
-  const Bat bat = load_bat(argc > 1 ? argv[1] : "studies/bats/r161.toml");
+  const Bat bat = load_bat(argc > 1 ? argv[1] : SWEETSPOT_R161);
   std::printf("%8s %16s %16s\n", "slices", "timoshenko/ms", "euler-bern./ms");
   for (int n : {84, 168, 336, 672}) {
     const Bat sliced = resample(bat, n);

@@ -56,7 +56,7 @@ double largest_step(const ModalBasis& basis, double z, Method method, const std:
 
 int main(int argc, char** argv) {
   const ModalBasis basis =
-      compute_modes(load_bat(argc > 1 ? argv[1] : "studies/bats/r161.toml"), BeamTheory::timoshenko);
+      compute_modes(load_bat(argc > 1 ? argv[1] : SWEETSPOT_R161), BeamTheory::timoshenko);
   const double z = 0.605, target = 1e-6;
   const double reference = reference_vf(basis, z);
   const double rk4_stable = 0.999 * rk4_stability_limit / basis.omega.maxCoeff();
