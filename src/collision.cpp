@@ -162,7 +162,10 @@ class CollisionRun {
       bool separated = false;
       if (!law.expanding() && state_.compression_rate(next) <= 0) {
         h = stepper_.locate(y_, h, law, detail::ContactEvent::max_compression, next);
-        law.start_expansion(state_.ball_compression(state_.compression(next), law));
+        const double u_max = state_.ball_compression(state_.compression(next), law);
+        // A graze that never compressed the ball is over (and F_m = k1 u_m^a needs u_m > 0).
+        if (u_max > 0) law.start_expansion(u_max);
+        else separated = true;
       } else if (law.expanding() && state_.compression(next) <= 0) {
         h = stepper_.locate(y_, h, law, detail::ContactEvent::separation, next);
         separated = true;
@@ -223,7 +226,9 @@ class CollisionRun {
     double s = y_(0), tau = 0, previous = 0;
     while (tau < end) {
       const double u = (psi * a).sum() - s;
-      if (u > 0) {
+      // At tau = 0 the ball has just been found to separate: the step to that root may leave a
+      // trace of compression (1e-12 m), which is this contact ending, not the next one starting.
+      if (u > 0 && tau > 0) {
         move_to_touch(previous, tau);
         return true;
       }
@@ -287,6 +292,7 @@ const char* to_string(CollisionStatus status) {
     case CollisionStatus::no_separation: return "no_separation";
     case CollisionStatus::non_finite: return "non_finite";
     case CollisionStatus::refused_step: return "refused_step";
+    case CollisionStatus::unbalanced: return "unbalanced";
   }
   return "unknown";
 }

@@ -264,6 +264,16 @@ double ExactStepper::locate(const Eigen::VectorXd& y, double h, const ContactFor
   return event == ContactEvent::separation ? hi * h : fraction * h;
 }
 
+// At first touch the force grows as (u' t)^a, which no cubic follows; the slope given for it at
+// t = 0 is the one that makes the cubic's impulse over the step that of the power law (through
+// the end's F1 ~ F(u' h) and F1' = a F1 / h): (F1 / h) (a + 12 / (a + 1) - 6), the secant's
+// k1 for a linear ball, nearly 0 for a = 1.84, and exact in the limit a = 2 (F'(0) = 0).
+double touch_stiffness(const ContactForce& law, double u_end) {
+  if (law.expanding() || !(u_end > 0)) return law.stiffness(0);
+  const double a = law.exponent();
+  return law(u_end) / u_end * (a + 12 / (a + 1) - 6);
+}
+
 // Solves for the end compression u1 with F1 = F(u1) and F1' = F'(u1) u1': Newton on
 // g(u) = u - u_known + gC F(u) + gD F1'(u), kept inside [0, u_known] where g changes sign.
 // `guess` is a prediction of u1 (the Taylor step from the start of the step).
@@ -323,7 +333,7 @@ void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, 
 
   // The start: the ball's compression, its rate and acceleration, the force and its rate.
   const double u0 = state_.ball_compression(state_.compression(y), law), du0_geometric = state_.compression_rate(y);
-  const double f0 = law(u0), k0 = law.stiffness(u0);
+  const double f0 = law(u0), k0 = u0 == 0 ? touch_stiffness(law, du0_geometric * m.h) : law.stiffness(u0);
   const double du0 = du0_geometric / (1 + state_.compliance() * k0), r0 = k0 * du0;
   const bool quintic = m.past_ratio > 0;
   const double fp = quintic ? past_.force : 0.0, rp = quintic ? past_.rate : 0.0;

@@ -1,5 +1,8 @@
 #include "sweetspot/impact.hpp"
 
+#include <cmath>
+#include <cstdio>
+
 #include "sweetspot/formulas.hpp"
 #include "sweetspot/step_selection.hpp"
 
@@ -55,8 +58,17 @@ std::vector<double> force_response_grid() {
   return grid;
 }
 
-void close_balance(ImpactEnergy& e) {
+void close_balance(ImpactResult& r) {
+  ImpactEnergy& e = r.energy;
   e.residual = e.initial - (e.ball + e.bat_translation + e.bat_rotation + e.vibration + e.ball_dissipated);
+  if (r.status != CollisionStatus::ok || std::abs(e.residual) <= balance_limit * e.initial) return;  // NaN: not
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "the energy balance is off by %.2g of the initial energy: the step is too coarse for this pulse "
+                "(take a smaller dt, or state accuracy)",
+                std::abs(e.residual) / e.initial);
+  r.status = CollisionStatus::unbalanced;
+  r.message = text;
 }
 
 ImpactResult collision_result(const Collision& c) {
@@ -107,7 +119,7 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& scene) 
   e.initial = 0.5 * scene.ball.mass * scene.ball_speed * scene.ball_speed + 0.5 * g.contact.velocity0.squaredNorm();
   e.ball = 0.5 * scene.ball.mass * r.vf * r.vf;
   bat_energies(scene, g, basis, c, r);
-  close_balance(e);
+  close_balance(r);
   return r;
 }
 

@@ -41,7 +41,7 @@ ImpactResult toy_model(double omega_tau) {
   r.energy.ball = 0.5 * ball_mass * r.vf * r.vf;
   r.energy.bat_translation = c.mode_energy(bat, 0);
   r.energy.vibration = c.mode_energy(bat, 1);
-  close_balance(r.energy);
+  close_balance(r);
   if (c.status != CollisionStatus::ok) return r;  // no whole force profile to drive the modes with
   const double recoil = ball_mass / total;         // the rigid bat: all of it moves as one
   r.vf_van_zandt = van_zandt_exit_speed(bat, ball, recoil, speed, 0.0, c.force);

@@ -8,7 +8,7 @@ ImpactResult hit_wall(const Ball& ball, double speed, const CollisionOptions& op
   r.e_eff = r.vf / speed;
   r.energy.initial = 0.5 * ball.mass * speed * speed;
   r.energy.ball = 0.5 * ball.mass * r.vf * r.vf;
-  close_balance(r.energy);
+  close_balance(r);
   return r;
 }
 

@@ -295,7 +295,8 @@ TEST_CASE("A nearly dead ball's stiff expansion is integrated or refused, never 
 // nearly dead ball lingers at tiny compression after its expansion; when the bat's vibration
 // presses it again, its force F_m (u/u_m)^70 stiffens a thousandfold within one step. Checked at
 // the start of a step alone, such steps ran away (exit speeds of 1e24 m/s, reported ok); the
-// steppers now redo a step that ends too stiff (omega_c h > 2) at half its length.
+// steppers now redo a step that ends too stiff (omega_c h > 2) at half its length. A balance
+// off by more than 1 % is reported as unbalanced, not ok.
 TEST_CASE("Coarse steps on a nearly dead ball stay bounded and close the energy balance", "[extreme]") {
   for (double z : {0.45, 0.805})
     for (double speed : {10.0, 150.0})
@@ -308,7 +309,9 @@ TEST_CASE("Coarse steps on a nearly dead ball stay bounded and close the energy 
         const Case c{label("e0=0.2 coarse dt=", dt), &r161(), s, 0.05};  // measured <= 1.3e-2
         const Run r = run(c);
         INFO(describe(c, r));
-        CHECK(r.result.status == CollisionStatus::ok);
+        const bool ok = r.result.status == CollisionStatus::ok;
+        CHECK((ok || r.result.status == CollisionStatus::unbalanced));
+        CHECK(ok == (balance_error(r.result) <= balance_limit));
         // No rebound beats the approach speed plus twice the bat's (the rigid, lossless limit).
         const double bat_speed = s.swing.omega * (z - s.swing.center);
         CHECK(std::abs(r.result.vf) < speed + 2 * bat_speed);

@@ -50,7 +50,8 @@ struct CollisionOptions {
   double contact_phase_limit = 2;
 };
 
-enum class CollisionStatus { ok, no_separation, non_finite, refused_step };
+// unbalanced: integrated, but the energy balance is off by more than 1 % (impact.hpp)
+enum class CollisionStatus { ok, no_separation, non_finite, refused_step, unbalanced };
 const char* to_string(CollisionStatus status);
 
 struct ForceSample {

@@ -25,9 +25,6 @@ struct ImpactEnergy {
   double residual = 0;
 };
 
-// Sets the residual from the other terms, once they are all filled.
-void close_balance(ImpactEnergy& energy);
-
 struct ImpactResult {
   CollisionStatus status = CollisionStatus::ok;
   std::string message;
@@ -56,6 +53,12 @@ struct ImpactResult {
   std::vector<double> force_response;  // g(omega tau) at each force_response_grid() value
   std::vector<double> mode_response;   // R_n per kept vibrational mode
 };
+
+// Sets the residual from the other terms, once they are all filled. An ok result whose residual
+// exceeds balance_limit of the initial energy is marked unbalanced: its step was far too coarse
+// for the pulse, and its numbers are not to be reported as if they were right.
+constexpr double balance_limit = 1e-2;
+void close_balance(ImpactResult& result);
 
 // The omega tau at which a study gives g(omega tau): 0, 0.1, ..., 20 (tau = collision_time),
 // far enough for g to fall to nothing (N2000 Fig. 4).
