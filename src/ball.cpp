@@ -25,6 +25,11 @@ void ContactForce::start_expansion(double u_max) {
   expanding_ = true;
 }
 
+void ContactForce::resume_compression() {
+  last_u_ = -1;  // the branch changes
+  expanding_ = false;
+}
+
 double ContactForce::loop_energy() const {
   return f_max_ * u_max_ * (1 / (ball_.a + 1) - 1 / (b_ + 1));
 }

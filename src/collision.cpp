@@ -169,6 +169,9 @@ class CollisionRun {
       } else if (law.expanding() && state_.compression(next) <= 0) {
         h = stepper_.locate(y_, h, law, detail::ContactEvent::separation, next);
         separated = true;
+      } else if (law.expanding() && state_.compression(next) > detail::reloading_compression(state_, law)) {
+        h = stepper_.locate(y_, h, law, detail::ContactEvent::reloading, next);
+        law.resume_compression();
       }
       y_.swap(next);
       t_ += h;

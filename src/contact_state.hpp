@@ -137,17 +137,35 @@ inline bool too_stiff_at_end(const ContactState& state, const Eigen::VectorXd& o
   return h > smallest_step && state.contact_frequency(out, law) * h > options.contact_phase_limit;
 }
 
-// The two events of a contact: maximum compression (u' falls through 0: the force law switches)
-// and separation (u falls through 0).
-enum class ContactEvent { max_compression, separation };
+// The events of a contact: maximum compression (u' falls through 0: the force law switches to
+// expansion), separation (u falls through 0) and reloading (an expanding ball pressed past its
+// maximum compression: the law switches back). Each is the zero of a value falling through 0.
+enum class ContactEvent { max_compression, separation, reloading };
 
-inline double event_value(const ContactState& state, ContactEvent event, const Eigen::VectorXd& y) {
-  return event == ContactEvent::separation ? state.compression(y) : state.compression_rate(y);
+// The geometric compression at which the ball's own reaches the expansion branch's u_m (the
+// residual compliance yields c F_m on top).
+inline double reloading_compression(const ContactState& state, const ContactForce& law) {
+  return law.u_max() + state.compliance() * law.f_max();
+}
+
+inline double event_value(const ContactState& state, ContactEvent event, const Eigen::VectorXd& y,
+                          const ContactForce& law) {
+  switch (event) {
+    case ContactEvent::max_compression: return state.compression_rate(y);
+    case ContactEvent::separation: return state.compression(y);
+    case ContactEvent::reloading: break;
+  }
+  return reloading_compression(state, law) - state.compression(y);
 }
 
 inline double event_rate(const ContactState& state, ContactEvent event, const Eigen::VectorXd& y,
                          const ContactForce& law) {
-  return event == ContactEvent::separation ? state.compression_rate(y) : state.compression_acceleration(y, law);
+  switch (event) {
+    case ContactEvent::max_compression: return state.compression_acceleration(y, law);
+    case ContactEvent::separation: return state.compression_rate(y);
+    case ContactEvent::reloading: break;
+  }
+  return -state.compression_rate(y);
 }
 
 // Illinois regula falsi for the step h* in (0, h] at which the event value of step(y, h*) crosses
@@ -156,14 +174,14 @@ inline double event_rate(const ContactState& state, ContactEvent event, const Ei
 template <class Stepper>
 double locate_by_restepping(Stepper& stepper, const ContactState& state, const Eigen::VectorXd& y, double h,
                             const ContactForce& law, ContactEvent event, Eigen::VectorXd& out) {
-  double lo = 0, hi = h, f_lo = event_value(state, event, y), f_hi = event_value(state, event, out);
+  double lo = 0, hi = h, f_lo = event_value(state, event, y, law), f_hi = event_value(state, event, out, law);
   int side = 0;
   Eigen::VectorXd trial(y.size());
   for (int iteration = 0; iteration < 100 && hi - lo > 1e-15 * h; ++iteration) {
     double mid = hi - f_hi * (hi - lo) / (f_hi - f_lo);
     if (!(mid > lo && mid < hi)) mid = (lo + hi) / 2;
     stepper.step(y, mid, law, trial);
-    const double f = event_value(state, event, trial);
+    const double f = event_value(state, event, trial, law);
     if (f > 0) {
       lo = mid, f_lo = f;
       if (side == 1) f_hi /= 2;

@@ -223,8 +223,8 @@ void ExactStepper::step(const Eigen::VectorXd& y, double h, const ContactForce& 
 
 double ExactStepper::locate(const Eigen::VectorXd& y, double h, const ContactForce& law, ContactEvent event,
                             Eigen::VectorXd& out) {
-  const double f0 = event_value(state_, event, y), d0 = event_rate(state_, event, y, law) * h;
-  const double f1 = event_value(state_, event, out), d1 = event_rate(state_, event, out, law) * h;
+  const double f0 = event_value(state_, event, y, law), d0 = event_rate(state_, event, y, law) * h;
+  const double f1 = event_value(state_, event, out, law), d1 = event_rate(state_, event, out, law) * h;
   const auto cubic = [&](double s) {
     const double s2 = s * s, s3 = s2 * s;
     return (2 * s3 - 3 * s2 + 1) * f0 + (s3 - 2 * s2 + s) * d0 + (-2 * s3 + 3 * s2) * f1 + (s3 - s2) * d1;

@@ -31,6 +31,11 @@ class ContactForce {
   void remember(double u, double force) const { last_u_ = u, last_force_ = force; }
   // Switches to the expansion branch at maximum compression u_m.
   void start_expansion(double u_max);
+  // The ball, expanding, is pressed again past u_m (the bat's vibration can do that): it is back
+  // on the compression branch, which meets the expansion one at (u_m, F_m). Below u_m the
+  // expansion branch is elastic both ways, so the next maximum compression starts a loop whose
+  // area is all the contact dissipates.
+  void resume_compression();
   bool expanding() const { return expanding_; }
   // The exponent of the branch in force: F is proportional to u^exponent.
   double exponent() const { return expanding_ ? b_ : ball_.a; }
