@@ -25,10 +25,21 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-void log_rank_summary(int rank, int solves, double impact_seconds, Clock::time_point start) {
+// What a rank's impacts add up to: their wall time, to tell the engine's overhead from them, and
+// the points whose ball compressed past its radius, where the force law is not meant to hold.
+struct RankTally {
+  double impact_seconds = 0;
+  std::size_t past_radius = 0;
+};
+
+void log_rank_summary(int rank, int solves, const RankTally& tally, Clock::time_point start) {
   const double total = seconds_since(start);
   spdlog::info("rank {}: {} eigen-solves; {:.3f} s of {:.3f} s in impacts ({:.1f} % elsewhere)", rank, solves,
-               impact_seconds, total, 100 * (1 - impact_seconds / total));
+               tally.impact_seconds, total, 100 * (1 - tally.impact_seconds / total));
+  if (tally.past_radius > 0)
+    spdlog::warn("rank {}: {} points compressed the ball past its radius (u_max > radius): the force law is not "
+                 "meant for that",
+                 rank, tally.past_radius);
 }
 
 // The modal bases this rank has computed, one per (bat, slices, theory).
@@ -55,9 +66,9 @@ class ModalCache {
 };
 
 // Computes a chunk of points with the OpenMP threads; rows in the order of `points`. Adds the
-// wall time of the impacts alone to `impact_seconds`, to tell the engine's overhead from them.
+// chunk to the rank's tally.
 std::vector<double> compute_chunk(const Study& study, const OutputLayout& layout, ModalCache& cache,
-                                  const std::vector<std::uint64_t>& points, double& impact_seconds) {
+                                  const std::vector<std::uint64_t>& points, RankTally& tally) {
   std::vector<GridPoint> grid(points.size());
   std::vector<const ModalBasis*> bases(points.size(), nullptr);  // none for the wall and the toy
   for (std::size_t i = 0; i < points.size(); ++i) {  // modes first, serially: the cache is not shared
@@ -66,10 +77,16 @@ std::vector<double> compute_chunk(const Study& study, const OutputLayout& layout
   }
   std::vector<double> rows(points.size() * layout.width);
   const auto start = Clock::now();
-#pragma omp parallel for schedule(dynamic)
-  for (std::size_t i = 0; i < points.size(); ++i)
-    layout.extract(simulate_point(grid[i], bases[i]), rows.data() + i * layout.width);
-  impact_seconds += seconds_since(start);
+  std::size_t past_radius = 0;
+#pragma omp parallel for schedule(dynamic) reduction(+ : past_radius)
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const ImpactResult r = simulate_point(grid[i], bases[i]);
+    // The toy model's ball is dimensionless: no radius to pass.
+    if (grid[i].kind != StudyKind::toy && r.u_max > grid[i].scene.ball.radius) ++past_radius;
+    layout.extract(r, rows.data() + i * layout.width);
+  }
+  tally.impact_seconds += seconds_since(start);
+  tally.past_radius += past_radius;
   return rows;
 }
 
@@ -120,12 +137,12 @@ class Coordinator {
       serve_requests(active, next_ >= todo_.size());
       if (next_ < todo_.size()) {
         const std::vector<std::uint64_t> chunk = take_chunk(own_chunk_);
-        finish(chunk, compute_chunk(study_, layout_, cache_, chunk, impact_seconds_));
+        finish(chunk, compute_chunk(study_, layout_, cache_, chunk, tally_));
       }
     }
   }
 
-  void log_summary(Clock::time_point start) const { log_rank_summary(0, cache_.solves(), impact_seconds_, start); }
+  void log_summary(Clock::time_point start) const { log_rank_summary(0, cache_.solves(), tally_, start); }
 
   const std::vector<double>& rows() const { return rows_; }
   void remove_journal() { journal_.remove(); }
@@ -190,12 +207,12 @@ class Coordinator {
   Progress progress_;
   std::vector<std::uint64_t> todo_;
   std::size_t next_ = 0, chunk_ = 1, own_chunk_ = 1;
-  double impact_seconds_ = 0;
+  RankTally tally_;
 };
 
 void work(const Study& study, const OutputLayout& layout, int rank) {
   const auto start = Clock::now();
-  double impact_seconds = 0;
+  RankTally tally;
   ModalCache cache(study);
   std::vector<double> message;  // first request: no result
   while (true) {
@@ -207,11 +224,11 @@ void work(const Study& study, const OutputLayout& layout, int rank) {
     std::vector<std::uint64_t> chunk(count);
     MPI_Recv(chunk.data(), count, MPI_UINT64_T, 0, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
     if (status.MPI_TAG == tag_stop) break;
-    const std::vector<double> rows = compute_chunk(study, layout, cache, chunk, impact_seconds);
+    const std::vector<double> rows = compute_chunk(study, layout, cache, chunk, tally);
     message.assign(chunk.begin(), chunk.end());
     message.insert(message.end(), rows.begin(), rows.end());
   }
-  log_rank_summary(rank, cache.solves(), impact_seconds, start);
+  log_rank_summary(rank, cache.solves(), tally, start);
 }
 
 // The vibrational frequencies (Hz) of each bat; none for the kinds without a bat, nor for

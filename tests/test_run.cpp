@@ -154,3 +154,26 @@ TEST_CASE("A study of rigid bats computes no eigen-decomposition and stores no f
   INFO(check.output);
   CHECK(check.exit_code == 0);
 }
+
+TEST_CASE("Points that compress the ball past its radius are reported, by the impact command too", "[run]") {
+  // a = 3 at 30-40 m/s compresses the ball 54-62 mm, past its 36.6 mm radius: the model runs, but
+  // its force law is not meant for that, and the user is told.
+  TempDir dir;
+  std::string text = small_study();
+  text.replace(text.find("[scene]\n"), 8, "[scene]\na = 3\n");
+  const auto study = dir.write("study.toml", text);
+  const ProgramRun run = run_program("run " + study.string() + " -o " + dir / "out.h5 --quiet");
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  CHECK_THAT(run.output, Catch::Contains("rank 0: 12 points compressed the ball past its radius"));
+  const ProgramRun normal = run_program("run " + dir.write("normal.toml", small_study()).string() + " -o " +
+                                        dir / "normal.h5 --quiet");
+  CHECK_THAT(normal.output, !Catch::Contains("radius"));
+
+  const std::string impact = "impact --bat " + source_path("studies/bats/r161.toml") +
+                             " --z 0.605 --ball-speed 40 --center 0.09 --omega 51 --integrator exact";
+  const ProgramRun past = run_program(impact + " --a 3");
+  CHECK(past.exit_code == 0);
+  CHECK_THAT(past.output, Catch::Contains("past its radius 36.6 mm"));
+  CHECK_THAT(run_program(impact).output, !Catch::Contains("radius"));
+}

@@ -103,6 +103,10 @@ void run_impact(ImpactOptions& o) {
   if (r.status == CollisionStatus::refused_step) throw InputError("--dt: " + r.message);
   if (o.json) print_json(r);
   else print_text(r);
+  if (r.u_max > o.scene.ball.radius)
+    std::fprintf(stderr, "sweetspot: warning: the ball compressed %.3g mm, past its radius %.3g mm: the force law is "
+                         "not meant for that\n",
+                 1e3 * r.u_max, 1e3 * o.scene.ball.radius);
 }
 
 }  // namespace
