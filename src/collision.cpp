@@ -47,13 +47,6 @@ double hermite_integral(const ForceSample& p, const ForceSample& q, double tau) 
               (-s4 / 2 + s3) * q.force + (s4 / 4 - s3 / 3) * h * q.rate);
 }
 
-// The cubic Hermite interpolant of F itself at tau into the segment.
-double hermite_value(const ForceSample& p, const ForceSample& q, double tau) {
-  const double h = q.t - p.t, s = tau / h, s2 = s * s, s3 = s2 * s;
-  return (2 * s3 - 3 * s2 + 1) * p.force + (s3 - 2 * s2 + s) * h * p.rate + (-2 * s3 + 3 * s2) * q.force +
-         (s3 - s2) * h * q.rate;
-}
-
 std::string format(const char* pattern, double x, double y) {
   char buf[256];
   std::snprintf(buf, sizeof buf, pattern, x, y);
@@ -304,6 +297,16 @@ double Collision::mode_energy(const ModalContact& body, int n) const {
   return 0.5 * (a_dot(n) * a_dot(n) + body.omega(n) * body.omega(n) * a(n) * a(n));
 }
 
+ForceSample interpolate_force(const ForceSample& p, const ForceSample& q, double t) {
+  const double h = q.t - p.t, s = (t - p.t) / h, s2 = s * s, s3 = s2 * s;
+  const double value = (2 * s3 - 3 * s2 + 1) * p.force + (s3 - 2 * s2 + s) * h * p.rate +
+                       (-2 * s3 + 3 * s2) * q.force + (s3 - s2) * h * q.rate;
+  const double rate = ((6 * s2 - 6 * s) * p.force + (3 * s2 - 4 * s + 1) * h * p.rate +
+                       (-6 * s2 + 6 * s) * q.force + (3 * s2 - 2 * s) * h * q.rate) /
+                      h;
+  return {t, value, rate};
+}
+
 double impulse_time(const std::vector<ForceSample>& force, double fraction) {
   double total = 0;
   for (std::size_t i = 1; i < force.size(); ++i) total += hermite_integral(force[i - 1], force[i], force[i].t - force[i - 1].t);
@@ -323,7 +326,7 @@ double impulse_time(const std::vector<ForceSample>& force, double fraction) {
     for (int iteration = 0; iteration < 100 && hi - lo > 1e-15 * h; ++iteration) {
       const double excess = delivered + hermite_integral(p, q, tau) - target;
       (excess < 0 ? lo : hi) = tau;
-      const double rate = hermite_value(p, q, tau), step = rate > 0 ? excess / rate : 0.0;
+      const double rate = interpolate_force(p, q, p.t + tau).force, step = rate > 0 ? excess / rate : 0.0;
       double next = tau - step;
       if (!(next > lo && next < hi) || rate <= 0) next = (lo + hi) / 2;
       if (std::abs(step) <= 1e-15 * h && rate > 0) return p.t + next;

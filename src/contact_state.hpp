@@ -34,12 +34,9 @@ class ContactState {
   }
   // A stepper that knows u and u' of a state it made in closed form leaves them here: events,
   // samples and the next step ask for them again, and then cost no dot product over the modes.
-  // It may know the ball's own compression too (it solved for it): that saves solving again.
-  void remember(const Eigen::VectorXd& y, double u, double du) const {
-    known_key_ = key(y), known_u_ = u, known_du_ = du;
-  }
+  // It knows the ball's own compression too (it solved for it): that saves solving again.
   void remember(const Eigen::VectorXd& y, double u, double du, const ContactForce& law, double ball_u) const {
-    remember(y, u, du);
+    known_key_ = key(y), known_u_ = u, known_du_ = du;
     remember_ball_compression(u, law, ball_u);
   }
   // The ball's own compression: the dropped modes' static yield c F takes up part of the

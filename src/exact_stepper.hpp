@@ -49,9 +49,8 @@ struct StepCoefficients {
   // The modes' part alone of those sums (no ball, no compliance): sum psi^2 dC, dD, qC, qD.
   double mode_dC = 0, mode_dD = 0, mode_qC = 0, mode_qD = 0;
 
-  StepCoefficients() = default;
   StepCoefficients(std::shared_ptr<const ModeResponse> r, const Eigen::ArrayXd& psi2, double compliance);
-  double h() const { return response ? response->h : 0; }
+  double h() const { return response->h; }
   double past_ratio() const { return response->past_ratio; }
 };
 

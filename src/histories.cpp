@@ -15,14 +15,7 @@ ForceSample force_at(const std::vector<ForceSample>& force, double t) {
     return x < s.t;
   });
   if (after == force.begin() || after == force.end()) return {t, 0, 0};
-  const ForceSample &p = *(after - 1), &q = *after;
-  const double h = q.t - p.t, s = (t - p.t) / h, s2 = s * s, s3 = s2 * s;
-  const double value = (2 * s3 - 3 * s2 + 1) * p.force + (s3 - 2 * s2 + s) * h * p.rate +
-                       (-2 * s3 + 3 * s2) * q.force + (s3 - s2) * h * q.rate;
-  const double rate = ((6 * s2 - 6 * s) * p.force + (3 * s2 - 4 * s + 1) * h * p.rate +
-                       (-6 * s2 + 6 * s) * q.force + (3 * s2 - 2 * s) * h * q.rate) /
-                      h;
-  return {t, value, rate};
+  return interpolate_force(*(after - 1), *after, t);
 }
 
 void reserve(ProbeHistory& p, std::size_t n) {

@@ -83,6 +83,9 @@ inline constexpr double rk4_stability_limit = 2.8;
 
 Collision collide(const ModalContact& body, const Ball& ball, double ball_speed, const CollisionOptions& options);
 
+// F and dF/dt at time t in [p.t, q.t], from the cubic Hermite interpolant between two samples.
+ForceSample interpolate_force(const ForceSample& p, const ForceSample& q, double t);
+
 // Time at which a fraction of the impulse is delivered, from the force samples (cubic Hermite).
 double impulse_time(const std::vector<ForceSample>& force, double fraction);
 
