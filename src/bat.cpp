@@ -29,14 +29,16 @@ double overlap_mean(const std::vector<double>& values, double dz, double a, doub
 
 }  // namespace
 
-double Bat::area(int i) const {
-  const double inner = hollow() ? disc_area(inner_diameter[i]) : 0.0;
-  return disc_area(outer_diameter[i]) - inner;
-}
-
-double Bat::second_moment(int i) const {
-  const double inner = hollow() ? disc_second_moment(inner_diameter[i]) : 0.0;
-  return disc_second_moment(outer_diameter[i]) - inner;
+void Bat::set_slices(std::vector<double> outer, std::vector<double> inner) {
+  outer_diameter = std::move(outer);
+  inner_diameter = std::move(inner);
+  section_area.clear();
+  section_second_moment.clear();
+  for (int i = 0; i < slices(); ++i) {
+    const double d = hollow() ? inner_diameter[i] : 0.0;
+    section_area.push_back(disc_area(outer_diameter[i]) - disc_area(d));
+    section_second_moment.push_back(disc_second_moment(outer_diameter[i]) - disc_second_moment(d));
+  }
 }
 
 Bat resample(const Bat& bat, int n) {
@@ -44,12 +46,14 @@ Bat resample(const Bat& bat, int n) {
   Bat out = bat;
   const double old_dz = bat.slice_thickness();
   const double new_dz = bat.length / n;
-  out.outer_diameter.assign(n, 0.0);
-  if (bat.hollow()) out.inner_diameter.assign(n, 0.0);
+  for (auto* v : {&out.outer_diameter, &out.inner_diameter, &out.section_area, &out.section_second_moment})
+    v->clear();
   for (int i = 0; i < n; ++i) {
     const double a = i * new_dz, b = (i + 1) * new_dz;
-    out.outer_diameter[i] = overlap_mean(bat.outer_diameter, old_dz, a, b);
-    if (bat.hollow()) out.inner_diameter[i] = overlap_mean(bat.inner_diameter, old_dz, a, b);
+    out.outer_diameter.push_back(overlap_mean(bat.outer_diameter, old_dz, a, b));
+    if (bat.hollow()) out.inner_diameter.push_back(overlap_mean(bat.inner_diameter, old_dz, a, b));
+    out.section_area.push_back(overlap_mean(bat.section_area, old_dz, a, b));
+    out.section_second_moment.push_back(overlap_mean(bat.section_second_moment, old_dz, a, b));
   }
   return out;
 }

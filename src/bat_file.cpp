@@ -245,7 +245,7 @@ void check_slicing(const fs::path& file, const std::vector<Row>& rows, double le
   }
 }
 
-// Reads the profile into bat.outer_diameter (and inner_diameter for a hollow bat).
+// Reads the profile into the bat's slices (outer and, for a hollow bat, inner diameters).
 void read_profile(const fs::path& file, const std::string& context, Bat& bat) {
   const std::string text = read_text(file, context);  // rows keep views into it
   std::optional<Columns> columns;
@@ -266,10 +266,12 @@ void read_profile(const fs::path& file, const std::string& context, Bat& bat) {
   if (!columns) fail(file.string(), "no header line; expected e.g. 'z_center_m,outer_diameter_m'");
   if (rows.empty()) fail(file.string(), "the profile has no rows; expected one row per slice");
   check_slicing(file, rows, bat.length);
+  std::vector<double> outer, inner;
   for (const Row& row : rows) {
-    bat.outer_diameter.push_back(row.outer);
-    if (columns->inner >= 0) bat.inner_diameter.push_back(row.inner);
+    outer.push_back(row.outer);
+    if (columns->inner >= 0) inner.push_back(row.inner);
   }
+  bat.set_slices(std::move(outer), std::move(inner));
 }
 
 }  // namespace

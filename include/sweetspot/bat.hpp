@@ -1,6 +1,9 @@
 #pragma once
 // A bat: a free-free beam cut into N slices of equal thickness L/N (physics.md §1-2).
 // Plain data plus the geometry and mass properties that follow from it; no I/O here.
+// A slice's mechanics is its section area A and second moment I, the means over the slice: a
+// slice cut from a finer profile (resample) has the mean A and I of what it covers, which no
+// single diameter gives, so the two are kept beside the diameters that describe its shape.
 #include <string>
 #include <vector>
 
@@ -17,16 +20,21 @@ struct Bat {
   std::string name;
   double length = 0;                   // m
   Material material;
-  std::vector<double> outer_diameter;  // m, one per slice, knob first
+  std::vector<double> outer_diameter;  // m, one per slice (its mean over the slice), knob first
   std::vector<double> inner_diameter;  // m, one per slice; empty for a solid bat
+  std::vector<double> section_area;    // m^2, one per slice: the mean of A over the slice
+  std::vector<double> section_second_moment;  // m^4, one per slice: the mean of I about a diameter
+
+  // Slices of uniform section with these diameters (inner empty: solid), A and I from them.
+  void set_slices(std::vector<double> outer, std::vector<double> inner = {});
 
   int slices() const { return static_cast<int>(outer_diameter.size()); }
   double slice_thickness() const { return length / slices(); }
   double slice_center(int i) const { return (i + 0.5) * slice_thickness(); }
   bool hollow() const { return !inner_diameter.empty(); }
 
-  double area(int i) const;           // cross-section area of slice i
-  double second_moment(int i) const;  // area moment of inertia of slice i about its diameter
+  double area(int i) const { return section_area[i]; }
+  double second_moment(int i) const { return section_second_moment[i]; }
   double slice_mass(int i) const { return material.density * area(i) * slice_thickness(); }
   // Rotary inertia of slice i about its own transverse axis, as the Timoshenko model has it.
   double slice_rotary_inertia(int i) const {
@@ -34,8 +42,9 @@ struct Bat {
   }
 };
 
-// The same bat cut into n slices. Each new slice takes the overlap-weighted mean diameter of
-// the old slices it covers, so refining by a whole factor leaves the geometry exactly as it was.
+// The same bat cut into n slices. Each new slice takes the overlap-weighted means of A and I of
+// the old slices it covers (so the mass is exact for any n; refining by a whole factor leaves the
+// bat exactly as it was), and of their diameters to describe its shape.
 Bat resample(const Bat& bat, int n);
 
 // Mass properties of the sliced bat: the slices' masses at their centres plus their own rotary
