@@ -51,7 +51,8 @@ Histories impact_histories(const ModalBasis& basis, const SceneGeometry& g, cons
     const Eigen::ArrayXd acceleration = -omega2 * a - psi * f0.force;
     h.time.push_back(t);
     h.force.push_back(f0.force);
-    h.compression.push_back((psi * a).sum() - s);
+    // The ball's own compression: the bat's local and residual compliance yields c F of the approach.
+    h.compression.push_back((psi * a).sum() - s - body.residual_compliance * f0.force);
     h.ball_position.push_back(s);
     for (std::size_t k = 0; k < probe_shapes.size(); ++k) {
       const Eigen::ArrayXd& shape = probe_shapes[k];

@@ -25,28 +25,14 @@ void require_positive(const std::string& key, double value) {
   if (!(value > 0) || !std::isfinite(value)) reject(key, value, "must be a positive finite number");
 }
 
-int nearest_slice(const ModalBasis& basis, double z) {
-  const double dz = basis.z.size() > 1 ? basis.z[1] - basis.z[0] : 1.0;
-  return std::clamp(static_cast<int>(std::floor(z / dz)), 0, basis.slices() - 1);
-}
-
-// Mode shapes at any z, linear between slice centres (constant beyond the end centres).
-Eigen::VectorXd shapes_at(const ModalBasis& basis, double z, int kept) {
-  const double dz = basis.z[1] - basis.z[0];
-  const double x = std::clamp((z - basis.z[0]) / dz, 0.0, basis.slices() - 1.0);
-  const int i = std::min(static_cast<int>(x), basis.slices() - 2);
-  const double w = x - i;
-  return ((1 - w) * basis.psi.row(i).head(kept) + w * basis.psi.row(i + 1).head(kept)).transpose();
-}
-
 // The modes an impact keeps: the rigid two, then the first N vibrational ones, all of them, or
 // (auto) those the pulse can excite, the rest folded into a residual compliance.
 std::vector<int> kept_modes(const ImpactScene& scene, const ModalBasis& basis, SceneGeometry& g) {
   std::vector<int> kept = {0, 1};
   if (scene.vibrational_modes == auto_modes) {
     const ModeSelection selection =
-        select_modes(basis.omega, basis.psi.row(g.slice).transpose(), scene.ball, scene.ball_speed, g.bat_speed,
-                     g.recoil, scene.mode_tolerance);
+        select_modes(basis.omega, basis.shapes_at(g.z), scene.ball, scene.ball_speed, g.bat_speed, g.recoil,
+                     scene.mode_tolerance);
     kept.insert(kept.end(), selection.kept.begin(), selection.kept.end());
     g.contact.residual_compliance = selection.residual_compliance;
     g.modes_error = selection.error_estimate;
@@ -90,12 +76,12 @@ void validate_history(const HistoryRequest& h, double length) {
 }  // namespace
 
 Eigen::VectorXd SceneGeometry::shapes_at(const ModalBasis& basis, double z) const {
-  const Eigen::VectorXd free = sweetspot::shapes_at(basis, z, basis.count())(kept);
+  const Eigen::VectorXd free = basis.shapes_at(z)(kept);
   return held.size() ? Eigen::VectorXd(held.transpose() * free) : free;
 }
 
 void validate(const ImpactScene& scene, const ModalBasis& basis) {
-  const double length = basis.z.back() + basis.z.front();
+  const double length = basis.length();
   if (!(scene.z >= 0 && scene.z <= length)) reject("z", scene.z, "must lie on the bat (0 to " + std::to_string(length) + " m)");
   require_finite("ball_speed", scene.ball_speed);
   require_finite("omega", scene.swing.omega);
@@ -122,8 +108,7 @@ void validate(const ImpactScene& scene, const ModalBasis& basis) {
 
 SceneGeometry scene_geometry(const ImpactScene& scene, const ModalBasis& basis) {
   SceneGeometry g;
-  g.slice = nearest_slice(basis, scene.z);
-  g.z = basis.z[g.slice];
+  g.z = std::clamp(scene.z, 0.0, basis.length());
   const Swing& swing = scene.swing;
   g.pivot = swing.center;
   g.cm_speed = swing.about_center ? swing.omega * (basis.z_cm - swing.center) : swing.cm_speed;
@@ -141,12 +126,15 @@ SceneGeometry scene_geometry(const ImpactScene& scene, const ModalBasis& basis) 
   const std::vector<int>& kept = g.kept;
   ModalContact free;
   free.omega = basis.omega(kept);
-  free.psi = basis.psi.row(g.slice)(kept).transpose();
+  free.psi = basis.shapes_at(g.z)(kept);
   free.velocity0 = g.cm_speed * basis.translation(kept) + swing.omega * basis.rotation(kept);
-  free.residual_compliance = g.contact.residual_compliance;
+  // A flexible bat also yields locally where the ball strikes between the discretisation's nodes
+  // (beam_layout.hpp), in series with the ball like the dropped modes; a rigid bat does not.
+  const double local = scene.vibrational_modes == 0 ? 0.0 : basis.layout.point(g.z).compliance;
+  free.residual_compliance = g.contact.residual_compliance + local;
   g.contact = free;
   if (scene.pivoted) {
-    g.contact = constrained_modes(free, shapes_at(basis, g.pivot, basis.count())(kept), g.held);
+    g.contact = constrained_modes(free, basis.shapes_at(g.pivot)(kept), g.held);
     g.contact.residual_compliance = free.residual_compliance;
   }
   return g;

@@ -549,6 +549,19 @@ void check_mode_counts(const Settings& s, const Where& top, const std::vector<Ba
         }
 }
 
+void check_euler_bernoulli_slices(const Settings& s, const Where& top, const std::vector<Bat>& bats,
+                                  const Setting& bat) {
+  const Setting* slices = s["slices"];
+  const Where where = slices ? slices->where : Where{top.file, "scene", 0}.missing("slices");
+  for (std::size_t b = 0; b < bats.size(); ++b)
+    for (const double n : s.values("slices", bats[b].slices()))
+      for (const double theory : s.values("theory", 0))
+        if (static_cast<BeamTheory>(theory) == BeamTheory::euler_bernoulli && n > max_euler_bernoulli_slices)
+          reject(where, format_number(n) + (slices ? "" : " (" + bat_text(bats, bat, b) + "'s own)"),
+                 "at most " + std::to_string(max_euler_bernoulli_slices) +
+                     " slices for theory euler-bernoulli (its dense solve loses the lowest frequencies to round-off)");
+}
+
 void check_grid_size(const Settings& s, const Where& top) {
   double points = 1;
   for (const Setting& axis : s.axes) points *= static_cast<double>(axis.values.size());
@@ -574,6 +587,7 @@ void check_bat_scene(Study& study, const Settings& s, const Where& top) {
   check_on_bats(*s["z"], bats, bat);
   if (const Setting* probes = s["probes"]) check_on_bats(*probes, bats, bat);
   check_mode_counts(s, top, bats, bat);
+  check_euler_bernoulli_slices(s, top, bats, bat);
   check_history_samples(s);
 }
 

@@ -28,7 +28,7 @@ struct ImpactEnergy {
 struct ImpactResult {
   CollisionStatus status = CollisionStatus::ok;
   std::string message;
-  double z = 0;               // snapped impact location, m from the knob
+  double z = 0;               // impact location, m from the knob
   double vf = 0;              // exit speed, m/s, positive away from the bat
   double e_eff = 0;           // effective COR
   double contact_time = 0;    // s

@@ -38,7 +38,7 @@ struct HistoryRequest {
 };
 
 struct ImpactScene {
-  double z = 0.7;             // impact location, m from the knob (snapped to a slice centre)
+  double z = 0.7;             // impact location, m from the knob (anywhere on the bat)
   Ball ball;
   double ball_speed = 40;     // m/s toward the bat
   Swing swing;
@@ -69,8 +69,7 @@ void validate(const ImpactScene& scene, const ModalBasis& basis);
 
 // The scene as the collision sees it.
 struct SceneGeometry {
-  int slice = 0;            // struck slice
-  double z = 0;             // its centre: the snapped impact location
+  double z = 0;             // impact location, m from the knob
   double pivot = 0;         // held point (pivoted scenes), m from the knob
   double cm_speed = 0;      // V_cm, m/s
   double bat_speed = 0;     // v_bat at the impact point, m/s
@@ -81,7 +80,7 @@ struct SceneGeometry {
   std::vector<int> kept;        // the basis's modes behind `contact` (0, 1 rigid)
   Eigen::MatrixXd held;         // pivoted: the held bat's modes in the kept ones; empty if free
 
-  // The shapes of the contact's modes at any point z of the bat (linear between slice centres).
+  // The shapes of the contact's modes at any point z of the bat (ModalBasis::shapes_at).
   Eigen::VectorXd shapes_at(const ModalBasis& basis, double z) const;
 };
 

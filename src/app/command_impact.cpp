@@ -142,7 +142,7 @@ void add_impact_command(CLI::App& app) {
       ->check(CLI::IsMember({"timoshenko", "euler-bernoulli"}))
       ->capture_default_str();
   cmd->add_option("--slices", o->slices, "slice count N (default: the profile's own)")->check(CLI::Range(4, 4096));
-  cmd->add_option("--z", o->scene.z, "impact location, m from the knob (snapped to a slice centre)")->required();
+  cmd->add_option("--z", o->scene.z, "impact location, m from the knob (anywhere on the bat)")->required();
   cmd->add_option("--ball-speed", o->scene.ball_speed, "ball speed toward the bat, m/s")->required();
   auto* cm = cmd->add_option("--cm-speed", o->cm_speed, "bat centre-of-mass speed toward the ball, m/s");
   auto* center = cmd->add_option("--center", o->center, "rotation centre (the point at rest), m from the knob");
