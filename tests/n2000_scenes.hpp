@@ -1,6 +1,6 @@
 #pragma once
 // N2000's scenes (physics.md §6) as the tests and benchmarks build them.
-#include "sweetspot/scene.hpp"
+#include "sweetspot/impact/scene.hpp"
 
 // Figs. 10-15: ball 40 m/s, e0 0.5, the bat rotating at 51 rad/s about a point 9 cm from the knob.
 inline sweetspot::ImpactScene n2000_high_impact(double z, int modes = 18) {

@@ -12,8 +12,8 @@
 #include "program.hpp"
 #include "temp_dir.hpp"
 #include "text_edit.hpp"
-#include "sweetspot/bat.hpp"
-#include "sweetspot/bat_file.hpp"
+#include "sweetspot/bat/bat.hpp"
+#include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/input_error.hpp"
 
 namespace fs = std::filesystem;

@@ -7,8 +7,8 @@
 #include <cmath>
 
 #include "program.hpp"
-#include "sweetspot/bat_file.hpp"
-#include "sweetspot/convergence.hpp"
+#include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/study/convergence.hpp"
 #include "temp_dir.hpp"
 
 using namespace sweetspot;

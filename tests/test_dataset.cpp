@@ -15,7 +15,7 @@
 
 #include "program.hpp"
 #include "temp_dir.hpp"
-#include "sweetspot/dataset.hpp"
+#include "sweetspot/study/dataset.hpp"
 
 namespace fs = std::filesystem;
 using sweetspot::Coordinate;

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "program.hpp"
-#include "sweetspot/bat_file.hpp"
-#include "sweetspot/impact.hpp"
+#include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/impact/impact.hpp"
 
 using namespace sweetspot;
 

@@ -10,9 +10,9 @@
 
 #include "n2000_scenes.hpp"
 #include "program.hpp"
-#include "sweetspot/bat_file.hpp"
-#include "sweetspot/formulas.hpp"
-#include "sweetspot/impact.hpp"
+#include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/impact/formulas.hpp"
+#include "sweetspot/impact/impact.hpp"
 
 using namespace sweetspot;
 

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "sweetspot/bat_file.hpp"
+#include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/input_error.hpp"
-#include "sweetspot/modes.hpp"
+#include "sweetspot/bat/modes.hpp"
 
 using namespace sweetspot;
 

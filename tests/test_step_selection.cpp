@@ -7,9 +7,9 @@
 
 #include "n2000_scenes.hpp"
 #include "program.hpp"
-#include "sweetspot/bat_file.hpp"
-#include "sweetspot/impact.hpp"
-#include "sweetspot/step_selection.hpp"
+#include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/impact/impact.hpp"
+#include "sweetspot/impact/step_selection.hpp"
 
 using namespace sweetspot;
 

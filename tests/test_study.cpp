@@ -16,7 +16,7 @@
 #include "temp_dir.hpp"
 #include "text_edit.hpp"
 #include "sweetspot/input_error.hpp"
-#include "sweetspot/study.hpp"
+#include "sweetspot/study/study.hpp"
 
 namespace fs = std::filesystem;
 using namespace sweetspot;

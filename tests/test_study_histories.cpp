@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "program.hpp"
-#include "sweetspot/study_results.hpp"
+#include "sweetspot/study/study_results.hpp"
 #include "temp_dir.hpp"
 
 namespace {

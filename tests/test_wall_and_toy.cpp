@@ -2,8 +2,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "sweetspot/toy_model.hpp"
-#include "sweetspot/wall.hpp"
+#include "sweetspot/impact/toy_model.hpp"
+#include "sweetspot/impact/wall.hpp"
 
 using namespace sweetspot;
 

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "commands.hpp"
-#include "sweetspot/bat_file.hpp"
-#include "sweetspot/convergence.hpp"
+#include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/study/convergence.hpp"
 #include "sweetspot/input_error.hpp"
 
 namespace sweetspot::app {

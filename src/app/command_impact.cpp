@@ -8,8 +8,8 @@
 
 #include "commands.hpp"
 #include "json.hpp"
-#include "sweetspot/bat_file.hpp"
-#include "sweetspot/impact.hpp"
+#include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/impact/impact.hpp"
 #include "sweetspot/input_error.hpp"
 
 namespace sweetspot::app {

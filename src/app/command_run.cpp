@@ -8,7 +8,7 @@
 
 #include "commands.hpp"
 #include "sweetspot/input_error.hpp"
-#include "sweetspot/parallel.hpp"
+#include "sweetspot/study/parallel.hpp"
 
 namespace sweetspot::app {
 

@@ -6,7 +6,7 @@
 #include "commands.hpp"
 #include "json.hpp"
 #include "sweetspot/input_error.hpp"
-#include "sweetspot/toy_model.hpp"
+#include "sweetspot/impact/toy_model.hpp"
 
 namespace sweetspot::app {
 

@@ -6,7 +6,7 @@
 #include "commands.hpp"
 #include "json.hpp"
 #include "sweetspot/input_error.hpp"
-#include "sweetspot/wall.hpp"
+#include "sweetspot/impact/wall.hpp"
 
 namespace sweetspot::app {
 

@@ -2,8 +2,8 @@
 // The program's subcommands. Each adds itself to the command line and runs when chosen.
 #include <CLI/CLI.hpp>
 
-#include "sweetspot/ball.hpp"
-#include "sweetspot/collision.hpp"
+#include "sweetspot/contact/ball.hpp"
+#include "sweetspot/contact/collision.hpp"
 
 namespace sweetspot::app {
 

@@ -2,8 +2,8 @@
 // 5 us, and all modes at the largest stable RK4 step.
 #include <cstdio>
 
-#include "sweetspot/bat_file.hpp"
-#include "sweetspot/impact.hpp"
+#include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/impact/impact.hpp"
 #include "timing.hpp"
 
 int main(int argc, char** argv) {

@@ -1,8 +1,8 @@
 // Time to build the normal modes of the R161 bat at N = 84, 168, 336, 672 slices (median).
 #include <cstdio>
 
-#include "sweetspot/bat_file.hpp"
-#include "sweetspot/modes.hpp"
+#include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/bat/modes.hpp"
 #include "timing.hpp"
 
 int main(int argc, char** argv) {

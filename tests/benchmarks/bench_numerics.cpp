@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <vector>
 
-#include "sweetspot/bat_file.hpp"
-#include "sweetspot/impact.hpp"
+#include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/impact/impact.hpp"
 #include "../n2000_scenes.hpp"
 #include "timing.hpp"
 

@@ -1,0 +1,92 @@
+#pragma once
+// The collision of a ball with a modal system (physics.md §4): the ball's nonlinear spring drives
+// modes a_n'' + omega_n^2 a_n = -F psi_n. The same integrator serves the bat (its kept modes at
+// the impact point), the rigid immovable wall (no modes at all) and the toy model of N2000 App. A.
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "sweetspot/contact/ball.hpp"
+
+namespace sweetspot {
+
+// What the ball sees of the struck body. Modal coordinates are mass-orthonormal, so the energy is
+// sum 1/2 (a_n'^2 + omega_n^2 a_n^2); modes with omega = 0 are rigid motions.
+struct ModalContact {
+  Eigen::VectorXd omega;      // rad/s
+  Eigen::VectorXd psi;        // mode shapes at the contact point
+  Eigen::VectorXd velocity0;  // a_n'(0) at first touch (a_n(0) = 0)
+  // Static (residual) flexibility of the modes left out, sum psi_n^2 / omega_n^2 over them: they
+  // are too fast for the pulse to excite and follow the force quasi-statically, yielding c F.
+  double residual_compliance = 0;
+
+  int count() const { return static_cast<int>(omega.size()); }
+};
+
+// How the contact phase is integrated (see README, "Numerics"):
+//   rk4    classical RK4 at the fixed step dt, as N2000; refused when omega_max dt > 2.8
+//   exact  exact modal stepping: closed-form modes under a cubic Hermite force, step dt set by
+//          the force pulse alone (unconditionally stable)
+//   dopri  adaptive Dormand-Prince 5(4) to `tolerance`, starting at dt: the reference path
+enum class Method { rk4, exact, dopri };
+const char* to_string(Method method);
+// Throws InputError for anything but "rk4", "exact" or "dopri".
+Method parse_method(const std::string& text);
+// The step each method takes unless told otherwise: N2000's 5 us for RK4; 10 us for exact
+// stepping (vf to about 2e-7 on the high-impact scene); the first trial step for Dormand-Prince.
+double default_step(Method method);
+
+struct CollisionOptions {
+  Method method = Method::rk4;
+  double dt = 5e-6;                // s: the step (rk4, exact) or the first step (dopri)
+  double tolerance = 1e-9;         // relative local error per step (dopri)
+  double window = 5e-3;            // s of free flight followed after each separation
+  double max_contact_time = 0.05;  // s; a contact lasting longer is reported as no separation
+  bool record_force = false;       // keep the force samples F(t) in the result
+  bool find_collision_time = true;  // the 99 % impulse time (NaN when not asked: a study may not)
+  // rk4, exact: steps are halved until omega_c h stays below this at both ends, omega_c the
+  // contact's own ringing (the ball's stiffness against the contact's mobility). 2 keeps them
+  // stable; a stated accuracy asks less (a nearly dead ball's force falls within a few 1/omega_c).
+  double contact_phase_limit = 2;
+};
+
+// unbalanced: integrated, but the energy balance is off by more than 1 % (impact.hpp)
+enum class CollisionStatus { ok, no_separation, non_finite, refused_step, unbalanced };
+const char* to_string(CollisionStatus status);
+
+struct ForceSample {
+  double t;      // s since first touch
+  double force;  // N
+  double rate;   // dF/dt, N/s
+};
+
+struct Collision {
+  CollisionStatus status = CollisionStatus::ok;
+  std::string message;         // why, when the status is not ok
+  double ball_velocity = 0;    // final, m/s, positive away from the bat
+  Eigen::VectorXd a, a_dot;    // final modal state
+  double contact_time = 0;     // s in contact, summed over contacts
+  double collision_time = 0;   // s from first touch until 99 % of the impulse is delivered (or NaN)
+  double u_max = 0;            // largest compression, m
+  double peak_force = 0;       // N
+  double impulse = 0;          // N s delivered to the ball
+  double dissipated = 0;       // J lost in the ball (loop areas of all contacts)
+  int contacts = 0;
+  std::vector<ForceSample> force;  // only with record_force
+
+  // Energy of mode n: 1/2 (a_n'^2 + omega_n^2 a_n^2).
+  double mode_energy(const ModalContact& body, int n) const;
+};
+
+// The largest stable RK4 step is 2.8 / omega_max; a larger one is refused, never integrated.
+inline constexpr double rk4_stability_limit = 2.8;
+
+Collision collide(const ModalContact& body, const Ball& ball, double ball_speed, const CollisionOptions& options);
+
+// F and dF/dt at time t in [p.t, q.t], from the cubic Hermite interpolant between two samples.
+ForceSample interpolate_force(const ForceSample& p, const ForceSample& q, double t);
+
+// Time at which a fraction of the impulse is delivered, from the force samples (cubic Hermite).
+double impulse_time(const std::vector<ForceSample>& force, double fraction);
+
+}  // namespace sweetspot

@@ -1,0 +1,76 @@
+#pragma once
+// One impact of a ball on a bat: the scene in, a plain result out (physics.md §4-5). Never throws
+// for a bad physical outcome: the status says what went wrong. The rigid wall (wall.hpp) and the
+// toy model (toy_model.hpp) give the same result type, so that a study stores any of them alike.
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "sweetspot/contact/collision.hpp"
+#include "sweetspot/impact/histories.hpp"
+#include "sweetspot/bat/modes.hpp"
+#include "sweetspot/impact/scene.hpp"
+
+namespace sweetspot {
+
+// Energies in J. initial = ball + bat_translation + bat_rotation + vibration + ball_dissipated +
+// residual; the residual measures the integration error.
+struct ImpactEnergy {
+  double initial = 0;
+  double ball = 0;
+  double bat_translation = 0;
+  double bat_rotation = 0;
+  double vibration = 0;
+  double ball_dissipated = 0;
+  double residual = 0;
+};
+
+struct ImpactResult {
+  CollisionStatus status = CollisionStatus::ok;
+  std::string message;
+  double z = 0;               // impact location, m from the knob
+  double vf = 0;              // exit speed, m/s, positive away from the bat
+  double e_eff = 0;           // effective COR
+  double contact_time = 0;    // s
+  double collision_time = 0;  // s, 99 % of the impulse
+  double u_max = 0;           // m
+  double peak_force = 0;      // N
+  double impulse = 0;         // N s
+  // Exit speeds to compare with vf (physics.md §5), NaN unless the scene asks for them: the rigid
+  // bat's at the same point (free or pivoted), and Van Zandt's prescription for the same
+  // collision (the toy model always gives it).
+  double vf_rigid = std::numeric_limits<double>::quiet_NaN();
+  double vf_van_zandt = std::numeric_limits<double>::quiet_NaN();
+  ImpactEnergy energy;
+  std::vector<double> mode_energy;  // J per kept vibrational mode (of the held bat when pivoted)
+  std::vector<int> modes_kept;      // vibrational mode numbers kept (1 = the first)
+  double modes_error = 0;           // modes = auto: estimated relative vf error of the dropped ones
+  int contacts = 0;
+  std::vector<ForceSample> force;   // only when the scene records the force
+  // Only when the scene asks for them (ImpactScene::histories, force_response, mode_response)
+  // and the collision ends ok.
+  Histories histories;
+  std::vector<double> force_response;  // g(omega tau) at each force_response_grid() value
+  std::vector<double> mode_response;   // R_n per kept vibrational mode
+};
+
+// Sets the residual from the other terms, once they are all filled. An ok result whose residual
+// exceeds balance_limit of the initial energy is marked unbalanced: its step was far too coarse
+// for the pulse, and its numbers are not to be reported as if they were right.
+constexpr double balance_limit = 1e-2;
+void close_balance(ImpactResult& result);
+
+// The omega tau at which a study gives g(omega tau): 0, 0.1, ..., 20 (tau = collision_time),
+// far enough for g to fall to nothing (N2000 Fig. 4).
+std::vector<double> force_response_grid();
+
+// What every collision gives whatever was struck: status, message, vf, the times, u_max,
+// peak_force, impulse, contacts and energy.ball_dissipated. The caller adds what depends on the
+// struck body: e_eff and the rest of the energy balance. A refused step gives status and message
+// only, since nothing was integrated.
+ImpactResult collision_result(const Collision& c);
+
+// Validates the scene (InputError for bad input), then runs the collision.
+ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& scene);
+
+}  // namespace sweetspot

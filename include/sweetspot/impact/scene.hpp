@@ -1,0 +1,89 @@
+#pragma once
+// One impact scene (physics.md §4, §6): where the ball hits, the ball, the bat's swing, whether the
+// bat is pivoted, which modes are kept and how the collision is integrated.
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+#include "sweetspot/contact/ball.hpp"
+#include "sweetspot/contact/collision.hpp"
+#include "sweetspot/bat/modes.hpp"
+
+namespace sweetspot {
+
+// The bat's rigid motion at first touch: v_bat(z) = V_cm + Omega (z - z_cm), +y toward the ball.
+// Given either by the centre-of-mass speed or by the point at rest (the rotation centre).
+struct Swing {
+  double omega = 0;           // rad/s
+  bool about_center = false;  // true: `center` is at rest; false: `cm_speed` is given
+  double cm_speed = 0;        // m/s
+  double center = 0;          // m from the knob
+};
+
+inline constexpr int all_modes = -1;
+// Keep the modes the collision can excite (see mode_selection.hpp), within mode_tolerance.
+inline constexpr int auto_modes = -2;
+
+// Bounds a history's samples, so that a mistyped step cannot exhaust memory.
+inline constexpr double max_history_samples = 1e5;
+
+// Time histories of an impact (histories.hpp): where on the bat, and the uniform time grid.
+struct HistoryRequest {
+  std::vector<double> probes;  // points on the bat, m from the knob
+  double window = 3e-3;        // s from first touch
+  double step = 5e-6;          // s between samples
+
+  // Samples from 0 to the window, both ends included when the step divides it.
+  std::size_t samples() const { return static_cast<std::size_t>(std::floor(window / step + 1e-9)) + 1; }
+};
+
+struct ImpactScene {
+  double z = 0.7;             // impact location, m from the knob (anywhere on the bat)
+  Ball ball;
+  double ball_speed = 40;     // m/s toward the bat
+  Swing swing;
+  bool pivoted = false;       // held at swing.center by a constraint force (N2000 Fig. 16)
+  int vibrational_modes = 18; // kept vibrational modes, or all_modes, or auto_modes
+  double mode_tolerance = 1e-5; // auto_modes: relative exit-speed error allowed the dropped modes
+  // Relative exit-speed error the integration may add; > 0 chooses the step (or tolerance) from
+  // the scene's pulse (step_selection.hpp) instead of integrator.dt. 0: integrator as given.
+  double accuracy = 0;
+  CollisionOptions integrator;
+  // The closed forms of physics.md §5 at the same point, computed beside the collision only when
+  // asked (a study asks through its outputs), NaN otherwise: the rigid bat's exit speed
+  // (vf_rigid) and Van Zandt's prescription (vf_van_zandt), which records the force profile.
+  bool rigid_comparison = false;
+  bool van_zandt_comparison = false;
+  // Also only when asked, and each records the force profile: the time histories of `history`,
+  // the force response g(omega tau) on force_response_grid() (impact.hpp) and R_n per kept
+  // vibrational mode (physics.md §5).
+  HistoryRequest history;
+  bool histories = false;
+  bool force_response = false;
+  bool mode_response = false;
+};
+
+// Throws InputError naming the offending scene value (z outside the bat, speeds not finite,
+// e0 outside (0, 1], a <= 0, k1 <= 0, dt <= 0, too many modes, pivot without a centre).
+void validate(const ImpactScene& scene, const ModalBasis& basis);
+
+// The scene as the collision sees it.
+struct SceneGeometry {
+  double z = 0;             // impact location, m from the knob
+  double pivot = 0;         // held point (pivoted scenes), m from the knob
+  double cm_speed = 0;      // V_cm, m/s
+  double bat_speed = 0;     // v_bat at the impact point, m/s
+  double recoil = 0;        // R0 of the rigid bat, free or pivoted (physics.md §5)
+  ModalContact contact;     // kept modes; for a pivoted bat, the modes of the constrained bat
+  std::vector<int> modes_kept;  // vibrational mode numbers kept (1 = the first vibrational mode)
+  double modes_error = 0;       // auto_modes: estimated relative vf error of those dropped
+  std::vector<int> kept;        // the basis's modes behind `contact` (0, 1 rigid)
+  Eigen::MatrixXd held;         // pivoted: the held bat's modes in the kept ones; empty if free
+
+  // The shapes of the contact's modes at any point z of the bat (ModalBasis::shapes_at).
+  Eigen::VectorXd shapes_at(const ModalBasis& basis, double z) const;
+};
+
+SceneGeometry scene_geometry(const ImpactScene& scene, const ModalBasis& basis);
+
+}  // namespace sweetspot

@@ -1,0 +1,24 @@
+#pragma once
+// Runs a study over MPI ranks and OpenMP threads (design.md). Rank 0 coordinates: it hands out
+// chunks of points in model-major order, so a chunk reuses one modal basis, and computes chunks
+// itself between requests. Every rank caches the modes of each (bat, slices, theory) it meets.
+// Each point is computed alone and stored by its grid index, so the dataset is bitwise the same
+// for any number of ranks and threads.
+#include <filesystem>
+
+#include "sweetspot/study/study.hpp"
+
+namespace sweetspot {
+
+enum class Verbosity { quiet, normal, verbose };
+
+struct RunOptions {
+  std::filesystem::path output;  // the dataset; OUT.journal beside it while running
+  bool resume = false;           // keep the journal's finished points
+  Verbosity verbosity = Verbosity::normal;
+};
+
+// Call between MPI_Init_thread and MPI_Finalize on every rank. Rank 0 writes the dataset.
+void run_study(const Study& study, const RunOptions& options);
+
+}  // namespace sweetspot

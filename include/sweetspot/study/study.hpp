@@ -1,0 +1,141 @@
+#pragma once
+// A parameter study (design.md): a base scene and the axes it is swept over, read from a TOML
+// study file and validated in full before a single collision is computed. The grid is the
+// product of the axes in the order the file writes them (first axis slowest).
+//
+// Study file (keys are `sweetspot impact`'s option names with dashes turned into underscores):
+//   title = "..."                      optional
+//   kind = "impact" | "wall" | "toy"   optional, default "impact": what the ball strikes
+//     impact: a bat (N2000 §4-5). wall: a rigid, immovable wall (Fig. 3). toy: the two-mass
+//     model of App. A (Fig. 18). Each kind takes its own keys and outputs (below); any other is
+//     an error that says it does not apply to the kind.
+//   [scene]  impact: bat (path relative to the study file), theory ("timoshenko" |
+//              "euler-bernoulli"), slices (4..4096; default the profile's own), z, ball_speed, e0,
+//              ball_mass, ball_radius, k1, a, center | cm_speed (exactly one), omega, pivot
+//              (bool), modes (count or "all"), probes (a list of points on the bat, m from the
+//              knob), history_window (s, default 3e-3), history_step (s, default 5e-6; at most
+//              1e5 samples), integrator ("exact" (default), "rk4", "dopri"), dt (default: the integrator's
+//            own), tolerance (dopri), window
+//            wall: ball_speed (> 0), e0, ball_mass, ball_radius, k1, a, integrator, dt, tolerance, window
+//            toy: omega_tau (> 0)
+//   [axes]   any [scene] key of the kind but integrator, as a list of values (bat: paths; theory:
+//            names; pivot: booleans; modes: counts or "all"), or for numbers as a range table
+//            { start, stop, step } (stop included when it lands within 1e-9 step) or
+//            { start, stop, count } (count points, both ends included), the latter with
+//            spacing = "log" for points spaced evenly in the logarithm (start, stop > 0). An axis
+//            overrides the same key in [scene]. Required in one of them: impact: bat, z,
+//            ball_speed and the swing; wall: ball_speed; toy: omega_tau.
+//   [output] variables = names of ImpactResult fields the kind gives (output_names(kind));
+//            default default_outputs(kind). impact: vf, e_eff, contact_time, collision_time and
+//            status by default; vf_rigid and vf_van_zandt (the rigid bat's and Van Zandt's exit
+//            speeds at the same point) are computed only when named; wall: vf, e_eff (the
+//            restitution), contact_time, collision_time, u_max, peak_force, impulse, status and
+//            the energies of the ball (initial, ball, ball_dissipated, residual); toy: vf
+//            (v_f / v_i), vf_van_zandt, status and the energies initial, ball,
+//            bat_translation, vibration, residual (model units, m = k = v_i = 1).
+//            "mode_energy" adds a mode dimension of length base.vibrational_modes, so it needs
+//            one mode count >= 1 for the whole study: modes a number in [scene] (or the default
+//            18), not "all" and not an axis; so does "mode_response" (R_n per kept vibrational
+//            mode, physics.md §5). Time histories, only when asked (histories.hpp):
+//            displacement, velocity, acceleration and vibration_* of each of them at the points
+//            `probes` (needed; with more than one a `probe` dimension), and force, compression,
+//            ball_position, each over a `time` dimension from first touch to history_window
+//            every history_step; force_response = g(omega tau) over an `omega_tau` dimension
+//            (0 to 20 by 0.1, tau = the point's collision_time).
+//            Failed points give NaN.
+//   Every value is checked before any work: types, the rules of validate() in scene.cpp, z and
+//   probes on every bat, modes within what every (bat, slices, theory) discretisation has, no repeated
+//   axis values, bats with distinct names, at most 1e6 values per axis and 1e9 points.
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "sweetspot/bat/modes.hpp"
+#include "sweetspot/impact/scene.hpp"
+
+namespace sweetspot {
+
+// What the ball strikes: a bat, a rigid immovable wall, or the toy model's two masses.
+enum class StudyKind { impact, wall, toy };
+const char* to_string(StudyKind kind);
+
+// Only impact studies strike a bat: the others have no bats, no modes and no bat dimension.
+constexpr bool has_bat(StudyKind kind) { return kind == StudyKind::impact; }
+
+
+// One swept scene key. `values` holds a number for every kind of axis: the value itself, 0/1 for
+// pivot, the count for modes (all_modes for "all"), and for the named keys an index: bat into
+// Study::bats, theory in BeamTheory's order. `labels` holds those names as written (bat, theory)
+// and is empty for the other axes.
+struct Axis {
+  std::string name;  // the scene key: "z", "ball_speed", "bat", ...
+  std::vector<double> values;
+  std::vector<std::string> labels;
+
+  std::size_t size() const { return values.size(); }
+};
+
+struct Study {
+  std::filesystem::path file;  // the study file, as given
+  std::string text;            // its full text, for the dataset's attributes
+  std::string title;           // empty when the file has none
+  StudyKind kind = StudyKind::impact;
+  // Bat files resolved against the study file's directory, index = bat index (the bat axis's
+  // values, or one entry), and the `name` each file gives its bat (the output coordinate). Both
+  // empty for the kinds without a bat.
+  std::vector<std::filesystem::path> bats;
+  std::vector<std::string> bat_names;
+  // The [scene] values over the defaults; axes set their own keys per grid point.
+  BeamTheory theory = BeamTheory::timoshenko;
+  int slices = 0;  // 0: the profile's own slice count
+  ImpactScene base;                  // impact; wall: its ball, ball_speed and integrator
+  double omega_tau = 0;              // toy
+  std::vector<Axis> axes;            // in the order written
+  std::vector<std::string> outputs;  // in the order written
+
+  // Number of grid points: the product of the axis sizes (1 without axes).
+  std::size_t points() const;
+};
+
+// Parses and validates a study file and loads each bat file once; throws InputError with one
+// line naming the study file (and line), the key, the value and what was expected.
+Study load_study(const std::filesystem::path& file);
+
+// Everything one grid point needs: its kind and scene (the ball, speed and integrator serve the
+// wall too), for a bat which one, how it is sliced and which beam theory makes its modes, for the
+// toy omega tau, and its position on each axis.
+struct GridPoint {
+  StudyKind kind = StudyKind::impact;
+  ImpactScene scene;
+  double omega_tau = 0;
+  std::size_t bat = 0;  // index into Study::bats
+  int slices = 0;       // 0: the profile's own
+  BeamTheory theory = BeamTheory::timoshenko;
+  std::vector<std::size_t> coords;  // one per axis
+};
+
+// Grid point `index` in row-major order over the axes (last axis fastest); throws
+// std::out_of_range for index >= points().
+GridPoint grid_point(const Study& study, std::size_t index);
+
+// The order to compute points in. A point's modal basis depends only on its model, the triple
+// (bat, slices, theory), so tasks run model-major: all points of one model in one contiguous
+// run of points() / models() tasks, models in row-major order of their axes; within a model,
+// row-major over the other axes. A worker's modal cache then meets each model once.
+std::size_t models(const Study& study);
+std::size_t task_point(const Study& study, std::size_t task);  // grid index of task `task`
+std::vector<std::size_t> task_order(const Study& study);       // task_point for every task
+
+// Outputs that are time histories at the probes (displacement, velocity, acceleration and their
+// vibration parts), and those plus the histories of the impact itself (force, compression,
+// ball_position): all add a `time` dimension.
+bool is_probe_history(std::string_view name);
+bool is_history(std::string_view name);
+
+// Output variables a study of a kind may ask for, and the list used when [output] gives none.
+const std::vector<std::string>& output_names(StudyKind kind = StudyKind::impact);
+const std::vector<std::string>& default_outputs(StudyKind kind = StudyKind::impact);
+
+}  // namespace sweetspot

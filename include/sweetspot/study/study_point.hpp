@@ -1,0 +1,17 @@
+#pragma once
+// One grid point of a study computed, whatever its kind: the ball on a bat (simulate_impact),
+// on the rigid wall (hit_wall) or in the toy model (toy_model). The engine calls this alone, so
+// that the kinds differ in one place.
+#include "sweetspot/impact/impact.hpp"
+#include "sweetspot/bat/modes.hpp"
+#include "sweetspot/study/study.hpp"
+
+namespace sweetspot {
+
+// The point's result. `basis` is the modal basis of the point's (bat, slices, theory) when the
+// point strikes a bat (has_bat(point.kind)); wall and toy points need none: pass nullptr, so that
+// the engine never solves for modes on their account. Throws std::invalid_argument for a point
+// on a bat without its basis.
+ImpactResult simulate_point(const GridPoint& point, const ModalBasis* basis);
+
+}  // namespace sweetspot

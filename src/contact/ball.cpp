@@ -1,0 +1,37 @@
+#include "sweetspot/contact/ball.hpp"
+
+#include <cmath>
+
+namespace sweetspot {
+
+double ContactForce::operator()(double u) const {
+  if (u <= 0) return 0;  // also guards round-off: no tension, no pow of a negative number
+  if (u == last_u_) return last_force_;
+  last_u_ = u;
+  last_force_ = expanding_ ? f_max_ * std::pow(u / u_max_, b_) : ball_.k1 * std::pow(u, ball_.a);
+  return last_force_;
+}
+
+double ContactForce::stiffness(double u) const {
+  if (u == 0 && !expanding_ && ball_.a == 1) return ball_.k1;
+  if (u <= 0) return 0;
+  return exponent() * (*this)(u) / u;
+}
+
+void ContactForce::start_expansion(double u_max) {
+  last_u_ = -1;  // the branch changes
+  u_max_ = u_max;
+  f_max_ = ball_.k1 * std::pow(u_max, ball_.a);
+  expanding_ = true;
+}
+
+void ContactForce::resume_compression() {
+  last_u_ = -1;  // the branch changes
+  expanding_ = false;
+}
+
+double ContactForce::loop_energy() const {
+  return f_max_ * u_max_ * (1 / (ball_.a + 1) - 1 / (b_ + 1));
+}
+
+}  // namespace sweetspot

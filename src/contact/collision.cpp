@@ -1,0 +1,374 @@
+#include "sweetspot/contact/collision.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <type_traits>
+#include <unordered_map>
+#include <vector>
+
+#include "contact/contact_state.hpp"
+#include "contact/dopri_stepper.hpp"
+#include "contact/exact_stepper.hpp"
+#include "contact/rk4_stepper.hpp"
+#include "sweetspot/input_error.hpp"
+
+namespace sweetspot {
+
+namespace {
+
+using Eigen::VectorXd;
+using detail::ContactState;
+
+constexpr int max_contacts = 50;  // more than this is chatter, not a collision
+
+// Free flight: the ball coasts, every mode oscillates in closed form (rigid modes drift).
+void evolve_free(const ModalContact& body, const VectorXd& y, double tau, VectorXd& out) {
+  const int n = body.count();
+  out = y;
+  out(0) = y(0) + y(1) * tau;
+  for (int i = 0; i < n; ++i) {
+    const double w = body.omega(i), a = y(2 + i), v = y(2 + n + i);
+    if (w == 0) {
+      out(2 + i) = a + v * tau;
+      continue;
+    }
+    const double c = std::cos(w * tau), s = std::sin(w * tau);
+    out(2 + i) = a * c + v / w * s;
+    out(2 + n + i) = -a * w * s + v * c;
+  }
+}
+
+// Integral over [0, tau] of the cubic Hermite interpolant of F on a segment of length h.
+double hermite_integral(const ForceSample& p, const ForceSample& q, double tau) {
+  if (q.t <= p.t) return 0;  // a touch found right at separation leaves two samples at one time
+  const double h = q.t - p.t, s = tau / h, s2 = s * s, s3 = s2 * s, s4 = s3 * s;
+  return h * ((s4 / 2 - s3 + s) * p.force + (s4 / 4 - 2 * s3 / 3 + s2 / 2) * h * p.rate +
+              (-s4 / 2 + s3) * q.force + (s4 / 4 - s3 / 3) * h * q.rate);
+}
+
+std::string format(const char* pattern, double x, double y) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, pattern, x, y);
+  return buf;
+}
+
+// Free rotations of every mode over 1 us, 2 us, 4 us, ... 8 ms: the free-flight search jumps
+// by these. The same for every impact that keeps the same modes, so each thread keeps them.
+struct FreeRotations {
+  static constexpr double base_step = 1e-6;
+  struct Power {
+    double step;
+    Eigen::ArrayXd c, sn, w2sn;
+  };
+  Eigen::ArrayXd omega;
+  std::vector<Power> powers;
+
+  // The longest rotation not longer than `jump` (the shortest when none is).
+  const Power& largest_within(double jump) const {
+    std::size_t k = 0;
+    while (k + 1 < powers.size() && powers[k + 1].step <= jump) ++k;
+    return powers[k];
+  }
+};
+
+const FreeRotations& free_rotations(const VectorXd& omega) {
+  std::size_t key = omega.size();
+  for (double w : omega) key = key * 1099511628211ull ^ std::hash<double>()(w);
+  thread_local std::unordered_multimap<std::size_t, FreeRotations> cache;
+  thread_local std::size_t stored = 0;
+  const auto [first, last] = cache.equal_range(key);
+  for (auto it = first; it != last; ++it)
+    if (it->second.omega.size() == omega.size() && (it->second.omega == omega.array()).all()) return it->second;
+  if (stored > 4'000'000) cache.clear(), stored = 0;  // doubles held: about 32 MB per thread at most
+  FreeRotations r;
+  r.omega = omega.array();
+  for (double step = FreeRotations::base_step; step <= 8.2e-3; step *= 2) {
+    const Eigen::ArrayXd sine = (omega.array() * step).sin();
+    r.powers.push_back({step, (omega.array() * step).cos(), (omega.array() == 0).select(step, sine / omega.array()),
+                        omega.array() * sine});
+  }
+  stored += 3 * r.powers.size() * omega.size();
+  return cache.emplace(key, std::move(r))->second;
+}
+
+template <class Stepper>
+class CollisionRun {
+ public:
+  CollisionRun(const ModalContact& body, const Ball& ball, double ball_speed, const CollisionOptions& options)
+      : body_(body), ball_(ball), options_(options), state_(body, ball),
+        stepper_(make_stepper(ball_speed)), y_(2 + 2 * body.count()) {
+    y_.setZero();
+    y_(1) = -ball_speed;
+    if (keeps_samples()) samples_.reserve(256);  // a contact's steps, mostly, without reallocation
+    y_.tail(body.count()) = body.velocity0;
+  }
+
+  Collision run() {
+    if (const std::string why = stepper_.refusal(); !why.empty()) {
+      result_.status = CollisionStatus::refused_step;
+      result_.message = why;
+      return result_;
+    }
+    while (contact() && free_flight()) {
+    }
+    finish();
+    return result_;
+  }
+
+ private:
+  Stepper make_stepper(double ball_speed) {
+    if constexpr (std::is_same_v<Stepper, detail::DopriStepper>) return Stepper(state_, options_, ball_speed);
+    else return Stepper(state_, options_);
+  }
+
+  bool fail(CollisionStatus status, std::string message) {
+    result_.status = status;
+    result_.message = std::move(message);
+    return false;
+  }
+
+  // One contact from first touch (u = 0) to separation. False if it fails.
+  bool contact() {
+    if (++result_.contacts > max_contacts)
+      return fail(CollisionStatus::no_separation, "more than 50 contacts: the ball chatters on the bat");
+    ContactForce law(ball_);
+    const double touch = t_;
+    const double v_start = y_(1);
+    record_sample(law);
+    VectorXd next(y_.size());
+    double h = stepper_.first_step();
+    while (true) {
+      h = stiffness_limited(h, law);
+      if (t_ - touch > options_.max_contact_time)
+        return fail(CollisionStatus::no_separation,
+                    format("the ball did not separate within %g s of touching (contact %g)", options_.max_contact_time,
+                           result_.contacts));
+      const detail::StepOutcome outcome = stepper_.attempt(y_, h, law, next);
+      if (!outcome.accepted && outcome.next_h > 0) {  // a NaN proposal (from a NaN state) fails below
+        h = outcome.next_h;
+        continue;
+      }
+      // u and u' sum every mode, so a non-finite one shows there without a pass of its own.
+      if (!std::isfinite(next(0) + next(1) + state_.compression(next) + state_.compression_rate(next)))
+        return fail(CollisionStatus::non_finite, format("non-finite state at t = %g s (step %g s)", t_, h));
+      bool separated = false;
+      if (!law.expanding() && state_.compression_rate(next) <= 0) {
+        h = stepper_.locate(y_, h, law, detail::ContactEvent::max_compression, next);
+        const double u_max = state_.ball_compression(state_.compression(next), law);
+        // A graze that never compressed the ball is over (and F_m = k1 u_m^a needs u_m > 0).
+        if (u_max > 0) law.start_expansion(u_max);
+        else separated = true;
+      } else if (law.expanding() && state_.compression(next) <= 0) {
+        h = stepper_.locate(y_, h, law, detail::ContactEvent::separation, next);
+        separated = true;
+      } else if (law.expanding() && state_.compression(next) > detail::reloading_compression(state_, law)) {
+        h = stepper_.locate(y_, h, law, detail::ContactEvent::reloading, next);
+        law.resume_compression();
+      }
+      y_.swap(next);
+      t_ += h;
+      record_sample(law);
+      if (separated) break;
+      h = outcome.next_h;
+    }
+    result_.contact_time += t_ - touch;
+    result_.u_max = std::max(result_.u_max, law.u_max());
+    result_.peak_force = std::max(result_.peak_force, law.f_max());
+    result_.impulse += ball_.mass * (y_(1) - v_start);
+    result_.dissipated += law.loop_energy();
+    return true;
+  }
+
+  // The fixed-step methods must also resolve the contact's own ringing (contact_frequency): a
+  // nearly dead ball is so stiff on the expansion branch that a step fit for the modes would
+  // blow up. Such steps are halved until omega_c h <= contact_phase_limit (2, or less for a
+  // stated accuracy; powers of two, so the exact stepper's responses are reused), here at the
+  // start and by the steppers at the end; the adaptive method finds its own.
+  double stiffness_limited(double h, const ContactForce& law) const {
+    if constexpr (std::is_same_v<Stepper, detail::DopriStepper>) return h;
+    const double omega_c = state_.contact_frequency(y_, law);
+    while (omega_c * h > options_.contact_phase_limit && h > detail::smallest_step) h /= 2;
+    return h;
+  }
+
+  // Follows ball and body for the window after a separation. True if they touch again; then the
+  // state is moved to the moment of touch. The compression is the rigid part, linear in time,
+  // plus vibrations bounded by sum |psi_n| A_n (amplitude A_n) and changing no faster than
+  // sum |psi_n| omega_n A_n: samples skip ahead as far as these bounds allow, and the scan ends
+  // once the rigid part alone keeps the ball clear.
+  bool free_flight() {
+    double u0_rigid = -y_(0), rate_rigid = -y_(1), bound = 0, speed_bound = 0;
+    for (int i = 0; i < body_.count(); ++i) {
+      const double w = body_.omega(i), psi = body_.psi(i), a = y_(2 + i), v = y_(2 + body_.count() + i);
+      if (w == 0) {
+        u0_rigid += psi * a, rate_rigid += psi * v;
+      } else {
+        const double amplitude = std::sqrt(a * a + v / w * (v / w));  // not hypot: no overflow here, and 5x cheaper
+        bound += std::abs(psi) * amplitude;
+        speed_bound += std::abs(psi) * w * amplitude;
+      }
+    }
+    double end = options_.window;
+    if (rate_rigid < 0) end = std::min(end, (u0_rigid + bound) / -rate_rigid);
+    const double slope = std::abs(rate_rigid) + speed_bound;
+    // Where the bounds allow only tiny jumps (a grazing approach), sample at least every 1 us:
+    // a touch shorter than that may pass unseen. Jumps are whole powers of two of that, whose
+    // rotations are kept, so a sample costs a few products per mode and no trigonometry.
+    const FreeRotations& rotations = free_rotations(body_.omega);
+    const int n = body_.count();
+    Eigen::ArrayXd a = y_.segment(2, n).array(), v = y_.segment(2 + n, n).array(), next_a(n);
+    const auto psi = body_.psi.array();
+    double s = y_(0), tau = 0, previous = 0;
+    while (tau < end) {
+      const double u = (psi * a).sum() - s;
+      // At tau = 0 the ball has just been found to separate: the step to that root may leave a
+      // trace of compression (1e-12 m), which is this contact ending, not the next one starting.
+      if (u > 0 && tau > 0) {
+        move_to_touch(previous, tau);
+        return true;
+      }
+      previous = tau;
+      const FreeRotations::Power& r = rotations.largest_within(std::max(-u / slope, FreeRotations::base_step));
+      next_a = r.c * a + r.sn * v;
+      v = r.c * v - r.w2sn * a;
+      a.swap(next_a);
+      s += y_(1) * r.step;
+      tau += r.step;
+    }
+    return false;
+  }
+
+  // Bisection for the instant of the next touch in (lo, hi] after the separation state y_.
+  void move_to_touch(double lo, double hi) {
+    VectorXd trial;
+    for (int iteration = 0; iteration < 200 && hi - lo > 1e-15 * (t_ + hi); ++iteration) {
+      const double mid = (lo + hi) / 2;
+      evolve_free(body_, y_, mid, trial);
+      (state_.compression(trial) > 0 ? hi : lo) = mid;
+    }
+    evolve_free(body_, y_, hi, trial);
+    y_ = trial;
+    if (keeps_samples()) samples_.push_back({t_ + lo, 0.0, 0.0});  // the force stays zero over the gap
+    t_ += hi;
+  }
+
+  // The force samples serve the collision time and the recorded profile: nothing else.
+  bool keeps_samples() const { return options_.record_force || options_.find_collision_time; }
+  void record_sample(const ContactForce& law) {
+    if (keeps_samples()) samples_.push_back(state_.sample(t_, y_, law));
+  }
+
+  void finish() {
+    const int n = body_.count();
+    result_.ball_velocity = y_(1);
+    result_.a = y_.segment(2, n);
+    result_.a_dot = y_.segment(2 + n, n);
+    if (!options_.find_collision_time) result_.collision_time = std::nan("");
+    else if (result_.status == CollisionStatus::ok) result_.collision_time = impulse_time(samples_, 0.99);
+    if (options_.record_force) result_.force = std::move(samples_);
+  }
+
+  const ModalContact& body_;
+  Ball ball_;
+  CollisionOptions options_;
+  ContactState state_;
+  Stepper stepper_;
+  VectorXd y_;
+  double t_ = 0;
+  std::vector<ForceSample> samples_;
+  Collision result_;
+};
+
+}  // namespace
+
+const char* to_string(CollisionStatus status) {
+  switch (status) {
+    case CollisionStatus::ok: return "ok";
+    case CollisionStatus::no_separation: return "no_separation";
+    case CollisionStatus::non_finite: return "non_finite";
+    case CollisionStatus::refused_step: return "refused_step";
+    case CollisionStatus::unbalanced: return "unbalanced";
+  }
+  return "unknown";
+}
+
+double Collision::mode_energy(const ModalContact& body, int n) const {
+  return 0.5 * (a_dot(n) * a_dot(n) + body.omega(n) * body.omega(n) * a(n) * a(n));
+}
+
+ForceSample interpolate_force(const ForceSample& p, const ForceSample& q, double t) {
+  const double h = q.t - p.t, s = (t - p.t) / h, s2 = s * s, s3 = s2 * s;
+  const double value = (2 * s3 - 3 * s2 + 1) * p.force + (s3 - 2 * s2 + s) * h * p.rate +
+                       (-2 * s3 + 3 * s2) * q.force + (s3 - s2) * h * q.rate;
+  const double rate = ((6 * s2 - 6 * s) * p.force + (3 * s2 - 4 * s + 1) * h * p.rate +
+                       (-6 * s2 + 6 * s) * q.force + (3 * s2 - 2 * s) * h * q.rate) /
+                      h;
+  return {t, value, rate};
+}
+
+double impulse_time(const std::vector<ForceSample>& force, double fraction) {
+  double total = 0;
+  for (std::size_t i = 1; i < force.size(); ++i) total += hermite_integral(force[i - 1], force[i], force[i].t - force[i - 1].t);
+  const double target = fraction * total;
+  double delivered = 0;
+  for (std::size_t i = 1; i < force.size(); ++i) {
+    const ForceSample &p = force[i - 1], &q = force[i];
+    const double segment = hermite_integral(p, q, q.t - p.t);
+    if (delivered + segment < target || q.t <= p.t) {
+      delivered += segment;
+      continue;
+    }
+    // The impulse is a quartic in time over the segment, its slope the force: Newton, kept
+    // inside the bracket by bisection where the interpolant's force dips to zero or below.
+    const double h = q.t - p.t;
+    double lo = 0, hi = h, tau = segment > 0 ? (target - delivered) / segment * h : h / 2;
+    for (int iteration = 0; iteration < 100 && hi - lo > 1e-15 * h; ++iteration) {
+      const double excess = delivered + hermite_integral(p, q, tau) - target;
+      (excess < 0 ? lo : hi) = tau;
+      const double rate = interpolate_force(p, q, p.t + tau).force, step = rate > 0 ? excess / rate : 0.0;
+      double next = tau - step;
+      if (!(next > lo && next < hi) || rate <= 0) next = (lo + hi) / 2;
+      if (std::abs(step) <= 1e-15 * h && rate > 0) return p.t + next;
+      tau = next;
+    }
+    return p.t + tau;
+  }
+  return force.empty() ? 0.0 : force.back().t;
+}
+
+Collision collide(const ModalContact& body, const Ball& ball, double ball_speed, const CollisionOptions& options) {
+  switch (options.method) {
+    case Method::exact: return CollisionRun<detail::ExactStepper>(body, ball, ball_speed, options).run();
+    case Method::dopri: return CollisionRun<detail::DopriStepper>(body, ball, ball_speed, options).run();
+    case Method::rk4: break;
+  }
+  return CollisionRun<detail::Rk4Stepper>(body, ball, ball_speed, options).run();
+}
+
+const char* to_string(Method method) {
+  switch (method) {
+    case Method::rk4: return "rk4";
+    case Method::exact: return "exact";
+    case Method::dopri: return "dopri";
+  }
+  return "unknown";
+}
+
+double default_step(Method method) {
+  switch (method) {
+    case Method::exact: return 1e-5;
+    case Method::dopri: return 1e-6;
+    case Method::rk4: break;
+  }
+  return 5e-6;
+}
+
+Method parse_method(const std::string& text) {
+  if (text == "rk4") return Method::rk4;
+  if (text == "exact") return Method::exact;
+  if (text == "dopri") return Method::dopri;
+  throw InputError("integrator '" + text + "': expected 'rk4', 'exact' or 'dopri'");
+}
+
+}  // namespace sweetspot

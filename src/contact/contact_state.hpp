@@ -1,0 +1,197 @@
+#pragma once
+// Internal: the state of ball and modes during a collision, shared by the steppers.
+// y = [s, v, a_0..a_{n-1}, a_0'..a_{n-1}'], s the ball's displacement from first touch (+y).
+#include <Eigen/Dense>
+#include <array>
+#include <cmath>
+
+#include "sweetspot/contact/ball.hpp"
+#include "sweetspot/contact/collision.hpp"
+
+namespace sweetspot::detail {
+
+class ContactState {
+ public:
+  ContactState(const ModalContact& body, const Ball& ball)
+      : body_(body), n_(body.count()), mass_(ball.mass), omega2_(body.omega.array().square()),
+        compliance_(body.residual_compliance), mobility_(1 / ball.mass + body.psi.squaredNorm()) {}
+
+  int modes() const { return n_; }
+  int size() const { return 2 + 2 * n_; }
+  double ball_mass() const { return mass_; }
+  const ModalContact& body() const { return body_; }
+  const Eigen::ArrayXd& omega2() const { return omega2_; }
+
+  double compliance() const { return compliance_; }
+
+  // The geometric compression u = y_k - s: the ball touches while u > 0. Events (maximum
+  // compression, separation) are its zero crossings and those of u'.
+  double compression(const Eigen::VectorXd& y) const {
+    return known(y) ? known_u_ : body_.psi.dot(y.segment(2, n_)) - y(0);
+  }
+  double compression_rate(const Eigen::VectorXd& y) const {
+    return known(y) ? known_du_ : body_.psi.dot(y.segment(2 + n_, n_)) - y(1);
+  }
+  // A stepper that knows u and u' of a state it made in closed form leaves them here: events,
+  // samples and the next step ask for them again, and then cost no dot product over the modes.
+  // It knows the ball's own compression too (it solved for it): that saves solving again.
+  void remember(const Eigen::VectorXd& y, double u, double du, const ContactForce& law, double ball_u) const {
+    known_key_ = key(y), known_u_ = u, known_du_ = du;
+    remember_ball_compression(u, law, ball_u);
+  }
+  // The ball's own compression: the dropped modes' static yield c F takes up part of the
+  // geometric one, u_ball + c F(u_ball) = u (the same when no mode was dropped, c = 0).
+  double ball_compression(double u, const ContactForce& law) const {
+    if (compliance_ == 0 || u <= 0) return u;
+    // Asked again for the same state (samples, step limits, the next step's start): reuse.
+    if (u == last_u_ && &law == last_law_ && law.expanding() == last_expanding_ && law.u_max() == last_u_max_)
+      return last_ball_u_;
+    remember_ball_compression(u, law, solve_ball_compression(u, law));
+    return last_ball_u_;
+  }
+  double solve_ball_compression(double u, const ContactForce& law) const {
+    double lo = 0, hi = u, x = u;
+    for (int iteration = 0; iteration < 100; ++iteration) {
+      const double f = law(x), g = x + compliance_ * f - u, slope = 1 + compliance_ * law.exponent() * f / x;
+      (g > 0 ? hi : lo) = x;
+      double next = x - g / slope;
+      if (std::abs(next - x) <= 1e-15 * x) return next;
+      x = next > lo && next < hi ? next : (lo + hi) / 2;
+    }
+    return x;
+  }
+  void remember_ball_compression(double u, const ContactForce& law, double ball_u) const {
+    last_u_ = u, last_law_ = &law, last_expanding_ = law.expanding(), last_u_max_ = law.u_max();
+    last_ball_u_ = ball_u;
+  }
+  double force(const Eigen::VectorXd& y, const ContactForce& law) const {
+    return law(ball_compression(compression(y), law));
+  }
+  // u'' = sum psi_n a_n'' - s'' = -sum psi_n omega_n^2 a_n - F (sum psi_n^2 + 1/m).
+  double compression_acceleration(const Eigen::VectorXd& y, const ContactForce& law) const {
+    return -(body_.psi.array() * omega2_ * y.segment(2, n_).array()).sum() -
+           force(y, law) * (body_.psi.squaredNorm() + 1 / mass_);
+  }
+  // The frequency at which the contact itself rings: the ball's stiffness F'(u) (in series with
+  // the residual compliance) against the mobility 1/m + sum psi_n^2 of ball and kept modes. On
+  // the expansion branch F'(u) = b F / u with b = (1 + a)/e0^2 - 1, huge for a nearly dead ball.
+  double contact_frequency(const Eigen::VectorXd& y, const ContactForce& law) const {
+    const double u = ball_compression(compression(y), law);
+    if (u <= 0) return 0;
+    const double stiffness = law.stiffness(u);
+    return std::sqrt(stiffness / (1 + compliance_ * stiffness) * mobility_);
+  }
+  // Force and its time derivative dF/dt = F'(u_ball) u_ball', u_ball' = u' / (1 + c F').
+  ForceSample sample(double t, const Eigen::VectorXd& y, const ContactForce& law) const {
+    const double u = ball_compression(compression(y), law), force = law(u);
+    const double stiffness = law.stiffness(u);  // F'(u): the force's pow is remembered
+    return {t, force, stiffness * compression_rate(y) / (1 + compliance_ * stiffness)};
+  }
+
+  // dy/dt: the ball pushed by +F, every mode by -F psi_n.
+  void derivative(const Eigen::VectorXd& y, const ContactForce& law, Eigen::VectorXd& dy) const {
+    const double force = this->force(y, law);
+    dy(0) = y(1);
+    dy(1) = force / mass_;
+    dy.segment(2, n_) = y.segment(2 + n_, n_);
+    dy.segment(2 + n_, n_) = -(omega2_ * y.segment(2, n_).array()).matrix() - force * body_.psi;
+  }
+
+ private:
+  const ModalContact& body_;
+  int n_;
+  double mass_;
+  Eigen::ArrayXd omega2_;
+  double compliance_;
+  double mobility_;
+  mutable double last_u_ = -1, last_ball_u_ = 0, last_u_max_ = 0;
+  // The state remembered (ball position and speed, first and last modal coordinates) and its u, u'.
+  using Key = std::array<double, 4>;
+  Key key(const Eigen::VectorXd& y) const {
+    return {y(0), y(1), n_ ? y(2) : 0.0, n_ ? y(y.size() - 1) : 0.0};
+  }
+  bool known(const Eigen::VectorXd& y) const { return known_key_ == key(y); }
+  mutable Key known_key_ = {std::nan(""), 0, 0, 0};
+  mutable double known_u_ = 0, known_du_ = 0;
+  mutable const ContactForce* last_law_ = nullptr;
+  mutable bool last_expanding_ = false;
+};
+
+// What a stepper says of an attempted step: adaptive ones may reject it and propose a new size.
+struct StepOutcome {
+  bool accepted = true;
+  double next_h = 0;
+};
+
+// The fixed-step methods resolve the contact's own ringing: omega_c h stays below the options'
+// contact_phase_limit at both ends of a step (at the start by choosing h, at the end by redoing
+// the step at half length: a nearly dead ball re-compressed on its steep expansion branch
+// stiffens a thousandfold in a step).
+constexpr double smallest_step = 1e-12;  // s
+
+inline bool too_stiff_at_end(const ContactState& state, const Eigen::VectorXd& out, double h,
+                             const ContactForce& law, const CollisionOptions& options) {
+  return h > smallest_step && state.contact_frequency(out, law) * h > options.contact_phase_limit;
+}
+
+// The events of a contact: maximum compression (u' falls through 0: the force law switches to
+// expansion), separation (u falls through 0) and reloading (an expanding ball pressed past its
+// maximum compression: the law switches back). Each is the zero of a value falling through 0.
+enum class ContactEvent { max_compression, separation, reloading };
+
+// The geometric compression at which the ball's own reaches the expansion branch's u_m (the
+// residual compliance yields c F_m on top).
+inline double reloading_compression(const ContactState& state, const ContactForce& law) {
+  return law.u_max() + state.compliance() * law.f_max();
+}
+
+inline double event_value(const ContactState& state, ContactEvent event, const Eigen::VectorXd& y,
+                          const ContactForce& law) {
+  switch (event) {
+    case ContactEvent::max_compression: return state.compression_rate(y);
+    case ContactEvent::separation: return state.compression(y);
+    case ContactEvent::reloading: break;
+  }
+  return reloading_compression(state, law) - state.compression(y);
+}
+
+inline double event_rate(const ContactState& state, ContactEvent event, const Eigen::VectorXd& y,
+                         const ContactForce& law) {
+  switch (event) {
+    case ContactEvent::max_compression: return state.compression_acceleration(y, law);
+    case ContactEvent::separation: return state.compression_rate(y);
+    case ContactEvent::reloading: break;
+  }
+  return -state.compression_rate(y);
+}
+
+// Illinois regula falsi for the step h* in (0, h] at which the event value of step(y, h*) crosses
+// zero, given it is > 0 at y and <= 0 at out = step(y, h). Leaves in `out` the state just past
+// the event (value <= 0) and returns h*. Suits steppers whose steps are cheap to repeat.
+template <class Stepper>
+double locate_by_restepping(Stepper& stepper, const ContactState& state, const Eigen::VectorXd& y, double h,
+                            const ContactForce& law, ContactEvent event, Eigen::VectorXd& out) {
+  double lo = 0, hi = h, f_lo = event_value(state, event, y, law), f_hi = event_value(state, event, out, law);
+  int side = 0;
+  Eigen::VectorXd trial(y.size());
+  for (int iteration = 0; iteration < 100 && hi - lo > 1e-15 * h; ++iteration) {
+    double mid = hi - f_hi * (hi - lo) / (f_hi - f_lo);
+    if (!(mid > lo && mid < hi)) mid = (lo + hi) / 2;
+    stepper.step(y, mid, law, trial);
+    const double f = event_value(state, event, trial, law);
+    if (f > 0) {
+      lo = mid, f_lo = f;
+      if (side == 1) f_hi /= 2;
+      side = 1;
+    } else {
+      hi = mid, f_hi = f, out = trial;
+      if (side == -1) f_lo /= 2;
+      side = -1;
+      if (f == 0) break;
+    }
+  }
+  if (hi == h) stepper.step(y, h, law, out);
+  return hi;
+}
+
+}  // namespace sweetspot::detail

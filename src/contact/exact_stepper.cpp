@@ -1,0 +1,379 @@
+#include "contact/exact_stepper.hpp"
+
+#include <algorithm>
+#include <array>
+#include <unordered_map>
+#include <cmath>
+
+namespace sweetspot::detail {
+
+namespace {
+
+constexpr double event_grid = 4096;  // event steps end on this many divisions of the step
+constexpr int powers = 6;            // the interpolants are polynomials of degree up to 5
+
+// P_k = int_0^h sin(w (h - t)) / w t^k dt and Q_k = int_0^h cos(w (h - t)) t^k dt, k = 0..5:
+// the response of a mode to the forcing t^k. For w h >= 4, integration by parts from P_0 =
+// (1 - cos)/w^2, Q_0 = sin/w: Q_k = k P_{k-1}, P_k = (h^k - k Q_{k-1}) / w^2. Below that the
+// recursion cancels, and the power series (exact at w = 0) takes over:
+//   P_k = h^(k+2) k! sum_j (-x^2)^j / (k+2j+2)!,  Q_k = h^(k+1) k! sum_j (-x^2)^j / (k+2j+1)!.
+void monomial_responses(double w, double h, double cos_x, double sin_x, double p[powers], double q[powers]) {
+  const double x = w * h;
+  double h_power[powers + 2] = {1};  // h^0 .. h^(powers + 1)
+  for (int k = 1; k < powers + 2; ++k) h_power[k] = h_power[k - 1] * h;
+  if (x >= 4) {
+    const double w2 = w * w;
+    p[0] = (1 - cos_x) / w2;
+    q[0] = sin_x / w;
+    for (int k = 1; k < powers; ++k) {
+      q[k] = k * p[k - 1];
+      p[k] = (h_power[k] - k * q[k - 1]) / w2;
+    }
+    return;
+  }
+  const double x2 = x * x;
+  double factorial = 1;  // k!
+  for (int k = 0; k < powers; ++k) {
+    if (k > 0) factorial *= k;
+    double denom_q = 1;
+    for (int j = 2; j <= k + 1; ++j) denom_q *= j;  // (k + 1)!
+    double denom_p = denom_q * (k + 2);             // (k + 2)!
+    double sp = 0, sq = 0, term = 1;
+    for (int j = 0; j < 40 && std::abs(term) > 1e-18 * denom_q; ++j) {
+      sq += term / denom_q;
+      sp += term / denom_p;
+      term *= -x2;
+      denom_q *= (k + 2 * j + 2) * (k + 2 * j + 3);
+      denom_p *= (k + 2 * j + 3) * (k + 2 * j + 4);
+    }
+    q[k] = h_power[k + 1] * factorial * sq;
+    p[k] = h_power[k + 2] * factorial * sp;
+  }
+}
+
+// An interpolant's basis: row j is the polynomial (coefficients of t^0..t^5) that datum j
+// weights.
+using Basis = Eigen::Matrix<double, data_count, powers>;
+
+// The basis in s = t / h, from the conditions at the nodes s = -past_ratio (quintic only), 0 and
+// 1 on the value (a force datum) or the slope (a rate datum, which enters as h F').
+Basis basis_in_s(double past_ratio) {
+  struct Condition {
+    Datum datum;
+    double node;
+    bool slope;
+  };
+  std::vector<Condition> conditions = {{start_force, 0, false}, {start_rate, 0, true}, {end_force, 1, false},
+                                       {end_rate, 1, true}};
+  if (past_ratio > 0)
+    conditions.insert(conditions.begin(), {{past_force, -past_ratio, false}, {past_rate, -past_ratio, true}});
+  const int m = static_cast<int>(conditions.size());
+  Eigen::MatrixXd conditions_matrix(m, m);  // row i: condition i on the polynomial sum_k c_k s^k
+  for (int i = 0; i < m; ++i)
+    for (int k = 0; k < m; ++k) {
+      const Condition& c = conditions[i];
+      conditions_matrix(i, k) = c.slope ? (k == 0 ? 0.0 : k * std::pow(c.node, k - 1)) : std::pow(c.node, k);
+    }
+  const Eigen::MatrixXd coefficients = conditions_matrix.fullPivLu().inverse();  // column i: datum i's polynomial
+  Basis b = Basis::Zero();
+  for (int i = 0; i < m; ++i) b.row(conditions[i].datum).head(m) = coefficients.col(i).transpose();
+  return b;
+}
+
+Basis interpolant_basis(double past_ratio, double h) {
+  Basis b = basis_in_s(past_ratio);
+  for (int k = 0; k < powers; ++k) b.col(k) /= std::pow(h, k);
+  for (const Datum rate : {past_rate, start_rate, end_rate}) b.row(rate) *= h;
+  return b;
+}
+
+// One mode's closed-form response over a step: c, sn, w2sn, then d and q for each datum.
+using ModeCoefficients = std::array<double, 3 + 2 * data_count>;
+
+ModeCoefficients mode_coefficients(double w, double h, const Basis& b) {
+  const double cos_x = std::cos(w * h), sin_x = std::sin(w * h);
+  double p[powers], q[powers];
+  monomial_responses(w, h, cos_x, sin_x, p, q);
+  ModeCoefficients m = {cos_x, w == 0 ? h : sin_x / w, w * sin_x};
+  for (int j = 0; j < data_count; ++j)
+    for (int k = 0; k < powers; ++k) {
+      m[3 + j] += b(j, k) * p[k];
+      m[3 + data_count + j] += b(j, k) * q[k];
+    }
+  return m;
+}
+
+// Steps of the lengths a run reuses (nominal, split) meet the same frequencies again and again
+// even when the kept modes differ from impact to impact (modes = auto), so each thread remembers
+// every mode's coefficients by (omega, h, past ratio).
+const ModeCoefficients& memoized_coefficients(double w, double h, double past_ratio, const Basis& b) {
+  struct Key {
+    double w, h, past_ratio;
+    bool operator==(const Key&) const = default;
+  };
+  struct Hash {
+    std::size_t operator()(const Key& k) const {
+      return (std::hash<double>()(k.w) * 31 + std::hash<double>()(k.h)) * 31 + std::hash<double>()(k.past_ratio);
+    }
+  };
+  thread_local std::unordered_map<Key, ModeCoefficients, Hash> memo;
+  if (memo.size() > 100000) memo.clear();  // bounded: a long run over many bases
+  const auto [it, inserted] = memo.try_emplace(Key{w, h, past_ratio});
+  if (inserted) it->second = mode_coefficients(w, h, b);
+  return it->second;
+}
+
+}  // namespace
+
+ModeResponse::ModeResponse(const Eigen::ArrayXd& w, double step, double ball_mass, double past, bool memoize)
+    : h(step), past_ratio(past), omega(w) {
+  const int n = static_cast<int>(omega.size());
+  c.resize(n), sn.resize(n), w2sn.resize(n), d.resize(n, data_count), q.resize(n, data_count);
+  const Basis b = interpolant_basis(past_ratio, h);
+  for (int i = 0; i < n; ++i) {
+    const ModeCoefficients computed = memoize ? ModeCoefficients{} : mode_coefficients(omega(i), h, b);
+    const ModeCoefficients& m = memoize ? memoized_coefficients(omega(i), h, past_ratio, b) : computed;
+    c(i) = m[0], sn(i) = m[1], w2sn(i) = m[2];
+    for (int j = 0; j < data_count; ++j) d(i, j) = m[3 + j], q(i, j) = m[3 + data_count + j];
+  }
+  const ModeCoefficients ball = mode_coefficients(0, h, b);
+  for (int j = 0; j < data_count; ++j) {
+    ball_d[j] = ball[3 + j] / ball_mass;
+    ball_q[j] = ball[3 + data_count + j] / ball_mass;
+  }
+}
+
+StepCoefficients::StepCoefficients(std::shared_ptr<const ModeResponse> r, const Eigen::ArrayXd& psi2,
+                                   double compliance)
+    : response(std::move(r)), psi2_sum(psi2.sum()) {
+  const ModeResponse& m = *response;
+  mode_dC = (psi2 * m.d.col(end_force)).sum(), mode_dD = (psi2 * m.d.col(end_rate)).sum();
+  mode_qC = (psi2 * m.q.col(end_force)).sum(), mode_qD = (psi2 * m.q.col(end_rate)).sum();
+  gC = mode_dC + m.ball_d[end_force] + compliance;
+  gD = mode_dD + m.ball_d[end_rate];
+  hC = mode_qC + m.ball_q[end_force];
+  hD = mode_qD + m.ball_q[end_rate] + compliance;
+}
+
+namespace {
+
+// The responses at the nominal step and at its split parts are the same for every impact
+// that keeps the same modes (only the mode shapes at the contact differ), so each thread keeps
+// them, keyed by step, past ratio, ball mass and frequencies. With modes = auto the kept set
+// varies from impact to impact, and event steps vary too; the cache starts over when it grows
+// large.
+std::shared_ptr<const ModeResponse> cached_response(const Eigen::ArrayXd& omega, std::size_t omega_key, double h,
+                                                    double ball_mass, double past_ratio) {
+  const std::size_t key = omega_key ^ std::hash<double>()(h) ^ (std::hash<double>()(ball_mass) << 1) ^
+                          (std::hash<double>()(past_ratio) << 2);
+  thread_local std::unordered_multimap<std::size_t, std::pair<double, std::shared_ptr<const ModeResponse>>> cache;
+  const auto [first, last] = cache.equal_range(key);
+  for (auto it = first; it != last; ++it) {
+    const auto& [mass, response] = it->second;
+    if (response->h == h && response->past_ratio == past_ratio && mass == ball_mass &&
+        response->omega.size() == omega.size() && (response->omega == omega).all())
+      return response;
+  }
+  thread_local std::size_t stored = 0;  // doubles held: at most about 32 MB per thread
+  if (stored > 4'000'000) cache.clear(), stored = 0;
+  stored += (3 + 2 * data_count) * omega.size();
+  auto response = std::make_shared<const ModeResponse>(omega, h, ball_mass, past_ratio, true);
+  cache.emplace(key, std::make_pair(ball_mass, response));
+  return response;
+}
+
+}  // namespace
+
+std::size_t ExactStepper::frequencies_key(const Eigen::ArrayXd& omega) {
+  std::size_t key = omega.size();
+  for (double w : omega) key = key * 1099511628211ull ^ std::hash<double>()(w);
+  return key;
+}
+
+ExactStepper::ExactStepper(const ContactState& state, const CollisionOptions& options)
+    : state_(state), options_(options), psi_(state.body().psi.array()), psi2_(psi_.square()),
+      psi_w2_(psi_ * state.omega2()), omega_key_(frequencies_key(state.body().omega.array())), nominal_(options.dt),
+      quarter_(state.size()), half_(state.size()) {
+  kept_.reserve(16);  // a contact's usual lengths: split, nominal, halved and event steps
+}
+
+const StepCoefficients& ExactStepper::coefficients(double h, double past_ratio) {
+  for (const StepCoefficients& k : kept_)
+    if (k.h() == h && k.past_ratio() == past_ratio) return k;
+  kept_.emplace_back(cached_response(state_.body().omega.array(), omega_key_, h, state_.ball_mass(), past_ratio),
+                     psi2_, state_.compliance());
+  return kept_.back();
+}
+
+double ExactStepper::past_ratio(const Eigen::VectorXd& y, double h, const ContactForce& law) const {
+  const bool continues = past_.expanding == law.expanding() && y(0) == past_.end_s && y(1) == past_.end_v;
+  // Past data far from the step (ratio over 8) add little; close to it (under 1/4) they would
+  // make the interpolant ill-conditioned.
+  const double ratio = past_.h / h;
+  return continues && ratio >= 0.25 && ratio <= 8 ? ratio : 0.0;
+}
+
+void ExactStepper::step(const Eigen::VectorXd& y, double h, const ContactForce& law, Eigen::VectorXd& out) {
+  past_at_step_start_ = past_;
+  if (const double ratio = past_ratio(y, h, law); ratio > 0) return advance(coefficients(h, ratio), y, law, out);
+  advance(coefficients(h / 4, 0), y, law, quarter_);
+  advance(coefficients(h / 4, 1), quarter_, law, half_);
+  advance(coefficients(h / 2, 0.5), half_, law, out);
+}
+
+double ExactStepper::locate(const Eigen::VectorXd& y, double h, const ContactForce& law, ContactEvent event,
+                            Eigen::VectorXd& out) {
+  const double f0 = event_value(state_, event, y, law), d0 = event_rate(state_, event, y, law) * h;
+  const double f1 = event_value(state_, event, out, law), d1 = event_rate(state_, event, out, law) * h;
+  const auto cubic = [&](double s) {
+    const double s2 = s * s, s3 = s2 * s;
+    return (2 * s3 - 3 * s2 + 1) * f0 + (s3 - 2 * s2 + s) * d0 + (-2 * s3 + 3 * s2) * f1 + (s3 - s2) * d1;
+  };
+  // Illinois regula falsi keeps a bracket with the cubic > 0 at `lo` and <= 0 at `hi`: a step
+  // ending just short of separation would leave the ball touching, and the next contact would
+  // start at once. Halving the weight of an end that stays put closes both sides, in about a
+  // dozen evaluations (bisection takes 50).
+  double lo = 0, hi = 1, f_lo = f0, f_hi = f1;
+  int side = 0;
+  for (int iteration = 0; iteration < 100 && hi - lo > 1e-14; ++iteration) {
+    double s = hi - f_hi * (hi - lo) / (f_hi - f_lo);
+    if (!(s > lo && s < hi)) s = (lo + hi) / 2;
+    const double value = cubic(s);
+    if (value > 0) {
+      lo = s, f_lo = value;
+      if (side == 1) f_hi /= 2;
+      side = 1;
+    } else {
+      hi = s, f_hi = value;
+      if (side == -1) f_lo /= 2;
+      side = -1;
+      if (value == 0) break;
+    }
+  }
+  if (hi >= 1) return h;  // `out` already is the state at the end of the step
+  // The event step ends on a 1/4096 grid of the step just past the root, so its response recurs
+  // from impact to impact and is kept. Where it lands (within h/4096, ~2 ns at 10 us) changes
+  // nothing that matters: the force is stationary there (F' = 0 at maximum compression, F = 0
+  // at separation) and the loop's energy is exact anyway. Separation keeps the root's own time,
+  // for the contact time; free flight from there is exact.
+  const double fraction = std::ceil(hi * event_grid) / event_grid;
+  if (fraction >= 1) return h;
+  // Its length is new at every impact, so its response is computed afresh: the cubic's, in one
+  // piece (the quintic's would need its own basis, and a split step three responses).
+  advance(coefficients(fraction * h, 0), y, law, out);
+  return event == ContactEvent::separation ? hi * h : fraction * h;
+}
+
+// At first touch the force grows as (u' t)^a, which no cubic follows; the slope given for it at
+// t = 0 is the one that makes the cubic's impulse over the step that of the power law (through
+// the end's F1 ~ F(u' h) and F1' = a F1 / h): (F1 / h) (a + 12 / (a + 1) - 6), the secant's
+// k1 for a linear ball, nearly 0 for a = 1.84, and exact in the limit a = 2 (F'(0) = 0).
+double touch_stiffness(const ContactForce& law, double u_end) {
+  if (law.expanding() || !(u_end > 0)) return law.stiffness(0);
+  const double a = law.exponent();
+  return law(u_end) / u_end * (a + 12 / (a + 1) - 6);
+}
+
+// Solves for the end compression u1 with F1 = F(u1) and F1' = F'(u1) u1': Newton on
+// g(u) = u - u_known + gC F(u) + gD F1'(u), kept inside [0, u_known] where g changes sign.
+// `guess` is a prediction of u1 (the Taylor step from the start of the step).
+double end_compression(const StepCoefficients& k, const ContactForce& law, double u_known, double du_known,
+                       double guess) {
+  if (u_known <= 0) return u_known;  // no force can arise: the ball is clear all step
+  const double e = law.exponent();
+  const auto g = [&](double u, double& slope) {
+    const double f = law(u), inverse_u = 1 / u, stiffness = e * f * inverse_u;
+    const double stiffness_rate = (e - 1) * stiffness * inverse_u;
+    const double inverse_denominator = 1 / (1 + k.hD * stiffness), numerator = du_known - k.hC * f;
+    const double rate = stiffness * numerator * inverse_denominator;
+    const double rate_slope = (stiffness_rate * numerator - stiffness * k.hC * stiffness -
+                               rate * k.hD * stiffness_rate) * inverse_denominator;
+    slope = 1 + k.gC * stiffness + k.gD * rate_slope;
+    return u - u_known + k.gC * f + k.gD * rate;
+  };
+  double lo = 0, hi = u_known, slope = 0;
+  double u = guess > 0 && guess < u_known ? guess : u_known;  // from above, Newton does not overshoot
+  // Newton converges quadratically: after a step of x u the error is about K x^2 u, K = u |g''| /
+  // 2 g' at most 1 + |e - 1| / 2 for the power law. It stops once that is below 1e-13 of u.
+  const double converged = std::sqrt(1e-13 / (1 + std::abs(e - 1) / 2));
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const double value = g(u, slope);
+    (value > 0 ? hi : lo) = u;
+    double next = u - value / slope;
+    // The force at `next` is F(u) (1 + x)^e, x = (next - u) / u, to second order: exact to
+    // round-off at such small x.
+    if (std::abs(next - u) <= converged * u) {
+      const double x = (next - u) / u;
+      law.remember(next, law(u) * (1 + e * x * (1 + (e - 1) / 2 * x)));
+      return next;
+    }
+    if (hi - lo <= 1e-15 * hi) return next;
+    // Near separation the force is all but zero and the root sits at the bracket's top, u_known:
+    // Newton may land on or just past it, which bisection would approach only slowly.
+    if (next >= hi && value < 0 && slope > 0) next = hi;
+    else if (!(next > lo && next < hi) || !(slope > 0)) next = (lo + hi) / 2;
+    u = next;
+  }
+  return u;
+}
+
+// One pass over the modes for what is known before the end force (free rotation plus the
+// response to the past and start data), summing the contact's u and u' on the way; a second adds
+// the response to F1 and F1'. Plain loops: Eigen would make a pass per expression and one per sum.
+void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, const ContactForce& law,
+                           Eigen::VectorXd& out) {
+  const ModeResponse& m = *k.response;
+  const int n = state_.modes();
+  out.resize(y.size());
+  const double *a = y.data() + 2, *v = a + n;
+  double *out_a = out.data() + 2, *out_v = out_a + n;
+  const double *c = m.c.data(), *sn = m.sn.data(), *w2sn = m.w2sn.data(), *psi = psi_.data(), *psi_w2 = psi_w2_.data();
+  const auto d = [&m](Datum j) { return m.d.col(j).data(); };
+  const auto q = [&m](Datum j) { return m.q.col(j).data(); };
+
+  // The start: the ball's compression, its rate and acceleration, the force and its rate.
+  const double u0 = state_.ball_compression(state_.compression(y), law), du0_geometric = state_.compression_rate(y);
+  const double f0 = law(u0), k0 = u0 == 0 ? touch_stiffness(law, du0_geometric * m.h) : law.stiffness(u0);
+  const double du0 = du0_geometric / (1 + state_.compliance() * k0), r0 = k0 * du0;
+  const bool quintic = m.past_ratio > 0;
+  const double fp = quintic ? past_.force : 0.0, rp = quintic ? past_.rate : 0.0;
+
+  const double *dP = d(past_force), *dQ = d(past_rate), *dA = d(start_force), *dB = d(start_rate);
+  const double *qP = q(past_force), *qQ = q(past_rate), *qA = q(start_force), *qB = q(start_rate);
+  double psi_a = 0, psi_v = 0, psi_w2a = 0;
+#pragma omp simd reduction(+ : psi_a, psi_v, psi_w2a)
+  for (int i = 0; i < n; ++i) {
+    const double a_known = c[i] * a[i] + sn[i] * v[i] - psi[i] * (fp * dP[i] + rp * dQ[i] + f0 * dA[i] + r0 * dB[i]);
+    const double v_known = c[i] * v[i] - w2sn[i] * a[i] - psi[i] * (fp * qP[i] + rp * qQ[i] + f0 * qA[i] + r0 * qB[i]);
+    out_a[i] = a_known, out_v[i] = v_known;
+    psi_a += psi[i] * a_known, psi_v += psi[i] * v_known, psi_w2a += psi_w2[i] * a[i];
+  }
+  const double s_known = y(0) + y(1) * m.h + fp * m.ball_d[past_force] + rp * m.ball_d[past_rate] +
+                         f0 * m.ball_d[start_force] + r0 * m.ball_d[start_rate];
+  const double vb_known = y(1) + fp * m.ball_q[past_force] + rp * m.ball_q[past_rate] + f0 * m.ball_q[start_force] +
+                          r0 * m.ball_q[start_rate];
+  const double u_known = psi_a - s_known, du_known = psi_v - vb_known;
+
+  const double ddu0 = -psi_w2a - f0 * (k.psi2_sum + 1 / state_.ball_mass());
+  const double guess = u0 + m.h * du0 + 0.5 * m.h * m.h * ddu0;
+  const double u1 = end_compression(k, law, u_known, du_known, guess);
+  const double f1 = law(u1);
+  const double stiffness = u1 > 0 ? law.exponent() * f1 / u1 : 0.0;
+  const double r1 = stiffness * (du_known - k.hC * f1) / (1 + k.hD * stiffness);
+
+  out(0) = s_known + f1 * m.ball_d[end_force] + r1 * m.ball_d[end_rate];
+  out(1) = vb_known + f1 * m.ball_q[end_force] + r1 * m.ball_q[end_rate];
+  const double *dC = d(end_force), *dD = d(end_rate), *qC = q(end_force), *qD = q(end_rate);
+#pragma omp simd
+  for (int i = 0; i < n; ++i) {
+    out_a[i] -= psi[i] * (f1 * dC[i] + r1 * dD[i]);
+    out_v[i] -= psi[i] * (f1 * qC[i] + r1 * qD[i]);
+  }
+  // The end's u and u' follow from the sums already made, without another pass over the modes.
+  // The geometric u is the ball's own plus the residual compliance's yield (equal to the sums to
+  // round-off, and exactly consistent with u1, whose force is known).
+  state_.remember(out, u1 + state_.compliance() * f1, psi_v - f1 * k.mode_qC - r1 * k.mode_qD - out(1), law, u1);
+  past_ = {m.h, f0, r0, out(0), out(1), law.expanding()};
+}
+
+}  // namespace sweetspot::detail

@@ -1,0 +1,109 @@
+#pragma once
+// Internal: exact modal stepping. Over a step the contact force is a polynomial interpolant of
+// F and dF/dt; every mode (and the ball) then advances in closed form, so the step is limited by
+// how well the polynomial follows the force pulse, never by the fastest mode. The force at the
+// end of the step solves one scalar equation in the end compression u1. All 2N modes cost O(2N)
+// per step.
+//
+// Two interpolants: the cubic Hermite of (F, F') at the step's ends (order 4), and, where the
+// previous step ended at this one's start on the same branch of the force law, the quintic
+// through (F, F') at its start too (order 6: the same unknowns F1, F1', the past data known).
+// The past step's length over this one's, the past ratio, shapes the quintic; 0 means cubic.
+#include <Eigen/Dense>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "contact/contact_state.hpp"
+
+namespace sweetspot::detail {
+
+// The data an interpolant weights, in this order: F and F' a step before the start (quintic
+// only), at the start, at the end.
+enum Datum { past_force, past_rate, start_force, start_rate, end_force, end_rate, data_count };
+
+// The closed-form response of every mode over a step of length h: the free rotation (c, sn,
+// w2sn) and the displacement (d) and velocity (q) driven by a unit weight of each datum's basis
+// function (one column per Datum; zero for the past data of the cubic). Depends on the
+// frequencies, h and the past ratio only.
+struct ModeResponse {
+  double h = 0;
+  double past_ratio = 0;
+  Eigen::ArrayXd omega;
+  Eigen::ArrayXd c, sn, w2sn;
+  Eigen::ArrayXXd d, q;
+  double ball_d[data_count] = {}, ball_q[data_count] = {};  // the ball (omega = 0, times 1/m)
+
+  // memoize: take each mode's coefficients from (and add them to) this thread's memory.
+  ModeResponse(const Eigen::ArrayXd& omega, double h, double ball_mass, double past_ratio, bool memoize = false);
+};
+
+// A response with the sums over the contact point's mode shapes that tie the ball's compression
+// u1 and its rate at the end of the step to F1 and F1': u1 = known - gC F1 - gD F1',
+// u1' = known - hC F1 - hD F1' (the residual compliance c of dropped modes adds c F1 to the first
+// and c F1' to the second).
+struct StepCoefficients {
+  std::shared_ptr<const ModeResponse> response;
+  double gC = 0, gD = 0, hC = 0, hD = 0;
+  double psi2_sum = 0;  // sum psi_n^2: how the force accelerates the compression
+  // The modes' part alone of those sums (no ball, no compliance): sum psi^2 dC, dD, qC, qD.
+  double mode_dC = 0, mode_dD = 0, mode_qC = 0, mode_qD = 0;
+
+  StepCoefficients(std::shared_ptr<const ModeResponse> r, const Eigen::ArrayXd& psi2, double compliance);
+  double h() const { return response->h; }
+  double past_ratio() const { return response->past_ratio; }
+};
+
+class ExactStepper {
+ public:
+  ExactStepper(const ContactState& state, const CollisionOptions& options);
+
+  // A contact's first step has no past, so it is split (below): the quarter steps also follow
+  // the force's t^a growth from first touch, which no polynomial does, closely enough.
+  double first_step() const { return nominal_; }
+  std::string refusal() const { return {}; }  // stable at any step for the modes
+  StepOutcome attempt(const Eigen::VectorXd& y, double h, const ContactForce& law, Eigen::VectorXd& out) {
+    step(y, h, law, out);
+    if (too_stiff_at_end(state_, out, h, law, options_)) {
+      past_ = past_at_step_start_;  // as if the step had not been made
+      return {false, h / 2};
+    }
+    return {true, std::min(nominal_, 2 * h)};
+  }
+  // A step with no past to weight (a contact's first, the first after maximum compression) is
+  // made as a cubic quarter step and quintic quarter and half steps: its error then falls below
+  // the quintic steps' own. After a step halved for stiffness, steps grow back by doubling.
+  void step(const Eigen::VectorXd& y, double h, const ContactForce& law, Eigen::VectorXd& out);
+  // A step of a new length costs a new response, so an event is found as the root of the cubic
+  // Hermite interpolant of its value over the step (error O(h^4) in time, and the force is
+  // stationary there: F' = 0 at maximum compression, F = 0 at separation), then one step to it.
+  double locate(const Eigen::VectorXd& y, double h, const ContactForce& law, ContactEvent event,
+                Eigen::VectorXd& out);
+
+ private:
+  // The start of the last step made: its length, branch, force and rate, and where it ended.
+  // The next step may weight that force and rate only if it starts there, as long, on the same
+  // branch (the force's second derivative jumps at maximum compression).
+  struct PastStep {
+    double h = 0, force = 0, rate = 0, end_s = 0, end_v = 0;
+    bool expanding = false;
+  };
+
+  // The past ratio a step from y of length h can use (0: none, cubic).
+  double past_ratio(const Eigen::VectorXd& y, double h, const ContactForce& law) const;
+  void advance(const StepCoefficients& k, const Eigen::VectorXd& y, const ContactForce& law, Eigen::VectorXd& out);
+  const StepCoefficients& coefficients(double h, double past_ratio);
+  // Responses are kept per thread by frequencies and step; the frequencies' hash is made once.
+  static std::size_t frequencies_key(const Eigen::ArrayXd& omega);
+
+  const ContactState& state_;
+  CollisionOptions options_;
+  Eigen::ArrayXd psi_, psi2_, psi_w2_;  // mode shapes at the contact, squared, and times omega^2
+  std::size_t omega_key_;
+  double nominal_;
+  std::vector<StepCoefficients> kept_;  // this impact's steps so far, by length and past ratio
+  PastStep past_, past_at_step_start_;  // the latter restored when a step is redone shorter
+  Eigen::VectorXd quarter_, half_;      // the states inside a split step
+};
+
+}  // namespace sweetspot::detail

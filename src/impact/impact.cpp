@@ -1,0 +1,126 @@
+#include "sweetspot/impact/impact.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "sweetspot/impact/formulas.hpp"
+#include "sweetspot/impact/step_selection.hpp"
+
+namespace sweetspot {
+
+namespace {
+
+// Rigid modes at the front of the contact's: rotation about the pivot, or translation and rotation.
+int rigid_modes(const ImpactScene& scene) { return scene.pivoted ? 1 : 2; }
+
+// Splits the final energy of the bat among rigid translation, rotation and vibration. A pivoted
+// bat has one rigid mode, rotation about the pivot: its energy 1/2 I_p W^2 splits into the CM's
+// translation 1/2 M (W d)^2 and rotation 1/2 I_cm W^2 in the ratio M d^2 : I_cm.
+void bat_energies(const ImpactScene& scene, const SceneGeometry& g, const ModalBasis& basis, const Collision& c,
+                  ImpactResult& r) {
+  const int rigid = rigid_modes(scene);
+  for (int n = rigid; n < g.contact.count(); ++n) {
+    r.mode_energy.push_back(c.mode_energy(g.contact, n));
+    r.energy.vibration += r.mode_energy.back();
+  }
+  if (scene.pivoted) {
+    const double arm = basis.z_cm - g.pivot;
+    const double translation_share = basis.mass * arm * arm / (basis.moment_of_inertia_cm + basis.mass * arm * arm);
+    r.energy.bat_translation = translation_share * c.mode_energy(g.contact, 0);
+    r.energy.bat_rotation = (1 - translation_share) * c.mode_energy(g.contact, 0);
+  } else {
+    r.energy.bat_translation = c.mode_energy(g.contact, 0);
+    r.energy.bat_rotation = c.mode_energy(g.contact, 1);
+  }
+}
+
+// What a scene asks beside the collision that needs its whole force profile.
+void add_force_analyses(const ImpactScene& scene, const ModalBasis& basis, const SceneGeometry& g, const Collision& c,
+                        ImpactResult& r) {
+  if (scene.histories)
+    r.histories = impact_histories(basis, g, scene.ball, scene.ball_speed, c.force, scene.history);
+  if (scene.force_response) {
+    std::vector<double> omegas;
+    for (const double omega_tau : force_response_grid()) omegas.push_back(omega_tau / c.collision_time);
+    r.force_response = force_responses(c.force, omegas);
+  }
+  if (scene.mode_response) {
+    const std::vector<double> all = mode_responses(g.contact, scene.ball.mass, c.force);
+    r.mode_response.assign(all.begin() + rigid_modes(scene), all.end());
+  }
+}
+
+}  // namespace
+
+std::vector<double> force_response_grid() {
+  std::vector<double> grid;
+  for (int i = 0; i <= 200; ++i) grid.push_back(i / 10.0);
+  return grid;
+}
+
+void close_balance(ImpactResult& r) {
+  ImpactEnergy& e = r.energy;
+  e.residual = e.initial - (e.ball + e.bat_translation + e.bat_rotation + e.vibration + e.ball_dissipated);
+  if (r.status != CollisionStatus::ok || std::abs(e.residual) <= balance_limit * e.initial) return;  // NaN: not
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "the energy balance is off by %.2g of the initial energy: the step is too coarse for this pulse "
+                "(take a smaller dt, or state accuracy)",
+                std::abs(e.residual) / e.initial);
+  r.status = CollisionStatus::unbalanced;
+  r.message = text;
+}
+
+ImpactResult collision_result(const Collision& c) {
+  ImpactResult r;
+  r.status = c.status;
+  r.message = c.message;
+  if (c.status == CollisionStatus::refused_step) return r;
+  r.vf = c.ball_velocity;
+  r.contact_time = c.contact_time;
+  r.collision_time = c.collision_time;
+  r.u_max = c.u_max;
+  r.peak_force = c.peak_force;
+  r.impulse = c.impulse;
+  r.contacts = c.contacts;
+  r.force = c.force;
+  r.energy.ball_dissipated = c.dissipated;
+  return r;
+}
+
+ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& scene) {
+  validate(scene, basis);
+  const SceneGeometry g = scene_geometry(scene, basis);
+  CollisionOptions options = scene.integrator;
+  if (scene.accuracy > 0)
+    options = options_for_accuracy(options, scene.accuracy, scene.ball, scene.ball_speed + g.bat_speed, g.recoil,
+                                   g.contact.count() ? g.contact.omega.maxCoeff() : 0.0);
+  // Van Zandt and the force analyses drive the modes with the force profile.
+  options.record_force |= scene.van_zandt_comparison || scene.histories || scene.force_response || scene.mode_response;
+  options.find_collision_time |= scene.force_response;  // its omega grid is in units of 1/tau
+  const Collision c = scene.accuracy > 0
+                          ? collide_within(g.contact, scene.ball, scene.ball_speed, options, scene.accuracy)
+                          : collide(g.contact, scene.ball, scene.ball_speed, options);
+
+  ImpactResult r = collision_result(c);
+  if (!scene.integrator.record_force) r.force.clear();  // recorded for this function's use alone
+  r.z = g.z;
+  r.modes_kept = g.modes_kept;
+  r.modes_error = g.modes_error;
+  if (scene.rigid_comparison) r.vf_rigid = rigid_exit_speed(scene.ball.e0, g.recoil, scene.ball_speed, g.bat_speed);
+  if (c.status == CollisionStatus::refused_step) return r;
+  r.e_eff = effective_cor(r.vf, g.recoil, scene.ball_speed, g.bat_speed);
+  // Only a whole force profile can drive the modes (the toy model does the same).
+  if (scene.van_zandt_comparison && c.status == CollisionStatus::ok)
+    r.vf_van_zandt = van_zandt_exit_speed(g.contact, scene.ball, g.recoil, scene.ball_speed, g.bat_speed, c.force);
+  if (c.status == CollisionStatus::ok) add_force_analyses(scene, basis, g, c, r);
+
+  ImpactEnergy& e = r.energy;
+  e.initial = 0.5 * scene.ball.mass * scene.ball_speed * scene.ball_speed + 0.5 * g.contact.velocity0.squaredNorm();
+  e.ball = 0.5 * scene.ball.mass * r.vf * r.vf;
+  bat_energies(scene, g, basis, c, r);
+  close_balance(r);
+  return r;
+}
+
+}  // namespace sweetspot

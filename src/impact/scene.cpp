@@ -1,0 +1,143 @@
+#include "sweetspot/impact/scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "sweetspot/input_error.hpp"
+#include "sweetspot/impact/mode_selection.hpp"
+
+namespace sweetspot {
+
+namespace {
+
+[[noreturn]] void reject(const std::string& key, double value, const std::string& expected) {
+  std::ostringstream text;
+  text << "impact: " << key << " = " << value << ": " << expected;
+  throw InputError(text.str());
+}
+
+void require_finite(const std::string& key, double value) {
+  if (!std::isfinite(value)) reject(key, value, "must be a finite number");
+}
+
+void require_positive(const std::string& key, double value) {
+  if (!(value > 0) || !std::isfinite(value)) reject(key, value, "must be a positive finite number");
+}
+
+// The modes an impact keeps: the rigid two, then the first N vibrational ones, all of them, or
+// (auto) those the pulse can excite, the rest folded into a residual compliance.
+std::vector<int> kept_modes(const ImpactScene& scene, const ModalBasis& basis, SceneGeometry& g) {
+  std::vector<int> kept = {0, 1};
+  if (scene.vibrational_modes == auto_modes) {
+    const ModeSelection selection =
+        select_modes(basis.omega, basis.shapes_at(g.z), scene.ball, scene.ball_speed, g.bat_speed, g.recoil,
+                     scene.mode_tolerance);
+    kept.insert(kept.end(), selection.kept.begin(), selection.kept.end());
+    g.contact.residual_compliance = selection.residual_compliance;
+    g.modes_error = selection.error_estimate;
+  } else {
+    const int count = scene.vibrational_modes == all_modes ? basis.count() : 2 + scene.vibrational_modes;
+    for (int i = 2; i < count; ++i) kept.push_back(i);
+  }
+  for (std::size_t i = 2; i < kept.size(); ++i) g.modes_kept.push_back(kept[i] - 1);
+  return kept;
+}
+
+// A bat held at a point: the constraint psi_p . a = 0 removes one direction from modal space.
+// The constrained bat's own modes diagonalise Omega^2 on the rest, so the collision integrates
+// them like any free modal system, and free flight stays exact.
+ModalContact constrained_modes(const ModalContact& free, const Eigen::VectorXd& psi_pivot, Eigen::MatrixXd& modes) {
+  const int n = free.count();
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(psi_pivot);
+  const Eigen::MatrixXd complement =
+      (qr.householderQ() * Eigen::MatrixXd::Identity(n, n)).rightCols(n - 1);
+  const Eigen::MatrixXd stiffness =
+      complement.transpose() * free.omega.array().square().matrix().asDiagonal() * complement;
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(stiffness);
+  modes = complement * eig.eigenvectors();
+  ModalContact held;
+  held.omega = eig.eigenvalues().cwiseMax(0.0).cwiseSqrt();
+  held.omega(0) = 0;  // rotation about the pivot; round-off otherwise
+  held.psi = modes.transpose() * free.psi;
+  held.velocity0 = modes.transpose() * free.velocity0;
+  return held;
+}
+
+void validate_history(const HistoryRequest& h, double length) {
+  require_positive("history_window", h.window);
+  require_positive("history_step", h.step);
+  if (h.window / h.step > max_history_samples)
+    reject("history_step", h.step, "gives more than 1e5 samples over the history window");
+  for (const double z : h.probes)
+    if (!(z >= 0 && z <= length)) reject("probes", z, "must lie on the bat (0 to " + std::to_string(length) + " m)");
+}
+
+}  // namespace
+
+Eigen::VectorXd SceneGeometry::shapes_at(const ModalBasis& basis, double z) const {
+  const Eigen::VectorXd free = basis.shapes_at(z)(kept);
+  return held.size() ? Eigen::VectorXd(held.transpose() * free) : free;
+}
+
+void validate(const ImpactScene& scene, const ModalBasis& basis) {
+  const double length = basis.length();
+  if (!(scene.z >= 0 && scene.z <= length)) reject("z", scene.z, "must lie on the bat (0 to " + std::to_string(length) + " m)");
+  require_finite("ball_speed", scene.ball_speed);
+  require_finite("omega", scene.swing.omega);
+  require_finite(scene.swing.about_center ? "center" : "cm_speed",
+                 scene.swing.about_center ? scene.swing.center : scene.swing.cm_speed);
+  require_positive("ball.mass", scene.ball.mass);
+  require_positive("ball.radius", scene.ball.radius);
+  require_positive("k1", scene.ball.k1);
+  require_positive("a", scene.ball.a);
+  if (!(scene.ball.e0 > 0 && scene.ball.e0 <= 1)) reject("e0", scene.ball.e0, "must lie in (0, 1]");
+  require_positive("dt", scene.integrator.dt);
+  require_positive("tolerance", scene.integrator.tolerance);
+  require_positive("mode_tolerance", scene.mode_tolerance);
+  if (scene.accuracy != 0) require_positive("accuracy", scene.accuracy);
+  require_positive("window", scene.integrator.window);
+  if (scene.histories) validate_history(scene.history, length);
+  if (scene.pivoted && !scene.swing.about_center)
+    reject("pivot", 1, "a pivoted bat is held at its rotation centre: give the centre, not the CM speed");
+  if (scene.vibrational_modes != all_modes && scene.vibrational_modes != auto_modes &&
+      (scene.vibrational_modes < 0 || scene.vibrational_modes > basis.count() - 2))
+    reject("modes", scene.vibrational_modes,
+           "must be 'all' or between 0 and " + std::to_string(basis.count() - 2) + " at this slice count");
+}
+
+SceneGeometry scene_geometry(const ImpactScene& scene, const ModalBasis& basis) {
+  SceneGeometry g;
+  g.z = std::clamp(scene.z, 0.0, basis.length());
+  const Swing& swing = scene.swing;
+  g.pivot = swing.center;
+  g.cm_speed = swing.about_center ? swing.omega * (basis.z_cm - swing.center) : swing.cm_speed;
+  g.bat_speed = g.cm_speed + swing.omega * (g.z - basis.z_cm);
+
+  const double m = scene.ball.mass, arm = g.z - basis.z_cm;
+  if (scene.pivoted) {
+    const double lever = g.z - g.pivot, pivot_arm = g.pivot - basis.z_cm;
+    g.recoil = m * lever * lever / (basis.moment_of_inertia_cm + basis.mass * pivot_arm * pivot_arm);
+  } else {
+    g.recoil = m * (1 / basis.mass + arm * arm / basis.moment_of_inertia_cm);
+  }
+
+  g.kept = kept_modes(scene, basis, g);
+  const std::vector<int>& kept = g.kept;
+  ModalContact free;
+  free.omega = basis.omega(kept);
+  free.psi = basis.shapes_at(g.z)(kept);
+  free.velocity0 = g.cm_speed * basis.translation(kept) + swing.omega * basis.rotation(kept);
+  // A flexible bat also yields locally where the ball strikes between the discretisation's nodes
+  // (beam_layout.hpp), in series with the ball like the dropped modes; a rigid bat does not.
+  const double local = scene.vibrational_modes == 0 ? 0.0 : basis.layout.point(g.z).compliance;
+  free.residual_compliance = g.contact.residual_compliance + local;
+  g.contact = free;
+  if (scene.pivoted) {
+    g.contact = constrained_modes(free, basis.shapes_at(g.pivot)(kept), g.held);
+    g.contact.residual_compliance = free.residual_compliance;
+  }
+  return g;
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,15 @@
+#include "sweetspot/impact/wall.hpp"
+
+namespace sweetspot {
+
+ImpactResult hit_wall(const Ball& ball, double speed, const CollisionOptions& options) {
+  const ModalContact wall;  // no modes: the contact point never moves
+  ImpactResult r = collision_result(collide(wall, ball, speed, options));
+  r.e_eff = r.vf / speed;
+  r.energy.initial = 0.5 * ball.mass * speed * speed;
+  r.energy.ball = 0.5 * ball.mass * r.vf * r.vf;
+  close_balance(r);
+  return r;
+}
+
+}  // namespace sweetspot

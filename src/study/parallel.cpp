@@ -1,0 +1,271 @@
+#include "sweetspot/study/parallel.hpp"
+
+#include <mpi.h>
+#include <omp.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <tuple>
+
+#include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/study/journal.hpp"
+#include "sweetspot/study/study_point.hpp"
+#include "sweetspot/study/study_results.hpp"
+
+namespace sweetspot {
+
+namespace {
+
+enum Tag { tag_work = 1, tag_result = 2, tag_stop = 3 };
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// What a rank's impacts add up to: their wall time, to tell the engine's overhead from them, and
+// the points whose ball compressed past its radius, where the force law is not meant to hold.
+struct RankTally {
+  double impact_seconds = 0;
+  std::size_t past_radius = 0;
+};
+
+void log_rank_summary(int rank, int solves, const RankTally& tally, Clock::time_point start) {
+  const double total = seconds_since(start);
+  spdlog::info("rank {}: {} eigen-solves; {:.3f} s of {:.3f} s in impacts ({:.1f} % elsewhere)", rank, solves,
+               tally.impact_seconds, total, 100 * (1 - tally.impact_seconds / total));
+  if (tally.past_radius > 0)
+    spdlog::warn("rank {}: {} points compressed the ball past its radius (u_max > radius): the force law is not "
+                 "meant for that",
+                 rank, tally.past_radius);
+}
+
+// The modal bases this rank has computed, one per (bat, slices, theory).
+class ModalCache {
+ public:
+  explicit ModalCache(const Study& study) : study_(study) {}
+  // A point that keeps no vibrational mode gets the rigid modes alone: no eigen-solve.
+  const ModalBasis& get(const GridPoint& p) {
+    const bool rigid_only = p.scene.vibrational_modes == 0;
+    const auto key = std::make_tuple(p.bat, p.slices, p.theory, rigid_only);
+    auto it = cache_.find(key);
+    if (it != cache_.end()) return it->second;
+    Bat bat = load_bat(study_.bats[p.bat]);
+    if (p.slices > 0) bat = resample(bat, p.slices);
+    if (!rigid_only) ++solves_;
+    return cache_.emplace(key, compute_modes(bat, p.theory, rigid_only)).first->second;
+  }
+  int solves() const { return solves_; }
+
+ private:
+  const Study& study_;
+  std::map<std::tuple<std::size_t, int, BeamTheory, bool>, ModalBasis> cache_;
+  int solves_ = 0;
+};
+
+// Computes a chunk of points with the OpenMP threads; rows in the order of `points`. Adds the
+// chunk to the rank's tally.
+std::vector<double> compute_chunk(const Study& study, const OutputLayout& layout, ModalCache& cache,
+                                  const std::vector<std::uint64_t>& points, RankTally& tally) {
+  std::vector<GridPoint> grid(points.size());
+  std::vector<const ModalBasis*> bases(points.size(), nullptr);  // none for the wall and the toy
+  for (std::size_t i = 0; i < points.size(); ++i) {  // modes first, serially: the cache is not shared
+    grid[i] = grid_point(study, points[i]);
+    if (has_bat(grid[i].kind)) bases[i] = &cache.get(grid[i]);
+  }
+  std::vector<double> rows(points.size() * layout.width);
+  const auto start = Clock::now();
+  std::size_t past_radius = 0;
+#pragma omp parallel for schedule(dynamic) reduction(+ : past_radius)
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const ImpactResult r = simulate_point(grid[i], bases[i]);
+    // The toy model's ball is dimensionless: no radius to pass.
+    if (grid[i].kind != StudyKind::toy && r.u_max > grid[i].scene.ball.radius) ++past_radius;
+    layout.extract(r, rows.data() + i * layout.width);
+  }
+  tally.impact_seconds += seconds_since(start);
+  tally.past_radius += past_radius;
+  return rows;
+}
+
+class Progress {
+ public:
+  Progress(std::size_t total, std::size_t already, Verbosity v) : total_(total), done_(already), start_done_(already), verbosity_(v) {}
+  void add(std::size_t n) {
+    done_ += n;
+    const auto now = Clock::now();
+    const double since_report = std::chrono::duration<double>(now - last_).count();
+    if (verbosity_ == Verbosity::quiet || (verbosity_ == Verbosity::normal && since_report < 2 && done_ < total_)) return;
+    last_ = now;
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    const double rate = (done_ - start_done_) / std::max(elapsed, 1e-9);
+    spdlog::info("{}/{} points ({:.1f} %), {:.0f} points/s, ETA {:.0f} s", done_, total_, 100.0 * done_ / total_, rate,
+                 (total_ - done_) / std::max(rate, 1e-9));
+  }
+
+ private:
+  std::size_t total_, done_, start_done_;
+  Verbosity verbosity_;
+  Clock::time_point start_ = Clock::now(), last_ = Clock::now();
+};
+
+// Rank 0: hands out chunks, computes chunks itself between requests, journals every result.
+class Coordinator {
+ public:
+  Coordinator(const Study& study, const OutputLayout& layout, const RunOptions& options, int ranks)
+      : study_(study), layout_(layout), ranks_(ranks), cache_(study),
+        journal_(journal_path(options), study_hash(study.text), layout.width, options.resume),
+        rows_(study.points() * layout.width, std::nan("")), done_(study.points(), false),
+        progress_(study.points(), journal_.recovered().size(), options.verbosity) {
+    for (const JournalEntry& e : journal_.recovered()) store_row(e.point, e.values.data());
+    if (!journal_.recovered().empty()) spdlog::info("resuming: {} of {} points already done", journal_.recovered().size(), study.points());
+    for (std::size_t point : task_order(study))
+      if (!done_[point]) todo_.push_back(point);
+    const std::size_t threads = static_cast<std::size_t>(omp_get_max_threads());
+    chunk_ = std::clamp<std::size_t>(todo_.size() / (ranks * threads * 16), 4 * threads, 4096);
+    // Rank 0 answers requests only between its own chunks: small ones keep the workers' wait short.
+    own_chunk_ = ranks > 1 ? std::max<std::size_t>(threads, chunk_ / 64) : chunk_;
+  }
+
+  static std::filesystem::path journal_path(const RunOptions& o) { return o.output.string() + ".journal"; }
+
+  void run() {
+    int active = ranks_ - 1;
+    while (active > 0 || next_ < todo_.size()) {
+      serve_requests(active, next_ >= todo_.size());
+      if (next_ < todo_.size()) {
+        const std::vector<std::uint64_t> chunk = take_chunk(own_chunk_);
+        finish(chunk, compute_chunk(study_, layout_, cache_, chunk, tally_));
+      }
+    }
+  }
+
+  void log_summary(Clock::time_point start) const { log_rank_summary(0, cache_.solves(), tally_, start); }
+
+  const std::vector<double>& rows() const { return rows_; }
+  void remove_journal() { journal_.remove(); }
+
+ private:
+  std::vector<std::uint64_t> take_chunk(std::size_t size) {
+    const std::size_t end = std::min(next_ + size, todo_.size());
+    std::vector<std::uint64_t> chunk(todo_.begin() + next_, todo_.begin() + end);
+    next_ = end;
+    return chunk;
+  }
+
+  // Answers every waiting worker; blocks for one when there is nothing left to compute here.
+  void serve_requests(int& active, bool block) {
+    while (active > 0) {
+      int waiting = 0;
+      MPI_Status status;
+      if (block) MPI_Probe(MPI_ANY_SOURCE, tag_result, MPI_COMM_WORLD, &status), waiting = 1;
+      else MPI_Iprobe(MPI_ANY_SOURCE, tag_result, MPI_COMM_WORLD, &waiting, &status);
+      if (!waiting) return;
+      receive_result(status);
+      const std::vector<std::uint64_t> chunk = next_ < todo_.size() ? take_chunk(chunk_) : std::vector<std::uint64_t>{};
+      if (chunk.empty()) {
+        MPI_Send(nullptr, 0, MPI_UINT64_T, status.MPI_SOURCE, tag_stop, MPI_COMM_WORLD);
+        --active;
+      } else {
+        MPI_Send(chunk.data(), static_cast<int>(chunk.size()), MPI_UINT64_T, status.MPI_SOURCE, tag_work, MPI_COMM_WORLD);
+      }
+    }
+  }
+
+  // A result message: the chunk's point indices (as doubles, exact below 2^53) then its rows.
+  void receive_result(const MPI_Status& status) {
+    int count = 0;
+    MPI_Get_count(&status, MPI_DOUBLE, &count);
+    std::vector<double> message(count);
+    MPI_Recv(message.data(), count, MPI_DOUBLE, status.MPI_SOURCE, tag_result, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    const std::size_t n = count / (1 + layout_.width);
+    std::vector<std::uint64_t> chunk(message.begin(), message.begin() + n);
+    finish(chunk, std::vector<double>(message.begin() + n, message.end()));
+  }
+
+  void finish(const std::vector<std::uint64_t>& chunk, const std::vector<double>& rows) {
+    if (chunk.empty()) return;
+    journal_.append(chunk, rows);
+    for (std::size_t i = 0; i < chunk.size(); ++i) store_row(chunk[i], rows.data() + i * layout_.width);
+    progress_.add(chunk.size());
+  }
+
+  void store_row(std::uint64_t point, const double* row) {
+    std::copy_n(row, layout_.width, rows_.begin() + point * layout_.width);
+    done_[point] = true;
+  }
+
+  const Study& study_;
+  const OutputLayout& layout_;
+  int ranks_;
+  ModalCache cache_;
+  Journal journal_;
+  std::vector<double> rows_;
+  std::vector<bool> done_;
+  Progress progress_;
+  std::vector<std::uint64_t> todo_;
+  std::size_t next_ = 0, chunk_ = 1, own_chunk_ = 1;
+  RankTally tally_;
+};
+
+void work(const Study& study, const OutputLayout& layout, int rank) {
+  const auto start = Clock::now();
+  RankTally tally;
+  ModalCache cache(study);
+  std::vector<double> message;  // first request: no result
+  while (true) {
+    MPI_Send(message.data(), static_cast<int>(message.size()), MPI_DOUBLE, 0, tag_result, MPI_COMM_WORLD);
+    MPI_Status status;
+    MPI_Probe(0, MPI_ANY_TAG, MPI_COMM_WORLD, &status);
+    int count = 0;
+    MPI_Get_count(&status, MPI_UINT64_T, &count);
+    std::vector<std::uint64_t> chunk(count);
+    MPI_Recv(chunk.data(), count, MPI_UINT64_T, 0, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    if (status.MPI_TAG == tag_stop) break;
+    const std::vector<double> rows = compute_chunk(study, layout, cache, chunk, tally);
+    message.assign(chunk.begin(), chunk.end());
+    message.insert(message.end(), rows.begin(), rows.end());
+  }
+  log_rank_summary(rank, cache.solves(), tally, start);
+}
+
+// The vibrational frequencies (Hz) of each bat; none for the kinds without a bat, nor for
+// studies of rigid bats alone.
+std::vector<std::vector<double>> bat_frequencies(const Study& study) {
+  std::vector<std::vector<double>> f;
+  if (!keeps_vibrations(study)) return f;
+  for (const auto& file : study.bats) {
+    Bat bat = load_bat(file);
+    if (study.slices > 0) bat = resample(bat, study.slices);
+    f.push_back(compute_modes(bat, study.theory).vibrational_frequencies_hz());
+  }
+  return f;
+}
+
+}  // namespace
+
+void run_study(const Study& study, const RunOptions& options) {
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  const OutputLayout layout(study);
+  if (rank != 0) {
+    work(study, layout, rank);
+    return;
+  }
+  const auto start = Clock::now();
+  spdlog::info("study {} ({}): {} points on {} rank(s) x {} thread(s)", study.file.string(), to_string(study.kind),
+               study.points(), ranks, omp_get_max_threads());
+  Coordinator coordinator(study, layout, options, ranks);
+  coordinator.run();
+  const RunInfo info{ranks, omp_get_max_threads(), seconds_since(start)};
+  write_dataset(options.output, make_dataset(study, layout, coordinator.rows(), bat_frequencies(study), info));
+  coordinator.remove_journal();
+  coordinator.log_summary(start);
+  spdlog::info("wrote {}: {} points in {:.3f} s, {:.0f} points/s", options.output.string(), study.points(),
+               info.wall_time, study.points() / info.wall_time);
+}
+
+}  // namespace sweetspot

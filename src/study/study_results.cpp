@@ -1,0 +1,325 @@
+#include "sweetspot/study/study_results.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include "sweetspot/version.hpp"
+
+namespace sweetspot {
+
+namespace {
+
+constexpr double missing = std::numeric_limits<double>::quiet_NaN();
+
+struct Description {
+  const char* units;
+  const char* long_name;
+};
+
+const std::map<std::string, Description>& descriptions() {
+  static const std::map<std::string, Description> d = {
+      {"vf", {"m/s", "exit speed of the ball, positive away from the bat"}},
+      {"vf_rigid", {"m/s", "exit speed of the ball off a rigid bat at the same point (free or pivoted)"}},
+      {"vf_van_zandt", {"m/s", "exit speed of the ball by Van Zandt's prescription (N2000 App. A)"}},
+      {"e_eff", {"1", "effective coefficient of restitution"}},
+      {"contact_time", {"s", "time the ball is in contact with the bat, summed over contacts"}},
+      {"collision_time", {"s", "time from first touch until 99 % of the impulse is delivered"}},
+      {"u_max", {"m", "largest compression of the ball"}},
+      {"peak_force", {"N", "largest contact force"}},
+      {"impulse", {"N s", "impulse delivered to the ball"}},
+      {"contacts", {"1", "number of separate contacts"}},
+      {"modes_kept", {"1", "vibrational modes kept (modes = auto)"}},
+      {"modes_error", {"1", "estimated relative vf error of the dropped modes (modes = auto)"}},
+      {"mode_tolerance", {"1", "relative vf error allowed the dropped modes (modes = auto)"}},
+      {"accuracy", {"1", "relative vf error the integration may add (sets the step)"}},
+      {"status", {"1", "outcome of the impact"}},
+      {"energy_initial", {"J", "initial kinetic energy of ball and bat"}},
+      {"energy_ball", {"J", "final kinetic energy of the ball"}},
+      {"energy_bat_translation", {"J", "final kinetic energy of the bat's centre of mass"}},
+      {"energy_bat_rotation", {"J", "final rotational energy of the bat about its centre of mass"}},
+      {"energy_vibration", {"J", "final vibrational energy of the bat"}},
+      {"energy_ball_dissipated", {"J", "energy dissipated in the ball"}},
+      {"energy_residual", {"J", "energy balance residual (integration error)"}},
+      {"mode_energy", {"J", "final energy of each vibrational mode"}},
+      {"mode_response", {"1", "response R_n = m psi_n^2 g(omega_n) of each kept vibrational mode"}},
+      {"force_response", {"1", "g(omega tau) = |integral of F(t)/impulse exp(i omega t) dt|^2 of the force profile"}},
+      {"displacement", {"m", "displacement of the probe point, in the frame where it is initially at rest"}},
+      {"velocity", {"m/s", "velocity of the probe point, in the frame where it is initially at rest"}},
+      {"acceleration", {"m/s^2", "acceleration of the probe point"}},
+      {"vibration_displacement", {"m", "vibrational displacement of the probe point (rigid modes left out)"}},
+      {"vibration_velocity", {"m/s", "vibrational velocity of the probe point (rigid modes left out)"}},
+      {"vibration_acceleration", {"m/s^2", "vibrational acceleration of the probe point (rigid modes left out)"}},
+      {"force", {"N", "contact force on the ball"}},
+      {"compression", {"m", "compression of the ball"}},
+      {"ball_position", {"m", "displacement of the ball from first touch, positive away from the bat"}},
+      {"z", {"m", "impact location from the knob"}},
+      {"ball_speed", {"m/s", "ball speed toward the bat"}},
+      {"e0", {"1", "coefficient of restitution of the ball on a rigid wall"}},
+      {"ball_mass", {"kg", "ball mass"}},
+      {"ball_radius", {"m", "ball radius"}},
+      {"k1", {"N m^-a", "ball stiffness k1"}},
+      {"a", {"1", "ball compression exponent"}},
+      {"cm_speed", {"m/s", "bat centre-of-mass speed toward the ball"}},
+      {"center", {"m", "rotation centre of the swing from the knob"}},
+      {"omega", {"rad/s", "bat angular velocity"}},
+      {"pivot", {"1", "bat held at the rotation centre (1) or free (0)"}},
+      {"modes", {"1", "vibrational modes kept (-1: all, -2: auto)"}},
+      {"slices", {"1", "slices of the bat"}},
+      {"dt", {"s", "integration step"}},
+      {"window", {"s", "free flight followed after a separation"}},
+      {"omega_tau", {"1", "toy model: bat spring frequency omega times collision time tau (N2000 App. A)"}},
+      {"bat", {"1", "bat"}},
+      {"theory", {"1", "beam theory"}},
+      {"mode", {"1", "vibrational mode number"}},
+      {"frequency", {"Hz", "frequency of each vibrational mode of each bat"}},
+  };
+  return d;
+}
+
+Description describe(const std::string& name) {
+  const auto it = descriptions().find(name);
+  return it == descriptions().end() ? Description{"1", ""} : it->second;
+}
+
+double energy_value(const ImpactEnergy& e, const std::string& name) {
+  if (name == "energy_initial") return e.initial;
+  if (name == "energy_ball") return e.ball;
+  if (name == "energy_bat_translation") return e.bat_translation;
+  if (name == "energy_bat_rotation") return e.bat_rotation;
+  if (name == "energy_vibration") return e.vibration;
+  if (name == "energy_ball_dissipated") return e.ball_dissipated;
+  return e.residual;
+}
+
+double scalar_value(const ImpactResult& r, const std::string& name) {
+  if (name == "status") return static_cast<double>(r.status);
+  if (r.status != CollisionStatus::ok) return missing;
+  if (name == "vf") return r.vf;
+  if (name == "vf_rigid") return r.vf_rigid;
+  if (name == "vf_van_zandt") return r.vf_van_zandt;
+  if (name == "e_eff") return r.e_eff;
+  if (name == "contact_time") return r.contact_time;
+  if (name == "collision_time") return r.collision_time;
+  if (name == "u_max") return r.u_max;
+  if (name == "peak_force") return r.peak_force;
+  if (name == "impulse") return r.impulse;
+  if (name == "contacts") return r.contacts;
+  if (name == "modes_kept") return static_cast<double>(r.modes_kept.size());
+  if (name == "modes_error") return r.modes_error;
+  return energy_value(r.energy, name);
+}
+
+Coordinate axis_coordinate(const Study& study, const Axis& axis) {
+  const Description d = describe(axis.name);
+  Coordinate c{axis.name, d.units, d.long_name, {}, {}};
+  if (axis.name == "bat")
+    for (double index : axis.values) c.labels.push_back(study.bat_names[static_cast<std::size_t>(index)]);
+  else if (axis.name == "theory")
+    c.labels = axis.labels;
+  else
+    c.values = axis.values;
+  return c;
+}
+
+// `units` replaces the description's own when given.
+Variable output_variable(const std::string& name, std::vector<std::string> dims, std::vector<double> values,
+                         const char* units = nullptr) {
+  Description d = describe(name);
+  if (units) d.units = units;
+  Variable v{name, d.units, d.long_name, std::move(dims), {}, {}, {}};
+  if (name == "status" || name == "contacts" || name == "modes_kept") {
+    std::vector<std::int32_t> ints(values.size());
+    std::transform(values.begin(), values.end(), ints.begin(),
+                   [](double x) { return std::isfinite(x) ? static_cast<std::int32_t>(x) : -1; });
+    v.values = std::move(ints);
+  } else {
+    v.values = std::move(values);
+  }
+  if (name == "status") {
+    v.int_attributes.push_back({"flag_values", {0, 1, 2, 3, 4}});
+    v.text_attributes.push_back({"flag_meanings", "ok no_separation non_finite refused_step unbalanced"});
+  }
+  return v;
+}
+
+bool is_scalar(const std::string& name) {
+  return !(name == "mode_energy" || name == "mode_response" || name == "force_response" || is_history(name));
+}
+
+// The dimensions an output adds to the study's axes, slowest first.
+std::vector<std::string> extra_dims(const Study& study, const std::string& name) {
+  if (name == "mode_energy" || name == "mode_response") return {"mode"};
+  if (name == "force_response") return {"omega_tau"};
+  if (is_probe_history(name) && study.base.history.probes.size() > 1) return {"probe", "time"};
+  if (is_history(name)) return {"time"};
+  return {};
+}
+
+std::size_t dim_size(const Study& study, const std::string& dim) {
+  if (dim == "mode") return static_cast<std::size_t>(dataset_mode_count(study));
+  if (dim == "omega_tau") return force_response_grid().size();
+  if (dim == "probe") return study.base.history.probes.size();
+  return study.base.history.samples();  // time
+}
+
+std::vector<double> ProbeHistory::*probe_member(const std::string& name) {
+  if (name == "displacement") return &ProbeHistory::displacement;
+  if (name == "velocity") return &ProbeHistory::velocity;
+  if (name == "acceleration") return &ProbeHistory::acceleration;
+  if (name == "vibration_displacement") return &ProbeHistory::vibration_displacement;
+  if (name == "vibration_velocity") return &ProbeHistory::vibration_velocity;
+  return &ProbeHistory::vibration_acceleration;
+}
+
+// A point's values of an output that has extra dimensions, row-major over them (probes, then time).
+std::vector<double> array_value(const ImpactResult& r, const std::string& name) {
+  if (name == "mode_energy") return r.mode_energy;
+  if (name == "mode_response") return r.mode_response;
+  if (name == "force_response") return r.force_response;
+  if (name == "force") return r.histories.force;
+  if (name == "compression") return r.histories.compression;
+  if (name == "ball_position") return r.histories.ball_position;
+  std::vector<double> values;
+  for (const ProbeHistory& p : r.histories.probes) {
+    const std::vector<double>& history = p.*probe_member(name);
+    values.insert(values.end(), history.begin(), history.end());
+  }
+  return values;
+}
+
+}  // namespace
+
+int dataset_mode_count(const Study& study) {
+  const bool per_mode =
+      std::ranges::count(study.outputs, "mode_energy") + std::ranges::count(study.outputs, "mode_response") > 0;
+  return per_mode ? study.base.vibrational_modes : 10;
+}
+
+OutputLayout::OutputLayout(const Study& study) : names(study.outputs) {
+  for (const std::string& name : names) {
+    std::size_t values = 1;
+    for (const std::string& dim : extra_dims(study, name)) values *= dim_size(study, dim);
+    offsets.push_back(width);
+    widths.push_back(static_cast<int>(values));
+    width += widths.back();
+  }
+}
+
+void OutputLayout::extract(const ImpactResult& result, double* row) const {
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (is_scalar(names[i])) {
+      row[offsets[i]] = scalar_value(result, names[i]);
+      continue;
+    }
+    // A failed point has none; a point keeping fewer modes than the dimension leaves NaN after them.
+    const std::vector<double> values = result.status == CollisionStatus::ok ? array_value(result, names[i])
+                                                                             : std::vector<double>{};
+    for (int n = 0; n < widths[i]; ++n) row[offsets[i] + n] = n < static_cast<int>(values.size()) ? values[n] : missing;
+  }
+}
+
+namespace {
+
+// The bat's own dimensions: `bat` when no axis sweeps it, and `mode` (frequencies, mode_energy).
+void add_bat_coordinates(const Study& study, Dataset& d) {
+  if (std::ranges::none_of(study.axes, [](const Axis& axis) { return axis.name == "bat"; }))
+    d.coordinates.push_back({"bat", "1", "bat", {}, {study.bat_names.front()}});
+  if (!keeps_vibrations(study)) return;
+  Coordinate mode{"mode", "1", describe("mode").long_name, {}, {}};
+  for (int n = 1; n <= dataset_mode_count(study); ++n) mode.values.push_back(n);
+  d.coordinates.push_back(mode);
+}
+
+Coordinate history_coordinate(const Study& study, const std::string& dim) {
+  const HistoryRequest& h = study.base.history;
+  if (dim == "probe") return {"probe", "m", "probe point on the bat, from the knob", h.probes, {}};
+  if (dim == "omega_tau")
+    return {"omega_tau", "1", "angular frequency omega times the point's collision time tau", force_response_grid(), {}};
+  Coordinate time{"time", "s", "time since the ball first touches the bat", {}, {}};
+  for (std::size_t j = 0; j < h.samples(); ++j) time.values.push_back(static_cast<double>(j) * h.step);
+  return time;
+}
+
+// The dimensions of the histories and the force response that the outputs use, once each.
+void add_history_coordinates(const Study& study, Dataset& d) {
+  for (const std::string dim : {"probe", "time", "omega_tau"})
+    if (std::ranges::any_of(study.outputs,
+                            [&](const std::string& name) { return std::ranges::count(extra_dims(study, name), dim) > 0; }))
+      d.coordinates.push_back(history_coordinate(study, dim));
+}
+
+// A history at one probe has no probe dimension: the attribute says where it was taken.
+void add_probe_attribute(const Study& study, Variable& v) {
+  if (!is_probe_history(v.name) || study.base.history.probes.size() != 1) return;
+  std::ostringstream where;
+  where << study.base.history.probes[0] << " m from the knob";
+  v.text_attributes.push_back({"probe", where.str()});
+}
+
+void add_outputs(const Study& study, const OutputLayout& layout, const std::vector<double>& rows,
+                 const std::vector<std::string>& dims, Dataset& d) {
+  const std::size_t points = study.points();
+  for (std::size_t i = 0; i < layout.names.size(); ++i) {
+    std::vector<double> values(points * layout.widths[i]);
+    for (std::size_t p = 0; p < points; ++p)
+      std::copy_n(rows.begin() + p * layout.width + layout.offsets[i], layout.widths[i],
+                  values.begin() + p * layout.widths[i]);
+    std::vector<std::string> variable_dims = dims;
+    for (std::string& dim : extra_dims(study, layout.names[i])) variable_dims.push_back(std::move(dim));
+    // The toy model is dimensionless (m = k = v_i = 1): speeds are ratios to v_i and energies
+    // are in units of m v_i^2 (the initial energy is 1/2).
+    const char* units = study.kind == StudyKind::toy ? "1" : nullptr;
+    d.variables.push_back(output_variable(layout.names[i], variable_dims, std::move(values), units));
+    add_probe_attribute(study, d.variables.back());
+  }
+}
+
+Variable frequency_variable(const Study& study, const std::vector<std::vector<double>>& bat_frequencies_hz) {
+  const int modes = dataset_mode_count(study);
+  std::vector<double> frequencies;
+  for (const auto& f : bat_frequencies_hz)
+    for (int n = 0; n < modes; ++n) frequencies.push_back(n < static_cast<int>(f.size()) ? f[n] : missing);
+  return output_variable("frequency", {"bat", "mode"}, std::move(frequencies));
+}
+
+}  // namespace
+
+bool keeps_vibrations(const Study& study) {
+  const auto axis = std::ranges::find(study.axes, "modes", &Axis::name);
+  if (axis == study.axes.end()) return has_bat(study.kind) && study.base.vibrational_modes != 0;
+  return std::ranges::any_of(axis->values, [](double modes) { return modes != 0; });
+}
+
+Dataset make_dataset(const Study& study, const OutputLayout& layout, const std::vector<double>& rows,
+                     const std::vector<std::vector<double>>& bat_frequencies_hz, const RunInfo& info) {
+  Dataset d;
+  std::vector<std::string> dims;
+  for (const Axis& axis : study.axes) {
+    d.coordinates.push_back(axis_coordinate(study, axis));
+    dims.push_back(axis.name);
+  }
+  // Wall and toy studies have no bat: no bat or mode dimension and no frequencies; a study of
+  // rigid bats alone computed no modes, so it stores no frequencies either.
+  if (has_bat(study.kind)) add_bat_coordinates(study, d);
+  add_history_coordinates(study, d);
+  add_outputs(study, layout, rows, dims, d);
+  if (!bat_frequencies_hz.empty()) d.variables.push_back(frequency_variable(study, bat_frequencies_hz));
+
+  d.text_attributes = {{"title", study.title},
+                       {"study_file", study.file.string()},
+                       {"kind", to_string(study.kind)},
+                       {"study", study.text},
+                       {"program", "sweetspot"},
+                       {"program_version", version},
+                       {"git_commit", git_commit},
+                       {"references", "A. M. Nathan, Am. J. Phys. 68, 979 (2000)"}};
+  d.number_attributes = {{"mpi_ranks", static_cast<double>(info.ranks)},
+                         {"omp_threads", static_cast<double>(info.threads)},
+                         {"wall_time_s", info.wall_time}};
+  return d;
+}
+
+}  // namespace sweetspot
