@@ -103,8 +103,7 @@ struct Section {
   }
 };
 
-toml::table parse_toml(const fs::path& file) {
-  const std::string text = read_text(file);
+toml::table parse_toml(const fs::path& file, const std::string& text) {
   try {
     return toml::parse(text, file.string());
   } catch (const toml::parse_error& e) {
@@ -246,8 +245,7 @@ void check_slicing(const fs::path& file, const std::vector<Row>& rows, double le
 }
 
 // Reads the profile into bat.outer_diameter (and inner_diameter for a hollow bat).
-void read_profile(const fs::path& file, const std::string& context, Bat& bat) {
-  const std::string text = read_text(file, context);  // rows keep views into it
+void read_profile(const fs::path& file, const std::string& text, Bat& bat) {
   std::optional<Columns> columns;
   std::vector<Row> rows;
   int number = 0;
@@ -275,7 +273,14 @@ void read_profile(const fs::path& file, const std::string& context, Bat& bat) {
 }  // namespace
 
 Bat load_bat(const std::filesystem::path& toml_path) {
-  const toml::table doc = parse_toml(toml_path);
+  BatSource ignored;
+  return load_bat(toml_path, ignored);
+}
+
+Bat load_bat(const std::filesystem::path& toml_path, BatSource& source) {
+  source.toml_file = toml_path;
+  source.toml_text = read_text(toml_path);
+  const toml::table doc = parse_toml(toml_path, source.toml_text);
   const Section top{toml_path, doc, ""};
   top.reject_unknown({"name", "length", "material", "profile"});
   Bat bat;
@@ -284,8 +289,10 @@ Bat load_bat(const std::filesystem::path& toml_path) {
   bat.material = read_material(top.section("material"));
   const std::string profile = top.text("profile");
   // The profile is named relative to the bat file, so a study directory can be moved whole.
-  read_profile(toml_path.parent_path() / profile,
-               " (the profile named by key 'profile' in " + toml_path.string() + ")", bat);
+  source.profile_file = toml_path.parent_path() / profile;
+  source.profile_text =
+      read_text(source.profile_file, " (the profile named by key 'profile' in " + toml_path.string() + ")");
+  read_profile(source.profile_file, source.profile_text, bat);  // rows keep views into the text
   return bat;
 }
 
