@@ -23,5 +23,6 @@ with xr.open_dataset(path, engine="h5netcdf") as ds:
         assert key in ds.attrs, key
     got = float(ds.vf.sel(bat=bat).sel(z=z, ball_speed=speed, method="nearest"))
     assert got == vf, (got, vf)
-    assert set(ds.data_vars) == {"vf", "e_eff", "contact_time", "collision_time", "status", "frequency"}
+    provenance = {"bat_file", "bat_toml", "bat_profile_file", "bat_profile", "bat_slices"}  # check_provenance.py
+    assert set(ds.data_vars) == {"vf", "e_eff", "contact_time", "collision_time", "status", "frequency"} | provenance
 print("dataset ok")
