@@ -6,7 +6,6 @@
 #include <map>
 #include <sstream>
 
-
 namespace sweetspot {
 
 namespace {
@@ -120,7 +119,7 @@ std::vector<std::int32_t> integers(const std::vector<double>& values) {
 // states of pivot are CF flags, values named by flag_meanings.
 Coordinate axis_coordinate(const Study& study, const Axis& axis) {
   const Description d = describe(axis.name);
-  Coordinate c{axis.name, d.units, d.long_name, {}, {}, {}};
+  Coordinate c{axis.name, d.units, d.long_name, {}, {}};
   if (axis.name == "bat") {
     for (double index : axis.values) c.labels.push_back(study.bat_names[static_cast<std::size_t>(index)]);
   } else if (axis.name == "theory") {
@@ -211,7 +210,7 @@ std::vector<double> array_value(const ImpactResult& r, const std::string& name) 
 
 int dataset_mode_count(const Study& study, const std::vector<std::vector<double>>& bat_frequencies_hz) {
   const auto axis = std::ranges::find(study.axes, "modes", &Axis::name);
-  const std::vector<double> counts = axis == study.axes.end() ? std::vector<double>{double(study.base.vibrational_modes)}
+  const std::vector<double> counts = axis == study.axes.end() ? std::vector<double>{static_cast<double>(study.base.vibrational_modes)}
                                                               : axis->values;
   // "all" or "auto" somewhere: as many as a bat has (auto may keep any of them).
   std::size_t most = 0;
@@ -250,19 +249,19 @@ namespace {
 // The bat's own dimensions: `bat` when no axis sweeps it, and `mode` (frequencies, mode_energy).
 void add_bat_coordinates(const Study& study, const std::vector<std::vector<double>>& bat_frequencies_hz, Dataset& d) {
   if (std::ranges::none_of(study.axes, [](const Axis& axis) { return axis.name == "bat"; }))
-    d.coordinates.push_back({"bat", "", "bat", {}, {study.bat_names.front()}, {}, {}, {}});
+    d.coordinates.push_back({"bat", "", "bat", {}, {study.bat_names.front()}});
   if (!keeps_vibrations(study)) return;
-  Coordinate mode{"mode", "1", describe("mode").long_name, {}, {}, {}};
+  Coordinate mode{"mode", "1", describe("mode").long_name, {}, {}};
   for (int n = 1; n <= dataset_mode_count(study, bat_frequencies_hz); ++n) mode.integers.push_back(n);
   d.coordinates.push_back(mode);
 }
 
 Coordinate history_coordinate(const Study& study, const std::string& dim) {
   const HistoryRequest& h = study.base.history;
-  if (dim == "probe") return {"probe", "m", "probe point on the bat, from the knob", h.probes, {}, {}};
+  if (dim == "probe") return {"probe", "m", "probe point on the bat, from the knob", h.probes, {}};
   if (dim == "omega_tau")
     return {"omega_tau", "1", "angular frequency omega times the point's collision time tau", force_response_grid(), {}};
-  Coordinate time{"time", "s", "time since the ball first touches the bat", {}, {}, {}};
+  Coordinate time{"time", "s", "time since the ball first touches the bat", {}, {}};
   for (std::size_t j = 0; j < h.samples(); ++j) time.values.push_back(static_cast<double>(j) * h.step);
   return time;
 }
