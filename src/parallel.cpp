@@ -15,6 +15,7 @@
 #include "sweetspot/bat_file.hpp"
 #include "sweetspot/journal.hpp"
 #include "sweetspot/study_point.hpp"
+#include "sweetspot/study_provenance.hpp"
 #include "sweetspot/study_results.hpp"
 
 namespace sweetspot {
@@ -131,7 +132,7 @@ class Coordinator {
  public:
   Coordinator(const Study& study, const OutputLayout& layout, const RunOptions& options, int ranks)
       : study_(study), layout_(layout), ranks_(ranks), cache_(study),
-        journal_(journal_path(options), study_hash(study.text), layout.width, options.resume),
+        journal_(journal_path(options), study_hash(input_texts(study)), layout.width, options.resume),
         rows_(study.points() * layout.width, std::nan("")), done_(study.points(), false),
         progress_(study.points(), journal_.recovered().size(), options.verbosity) {
     for (const JournalEntry& e : journal_.recovered()) store_row(e.point, e.values.data());

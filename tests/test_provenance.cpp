@@ -30,13 +30,26 @@ std::vector<std::string> provenance_bats(const TempDir& dir) {
   return {dir / "dense_r161.toml", source_path("studies/bats/torpedo.toml")};
 }
 
-void copy_dense_r161(const TempDir& dir) {
-  fs::copy_file(source_path("studies/bats/r161_profile.csv"), dir.path / "r161_profile.csv");
+void write_dense_r161(const TempDir& dir, int density = 800) {
+  if (!fs::exists(dir.path / "r161_profile.csv"))
+    fs::copy_file(source_path("studies/bats/r161_profile.csv"), dir.path / "r161_profile.csv");
   std::ostringstream text;
   text << "# R161 of a denser wood: its text, not only its results, must differ in the dataset\n"
        << "name = \"dense R161\"\nlength = 0.84\nprofile = \"r161_profile.csv\"\n"
-       << "[material]\ndensity = 800\nyoungs_modulus = 1.814e10\nshear_modulus = 1.05e9\n";
+       << "[material]\ndensity = " << density << "\nyoungs_modulus = 1.814e10\nshear_modulus = 1.05e9\n";
   dir.write("dense_r161.toml", text.str());
+}
+
+// Runs the study and kills it with SIGKILL as soon as its journal holds some finished points,
+// well before the end.
+void run_and_kill(const fs::path& study, const std::string& out) {
+  const ProgramRun killed = run_command(
+      "OMP_NUM_THREADS=1 " + std::string(SWEETSPOT_PROGRAM) + " run " + study.string() + " -o " + out +
+      " --quiet & pid=$!; while [ $(stat -c %s " + out + ".journal 2>/dev/null || echo 0) -lt 20000 ]; do "
+      "sleep 0.005; done; kill -9 $pid; wait $pid; echo killed $?");
+  INFO(killed.output);
+  REQUIRE_THAT(killed.output, Catch::Contains("killed 137"));
+  REQUIRE(fs::exists(out + ".journal"));
 }
 
 ProgramRun check_provenance(const std::string& out, const TempDir& dir, int resumed) {
@@ -51,7 +64,7 @@ ProgramRun check_provenance(const std::string& out, const TempDir& dir, int resu
 TEST_CASE("A dataset reads back in xarray with CF attributes, integer axes, its bats' texts and scene",
           "[run][provenance]") {
   TempDir dir;
-  copy_dense_r161(dir);
+  write_dense_r161(dir);
   const auto study = dir.write("study.toml", provenance_study(2));
   const std::string out = dir / "out.h5";
   const ProgramRun run = run_program("run " + study.string() + " -o " + out + " --quiet");
@@ -66,20 +79,32 @@ TEST_CASE("A dataset reads back in xarray with CF attributes, integer axes, its 
 TEST_CASE("A run killed with SIGKILL and resumed says so in its dataset, with the points it took over",
           "[run][provenance]") {
   TempDir dir;
-  copy_dense_r161(dir);
+  write_dense_r161(dir);
   const auto study = dir.write("study.toml", provenance_study(60));
   const std::string out = dir / "out.h5";
-  // Kill the run as soon as its journal holds some finished points, well before the end.
-  const ProgramRun killed = run_command(
-      "OMP_NUM_THREADS=1 " + std::string(SWEETSPOT_PROGRAM) + " run " + study.string() + " -o " + out +
-      " --quiet & pid=$!; while [ $(stat -c %s " + out + ".journal 2>/dev/null || echo 0) -lt 20000 ]; do "
-      "sleep 0.005; done; kill -9 $pid; wait $pid; echo killed $?");
-  INFO(killed.output);
-  REQUIRE_THAT(killed.output, Catch::Contains("killed 137"));
+  run_and_kill(study, out);
   const ProgramRun resumed = run_program("run " + study.string() + " -o " + out + " --resume --quiet");
   INFO(resumed.output);
   REQUIRE(resumed.exit_code == 0);
   const ProgramRun check = check_provenance(out, dir, 1);
+  INFO(check.output);
+  CHECK(check.exit_code == 0);
+  CHECK_THAT(check.output, Catch::Contains("provenance ok"));
+}
+
+TEST_CASE("A bat edited between the kill and the resume makes the run start over, and its dataset says so",
+          "[run][provenance]") {
+  TempDir dir;
+  write_dense_r161(dir);
+  const auto study = dir.write("study.toml", provenance_study(60));
+  const std::string out = dir / "out.h5";
+  run_and_kill(study, out);
+  write_dense_r161(dir, 900);  // the study's text is the same; its results are not
+  const ProgramRun rerun = run_program("run " + study.string() + " -o " + out + " --resume");
+  INFO(rerun.output);
+  REQUIRE(rerun.exit_code == 0);
+  CHECK_THAT(rerun.output, !Catch::Contains("resuming:"));
+  const ProgramRun check = check_provenance(out, dir, 0);  // and bat_toml is the edited file's text
   INFO(check.output);
   CHECK(check.exit_code == 0);
   CHECK_THAT(check.output, Catch::Contains("provenance ok"));

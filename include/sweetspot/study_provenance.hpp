@@ -5,6 +5,7 @@
 // their texts byte for byte, and how the run went (ranks, threads, wall time, resumed or not).
 #include <cstddef>
 #include <filesystem>
+#include <string>
 
 #include "sweetspot/dataset.hpp"
 #include "sweetspot/study.hpp"
@@ -18,6 +19,11 @@ struct RunInfo {
   std::size_t resumed_points = 0;  // points taken from a killed run's journal (0: not resumed)
   std::filesystem::path journal;   // that journal
 };
+
+// Everything a run's results depend on that is read from files: the study's text and each bat's
+// TOML and profile texts, one after the other. A journal is resumed only by a run of the same
+// inputs (a bat edited between the kill and the resume would otherwise mix two bats' results).
+std::string input_texts(const Study& study);
 
 // Adds the global attributes (Conventions, title, the study text, the program, the scene_* keys,
 // the run) and, for a study on bats, the per-bat variables bat_file, bat_toml, bat_profile_file,
