@@ -16,7 +16,8 @@ import xarray as xr
 BATS = ["R161", "torpedo"]
 Z = [0.1, 0.2, 0.3, 0.4, 0.5]
 SPEEDS = [30.0, 40.0, 50.0]
-MODES = [1.0, 2.0, 3.0, 4.0]
+MODES = [1, 2, 3, 4]
+BAT_TEXTS = ['name = "R161"\n', "ω = 1\n"]
 SAMPLES = [(0, 0, 0), (0, 4, 2), (1, 2, 1), (1, 4, 0), (0, 1, 2)]  # (bat, z, speed) indices
 
 
@@ -30,6 +31,9 @@ def check_xarray(path):
         assert ds.status.dims == ("bat", "z", "ball_speed"), ds.status.dims
         assert ds.frequency.dims == ("bat", "mode"), ds.frequency.dims
         assert dict(ds.sizes) == {"bat": 2, "z": 5, "ball_speed": 3, "mode": 4}, dict(ds.sizes)
+        assert ds.mode.dtype == np.int32, ds.mode.dtype
+        assert ds.mode.attrs["flag_meanings"] == "all" and ds.mode.attrs["flag_values"] == -1
+        assert ds.bat_text.dims == ("bat",) and list(ds.bat_text.values) == BAT_TEXTS, ds.bat_text.values
         assert list(ds.bat.values) == BATS, ds.bat.values
         assert all(type(b) is str for b in ds.bat.values), ds.bat.values
         np.testing.assert_array_equal(ds.z.values, Z)
@@ -40,7 +44,7 @@ def check_xarray(path):
             assert ds.status.values[b, z, s] == (vf(b, z, s) - 0.5) % 3, (b, z, s)
         # label and value selection go through the coordinates
         assert float(ds.vf.sel(bat="torpedo", z=0.3, ball_speed=40.0)) == vf(1, 2, 1)
-        assert float(ds.frequency.sel(bat="R161", mode=3.0)) == 100 + 3
+        assert float(ds.frequency.sel(bat="R161", mode=3)) == 100 + 3
         assert ds.status.dtype == np.int32, ds.status.dtype
         np.testing.assert_array_equal(ds.status.attrs["flag_values"], [0, 1, 2])
         assert ds.status.attrs["flag_meanings"] == "ok max_steps no_contact"
@@ -48,7 +52,6 @@ def check_xarray(path):
             ("vf", "m/s", "ball exit speed"),
             ("status", "1", "integration status"),
             ("frequency", "Hz", "natural frequency ω/2π"),
-            ("bat", "", "bat profile"),
             ("z", "m", "impact location from the knob"),
             ("ball_speed", "m/s", "ball speed before impact"),
             ("mode", "1", "mode number"),
@@ -56,21 +59,25 @@ def check_xarray(path):
             attrs = ds[name].attrs
             assert attrs["units"] == units, (name, attrs)
             assert attrs["long_name"] == long_name, (name, attrs)
+        for name in ("bat", "bat_text"):  # strings have no units
+            assert "units" not in ds[name].attrs and ds[name].attrs["long_name"], ds[name].attrs
         assert ds.attrs["title"] == "dataset test", ds.attrs
         assert ds.attrs["study"] == 'name = "test"\n[axes]\nz = [0.1, 0.5]\n', ds.attrs
         assert ds.attrs["wall_time_s"] == 1.25, ds.attrs
-        assert ds.attrs["ranks"] == 4.0, ds.attrs
+        assert ds.attrs["ranks"] == 4 and ds.attrs["ranks"].dtype == np.int32, ds.attrs
+        np.testing.assert_array_equal(ds.attrs["flags"], [1, 2])
+        np.testing.assert_array_equal(ds.attrs["probes"], [0.06, 0.13])
 
 
 def check_h5netcdf(path):
     """h5netcdf, under xarray, must itself decode every string attribute to str."""
     with h5netcdf.File(path, "r") as f:
-        for name in ["vf", "status", "frequency", "bat", "z", "ball_speed", "mode"]:
+        for name in ["vf", "status", "frequency", "bat", "z", "ball_speed", "mode", "bat_text"]:
             for key, value in f[name].attrs.items():
                 if key != "flag_values":
                     assert type(value) is str, (name, key, value)
         assert all(type(value) is str for key, value in f.attrs.items() if key not in
-                   ("wall_time_s", "ranks")), dict(f.attrs)
+                   ("wall_time_s", "ranks", "flags", "probes")), dict(f.attrs)
         assert f["status"].attrs["units"] == "1"
 
 

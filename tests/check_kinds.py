@@ -50,7 +50,9 @@ def check_toy(ds):
     total = (ds.energy_ball + ds.energy_bat_translation + ds.energy_vibration) / initial
     assert float(abs(total - 1).max()) < 1e-6, total.values
     assert float(abs(ds.vf_van_zandt - ds.vf).max()) > 0.05
-    assert all(ds[name].attrs["units"] == "1" for name in ds.data_vars), "the toy model is dimensionless"
+    # status is a flag, no quantity: CF gives it no units
+    assert all(ds[name].attrs["units"] == "1" for name in ds.data_vars if name != "status"), "dimensionless"
+    assert "units" not in ds.status.attrs and "flag_values" in ds.status.attrs
     assert ds.omega_tau.attrs["long_name"] and ds.vf_van_zandt.attrs["long_name"]
 
 

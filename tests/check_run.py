@@ -19,9 +19,11 @@ with xr.open_dataset(path, engine="h5netcdf") as ds:
     assert ds.status.dtype == np.int32 and int(ds.status.max()) == 0
     assert ds.vf.attrs["units"] == "m/s" and ds.vf.attrs["long_name"]
     assert ds.frequency.dims == ("bat", "mode") and 150 < float(ds.frequency[0, 0]) < 200
+    assert list(ds.mode.values) == list(range(1, 19)), ds.mode.values  # the study's 18 modes, no more
     for key in ("study", "program_version", "git_commit", "mpi_ranks", "omp_threads", "wall_time_s"):
         assert key in ds.attrs, key
     got = float(ds.vf.sel(bat=bat).sel(z=z, ball_speed=speed, method="nearest"))
     assert got == vf, (got, vf)
-    assert set(ds.data_vars) == {"vf", "e_eff", "contact_time", "collision_time", "status", "frequency"}
+    provenance = {"bat_file", "bat_toml", "bat_profile_file", "bat_profile", "bat_slices"}  # check_provenance.py
+    assert set(ds.data_vars) == {"vf", "e_eff", "contact_time", "collision_time", "status", "frequency"} | provenance
 print("dataset ok")

@@ -37,7 +37,7 @@ Dataset study_dataset() {
       {"bat", "", "bat profile", {}, {"R161", "torpedo"}},
       {"z", "m", "impact location from the knob", {0.1, 0.2, 0.3, 0.4, 0.5}, {}},
       {"ball_speed", "m/s", "ball speed before impact", {30.0, 40.0, 50.0}, {}},
-      {"mode", "1", "mode number", {1.0, 2.0, 3.0, 4.0}, {}},
+      {"mode", "1", "mode number", {}, {}, {1, 2, 3, 4}, {{"flag_meanings", "all"}}, {{"flag_values", {-1}}}},
   };
   std::vector<double> vf;
   std::vector<std::int32_t> status;
@@ -55,10 +55,13 @@ Dataset study_dataset() {
       {"status", "1", "integration status", {"bat", "z", "ball_speed"}, status,
        {{"flag_meanings", "ok max_steps no_contact"}}, {{"flag_values", {0, 1, 2}}}},
       {"frequency", "Hz", "natural frequency ω/2π", {"bat", "mode"}, frequency, {}, {}},
+      {"bat_text", "", "text of the bat file", {"bat"}, std::vector<std::string>{"name = \"R161\"\n", "ω = 1\n"}, {}, {}},
   };
   dataset.text_attributes = {{"title", "dataset test"},
                              {"study", "name = \"test\"\n[axes]\nz = [0.1, 0.5]\n"}};
-  dataset.number_attributes = {{"wall_time_s", 1.25}, {"ranks", 4}};
+  dataset.number_attributes = {{"wall_time_s", 1.25}};
+  dataset.int_attributes = {{"ranks", {4}}, {"flags", {1, 2}}};
+  dataset.number_list_attributes = {{"probes", {0.06, 0.13}}};
   return dataset;
 }
 
@@ -122,13 +125,24 @@ TEST_CASE("dataset: bad shapes and names are refused before any file is touched"
     dataset.variables[0].name = "exit/speed";
     require_refused(dataset, "variable 'exit/speed'", "'/'");
   }
+  SECTION("strings with units") {
+    dataset.variables[0] = {"bat_note", "m", "text", {"bat"}, std::vector<std::string>{"a", "b"}, {}, {}};
+    require_refused(dataset, "variable 'bat_note'", "take no units");
+    dataset = study_dataset();
+    dataset.coordinates[0].units = "1";
+    require_refused(dataset, "coordinate 'bat'", "take no units");
+  }
+  SECTION("a coordinate with both values and integers") {
+    dataset.coordinates[1].integers = {1, 2, 3, 4, 5};
+    require_refused(dataset, "coordinate 'z'", "exactly one of");
+  }
   SECTION("a coordinate with both values and labels") {
     dataset.coordinates[0].values = {1.0, 2.0};
-    require_refused(dataset, "coordinate 'bat'", "either values or labels");
+    require_refused(dataset, "coordinate 'bat'", "exactly one of values, labels and integers");
   }
   SECTION("an empty coordinate") {
-    dataset.coordinates[3].values.clear();
-    require_refused(dataset, "coordinate 'mode'", "either values or labels");
+    dataset.coordinates[3].integers.clear();
+    require_refused(dataset, "coordinate 'mode'", "exactly one of values, labels and integers");
   }
 }
 

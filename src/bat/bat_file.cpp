@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <initializer_list>
 #include <optional>
@@ -50,6 +51,46 @@ std::string read_text(const fs::path& file, const std::string& context = "") {
   return text.str();
 }
 
+
+// The bytes that follow a UTF-8 lead byte, or -1 for a byte that starts no sequence (or NUL).
+int continuation_bytes(unsigned lead) {
+  if (lead == 0) return -1;
+  if (lead < 0x80) return 0;
+  if ((lead >> 5) == 0x6) return 1;
+  if ((lead >> 4) == 0xE) return 2;
+  if ((lead >> 3) == 0x1E) return 3;
+  return -1;
+}
+
+// Where `text` stops being UTF-8 text (a byte that starts no valid sequence, a sequence cut
+// short, overlong or a surrogate, or a NUL), or npos. Datasets store the profile as UTF-8
+// strings, which end at a NUL, and a reader cannot decode anything else.
+std::size_t first_non_text_byte(std::string_view text) {
+  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
+  for (std::size_t i = 0; i < text.size();) {
+    const unsigned lead = byte(i);
+    const int more = continuation_bytes(lead);
+    if (more < 0 || i + more >= text.size()) return i;
+    unsigned code = more == 0 ? lead : lead & (0x3F >> more);
+    for (int k = 1; k <= more; ++k) {
+      if ((byte(i + k) >> 6) != 0x2) return i;
+      code = (code << 6) | (byte(i + k) & 0x3F);
+    }
+    constexpr unsigned least[] = {0, 0x80, 0x800, 0x10000};
+    if (code < least[more] || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF)) return i;
+    i += 1 + more;
+  }
+  return std::string_view::npos;
+}
+
+void require_text(const fs::path& file, const std::string& text) {
+  const std::size_t bad = first_non_text_byte(text);
+  if (bad == std::string_view::npos) return;
+  char hex[8];
+  std::snprintf(hex, sizeof hex, "0x%02X", static_cast<unsigned>(static_cast<unsigned char>(text[bad])));
+  const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(bad), '\n'));
+  fail(at_line(file, line), std::string("byte ") + hex + " is not UTF-8 text; expected the profile saved as UTF-8");
+}
 
 // One table of the bat file; `prefix` makes keys read "material.density" in messages.
 struct Section {
@@ -103,8 +144,7 @@ struct Section {
   }
 };
 
-toml::table parse_toml(const fs::path& file) {
-  const std::string text = read_text(file);
+toml::table parse_toml(const fs::path& file, const std::string& text) {
   try {
     return toml::parse(text, file.string());
   } catch (const toml::parse_error& e) {
@@ -245,9 +285,8 @@ void check_slicing(const fs::path& file, const std::vector<Row>& rows, double le
   }
 }
 
-// Reads the profile into the bat's slices (outer and, for a hollow bat, inner diameters).
-void read_profile(const fs::path& file, const std::string& context, Bat& bat) {
-  const std::string text = read_text(file, context);  // rows keep views into it
+// Reads the profile text into the bat's slices (outer and, for a hollow bat, inner diameters).
+void read_profile(const fs::path& file, const std::string& text, Bat& bat) {
   std::optional<Columns> columns;
   std::vector<Row> rows;
   int number = 0;
@@ -277,7 +316,14 @@ void read_profile(const fs::path& file, const std::string& context, Bat& bat) {
 }  // namespace
 
 Bat load_bat(const std::filesystem::path& toml_path) {
-  const toml::table doc = parse_toml(toml_path);
+  BatSource ignored;
+  return load_bat(toml_path, ignored);
+}
+
+Bat load_bat(const std::filesystem::path& toml_path, BatSource& source) {
+  source.toml_file = toml_path;
+  source.toml_text = read_text(toml_path);
+  const toml::table doc = parse_toml(toml_path, source.toml_text);
   const Section top{toml_path, doc, ""};
   top.reject_unknown({"name", "length", "material", "profile"});
   Bat bat;
@@ -286,8 +332,11 @@ Bat load_bat(const std::filesystem::path& toml_path) {
   bat.material = read_material(top.section("material"));
   const std::string profile = top.text("profile");
   // The profile is named relative to the bat file, so a study directory can be moved whole.
-  read_profile(toml_path.parent_path() / profile,
-               " (the profile named by key 'profile' in " + toml_path.string() + ")", bat);
+  source.profile_file = toml_path.parent_path() / profile;
+  source.profile_text =
+      read_text(source.profile_file, " (the profile named by key 'profile' in " + toml_path.string() + ")");
+  require_text(source.profile_file, source.profile_text);  // TOML itself must be UTF-8 already
+  read_profile(source.profile_file, source.profile_text, bat);  // rows keep views into the text
   return bat;
 }
 

@@ -192,7 +192,7 @@ std::string describe_reference(const ConvergenceReference& ref) {
 
 Dataset convergence_dataset(const ConvergenceTable& table, const Study& study) {
   Dataset d;
-  Coordinate integrator{"integrator", "1", "integrator of the contact phase", {}, {}};
+  Coordinate integrator{"integrator", "", "integrator of the contact phase", {}, {}};  // strings: no units
   for (const IntegratorConvergence& i : table.integrators) integrator.labels.push_back(to_string(i.method));
   Coordinate setting{"setting", "1", "setting of the integrator, coarsest first", {}, {}};
   const std::size_t settings = most_settings(table);
@@ -201,7 +201,8 @@ Dataset convergence_dataset(const ConvergenceTable& table, const Study& study) {
   for (const Column& column : columns) d.variables.push_back(column_variable(table, column, settings));
 
   const ConvergenceReference& ref = table.reference;
-  d.text_attributes = {{"title", "Convergence: " + study.title},
+  d.text_attributes = {{"Conventions", "CF-1.8"},
+                       {"title", "Convergence: " + study.title},
                        {"study_file", study.file.string()},
                        {"kind", to_string(study.kind)},
                        {"study", study.text},

@@ -100,17 +100,25 @@ std::size_t value_count(const Variable& variable) {
   return std::visit([](const auto& values) { return values.size(); }, variable.values);
 }
 
+bool holds_strings(const Variable& variable) {
+  return std::holds_alternative<std::vector<std::string>>(variable.values);
+}
+
 void validate(const Dataset& dataset) {
   std::set<std::string> names;  // coordinates and variables share the file's root group
   for (const Coordinate& coordinate : dataset.coordinates) {
     const std::string object = "coordinate '" + coordinate.name + "'";
     check_name(object, coordinate.name, names);
-    if (coordinate.values.empty() == coordinate.labels.empty())
-      reject(object, "needs either values or labels, not both or neither");
+    const int kinds = !coordinate.values.empty() + !coordinate.labels.empty() + !coordinate.integers.empty();
+    if (kinds != 1) reject(object, "needs exactly one of values, labels and integers");
+    if (!coordinate.labels.empty() && !coordinate.units.empty())
+      reject(object, "holds strings, which take no units (units '" + coordinate.units + "')");
   }
   for (const Variable& variable : dataset.variables) {
     const std::string object = "variable '" + variable.name + "'";
     check_name(object, variable.name, names);
+    if (holds_strings(variable) && !variable.units.empty())
+      reject(object, "holds strings, which take no units (units '" + variable.units + "')");
     std::size_t expected = 1;
     for (const std::string& dim : variable.dims) {
       const std::size_t index = coordinate_index(dataset, dim);
@@ -177,13 +185,17 @@ void write_text(hid_t object, const std::string& name, const std::string& value)
   write_attribute(object, name, string_type(text.size()), {}, text.data());
 }
 
+// No units for what has none (strings): CF gives units to quantities only.
 void write_description(hid_t object, const std::string& units, const std::string& long_name) {
-  write_text(object, "units", units);
+  if (!units.empty()) write_text(object, "units", units);
   write_text(object, "long_name", long_name);
 }
 
-hid_t memory_type(const std::vector<double>&) { return H5T_NATIVE_DOUBLE; }
-hid_t memory_type(const std::vector<std::int32_t>&) { return H5T_NATIVE_INT32; }
+void write_attributes(hid_t object, const TextAttributes& texts, const IntegerAttributes& integers) {
+  for (const auto& [name, text] : texts) write_text(object, name, text);
+  for (const auto& [name, numbers] : integers)
+    write_attribute(object, name, H5T_NATIVE_INT32, {numbers.size()}, numbers.data());
+}
 
 // Contiguous and uncompressed: the simplest layout, and the fastest to write whole.
 Handle write_array(hid_t file, const std::string& name, hid_t type,
@@ -196,28 +208,42 @@ Handle write_array(hid_t file, const std::string& name, hid_t type,
   return dataset;
 }
 
-// Labels side by side, each padded with nulls to the width of the longest; `_Encoding` is what
+// Strings side by side, each padded with nulls to the width of the longest; `_Encoding` is what
 // makes xarray decode them to str instead of bytes.
-Handle write_labels(hid_t file, const Coordinate& coordinate) {
+Handle write_strings(hid_t file, const std::string& name, const std::vector<std::string>& strings,
+                     const std::vector<hsize_t>& shape) {
   std::size_t width = 0;
-  for (const std::string& label : coordinate.labels)
-    width = std::max(width, string_width(label.size()));
-  std::vector<char> text(width * coordinate.labels.size(), '\0');
-  for (std::size_t i = 0; i < coordinate.labels.size(); ++i)
-    coordinate.labels[i].copy(&text[i * width], width - 1);
-  Handle dataset = write_array(file, coordinate.name, string_type(width),
-                               {coordinate.labels.size()}, text.data());
+  for (const std::string& string : strings) width = std::max(width, string_width(string.size()));
+  std::vector<char> text(width * strings.size(), '\0');
+  for (std::size_t i = 0; i < strings.size(); ++i) strings[i].copy(&text[i * width], width - 1);
+  Handle dataset = write_array(file, name, string_type(width), shape, text.data());
   write_text(dataset, "_Encoding", "utf-8");
   return dataset;
 }
 
+Handle write_values(hid_t file, const std::string& name, const std::vector<double>& values,
+                    const std::vector<hsize_t>& shape) {
+  return write_array(file, name, H5T_NATIVE_DOUBLE, shape, values.data());
+}
+
+Handle write_values(hid_t file, const std::string& name, const std::vector<std::int32_t>& values,
+                    const std::vector<hsize_t>& shape) {
+  return write_array(file, name, H5T_NATIVE_INT32, shape, values.data());
+}
+
+Handle write_values(hid_t file, const std::string& name, const std::vector<std::string>& values,
+                    const std::vector<hsize_t>& shape) {
+  return write_strings(file, name, values, shape);
+}
+
 // A dimension scale named after itself is netCDF-4's coordinate variable.
 Handle write_coordinate(hid_t file, const Coordinate& coordinate) {
-  Handle dataset = coordinate.labels.empty()
-                       ? write_array(file, coordinate.name, H5T_NATIVE_DOUBLE,
-                                     {coordinate.size()}, coordinate.values.data())
-                       : write_labels(file, coordinate);
+  const std::vector<hsize_t> shape{coordinate.size()};
+  Handle dataset = !coordinate.labels.empty()     ? write_strings(file, coordinate.name, coordinate.labels, shape)
+                   : !coordinate.integers.empty() ? write_values(file, coordinate.name, coordinate.integers, shape)
+                                                  : write_values(file, coordinate.name, coordinate.values, shape);
   write_description(dataset, coordinate.units, coordinate.long_name);
+  write_attributes(dataset, coordinate.text_attributes, coordinate.int_attributes);
   check(H5DSset_scale(dataset, coordinate.name.c_str()),
         "making '" + coordinate.name + "' a dimension scale");
   return dataset;
@@ -232,18 +258,13 @@ void write_variable(hid_t file, const Dataset& dataset, const std::vector<Handle
     axes.push_back(coordinate_index(dataset, dim));
     shape.push_back(dataset.coordinates[axes.back()].size());
   }
-  const Handle data = std::visit(
-      [&](const auto& values) {
-        return write_array(file, variable.name, memory_type(values), shape, values.data());
-      },
-      variable.values);
+  const Handle data =
+      std::visit([&](const auto& values) { return write_values(file, variable.name, values, shape); }, variable.values);
   for (unsigned axis = 0; axis < axes.size(); ++axis)
     check(H5DSattach_scale(data, scales[axes[axis]], axis),
           "attaching '" + variable.dims[axis] + "' to '" + variable.name + "'");
   write_description(data, variable.units, variable.long_name);
-  for (const auto& [name, text] : variable.text_attributes) write_text(data, name, text);
-  for (const auto& [name, numbers] : variable.int_attributes)
-    write_attribute(data, name, H5T_NATIVE_INT32, {numbers.size()}, numbers.data());
+  write_attributes(data, variable.text_attributes, variable.int_attributes);
 }
 
 void write_contents(hid_t file, const Dataset& dataset) {
@@ -256,6 +277,12 @@ void write_contents(hid_t file, const Dataset& dataset) {
   for (const auto& [name, text] : dataset.text_attributes) write_text(file, name, text);
   for (const auto& [name, number] : dataset.number_attributes)
     write_attribute(file, name, H5T_NATIVE_DOUBLE, {}, &number);
+  // One value is a scalar attribute (ranks = 4, not [4]); more make a list.
+  for (const auto& [name, numbers] : dataset.int_attributes)
+    write_attribute(file, name, H5T_NATIVE_INT32, numbers.size() == 1 ? std::vector<hsize_t>{} : std::vector<hsize_t>{numbers.size()},
+                    numbers.data());
+  for (const auto& [name, numbers] : dataset.number_list_attributes)
+    write_attribute(file, name, H5T_NATIVE_DOUBLE, {numbers.size()}, numbers.data());
 }
 
 void write_file(const fs::path& path, const Dataset& dataset) {

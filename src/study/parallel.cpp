@@ -12,8 +12,10 @@
 #include <tuple>
 
 #include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/study/affinity.hpp"
 #include "sweetspot/study/journal.hpp"
 #include "sweetspot/study/study_point.hpp"
+#include "sweetspot/study/study_provenance.hpp"
 #include "sweetspot/study/study_results.hpp"
 
 namespace sweetspot {
@@ -42,6 +44,20 @@ void log_rank_summary(int rank, int solves, const RankTally& tally, Clock::time_
                  rank, tally.past_radius);
 }
 
+// Where the rank may run, and a warning when its threads must share cores: under Slurm >= 22.05
+// an srun without --cpus-per-task binds a rank to one core whatever sbatch asked for.
+void log_rank_cores(int rank) {
+  const std::vector<int> cores = allowed_cores();
+  const int threads = omp_get_max_threads();
+  spdlog::info("rank {}: {} OpenMP thread(s) on core(s) {} ({} allowed)", rank, threads,
+               cores.empty() ? "unknown" : core_list(cores), cores.size());
+  if (!cores.empty() && static_cast<int>(cores.size()) < threads)
+    spdlog::warn("rank {}: {} OpenMP threads but only {} core(s) allowed ({}): the threads take turns; bind each rank "
+                 "to as many cores as it has threads (srun --cpus-per-task, mpirun --map-by slot:PE=N; "
+                 "cluster/README.md)",
+                 rank, threads, cores.size(), core_list(cores));
+}
+
 // The modal bases this rank has computed, one per (bat, slices, theory).
 class ModalCache {
  public:
@@ -52,7 +68,7 @@ class ModalCache {
     const auto key = std::make_tuple(p.bat, p.slices, p.theory, rigid_only);
     auto it = cache_.find(key);
     if (it != cache_.end()) return it->second;
-    Bat bat = load_bat(study_.bats[p.bat]);
+    Bat bat = study_.loaded_bats[p.bat];
     if (p.slices > 0) bat = resample(bat, p.slices);
     if (!rigid_only) ++solves_;
     return cache_.emplace(key, compute_modes(bat, p.theory, rigid_only)).first->second;
@@ -116,7 +132,7 @@ class Coordinator {
  public:
   Coordinator(const Study& study, const OutputLayout& layout, const RunOptions& options, int ranks)
       : study_(study), layout_(layout), ranks_(ranks), cache_(study),
-        journal_(journal_path(options), study_hash(study.text), layout.width, options.resume),
+        journal_(journal_path(options), study_hash(input_texts(study)), layout.width, options.resume),
         rows_(study.points() * layout.width, std::nan("")), done_(study.points(), false),
         progress_(study.points(), journal_.recovered().size(), options.verbosity) {
     for (const JournalEntry& e : journal_.recovered()) store_row(e.point, e.values.data());
@@ -145,6 +161,7 @@ class Coordinator {
   void log_summary(Clock::time_point start) const { log_rank_summary(0, cache_.solves(), tally_, start); }
 
   const std::vector<double>& rows() const { return rows_; }
+  std::size_t resumed_points() const { return journal_.recovered().size(); }
   void remove_journal() { journal_.remove(); }
 
  private:
@@ -236,8 +253,7 @@ void work(const Study& study, const OutputLayout& layout, int rank) {
 std::vector<std::vector<double>> bat_frequencies(const Study& study) {
   std::vector<std::vector<double>> f;
   if (!keeps_vibrations(study)) return f;
-  for (const auto& file : study.bats) {
-    Bat bat = load_bat(file);
+  for (Bat bat : study.loaded_bats) {
     if (study.slices > 0) bat = resample(bat, study.slices);
     f.push_back(compute_modes(bat, study.theory).vibrational_frequencies_hz());
   }
@@ -251,6 +267,7 @@ void run_study(const Study& study, const RunOptions& options) {
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   const OutputLayout layout(study);
+  log_rank_cores(rank);
   if (rank != 0) {
     work(study, layout, rank);
     return;
@@ -260,7 +277,8 @@ void run_study(const Study& study, const RunOptions& options) {
                study.points(), ranks, omp_get_max_threads());
   Coordinator coordinator(study, layout, options, ranks);
   coordinator.run();
-  const RunInfo info{ranks, omp_get_max_threads(), seconds_since(start)};
+  const RunInfo info{ranks, omp_get_max_threads(), seconds_since(start), coordinator.resumed_points(),
+                     Coordinator::journal_path(options)};
   write_dataset(options.output, make_dataset(study, layout, coordinator.rows(), bat_frequencies(study), info));
   coordinator.remove_journal();
   coordinator.log_summary(start);

@@ -498,7 +498,7 @@ std::vector<Bat> load_bats(Study& study, const Setting& bat) {
   for (const std::string& label : bat.labels) {
     study.bats.push_back((study.file.parent_path() / label).lexically_normal());
     try {
-      bats.push_back(load_bat(study.bats.back()));
+      bats.push_back(load_bat(study.bats.back(), study.bat_sources.emplace_back()));
     } catch (const InputError& e) {
       reject(bat.where, quote(label), e.what());
     }
@@ -510,6 +510,7 @@ std::vector<Bat> load_bats(Study& study, const Setting& bat) {
                  "; give each bat its own name");
     study.bat_names.push_back(bats.back().name);
   }
+  study.loaded_bats = bats;
   return bats;
 }
 
@@ -810,6 +811,13 @@ bool is_probe_history(std::string_view name) {
 
 bool is_history(std::string_view name) {
   return is_probe_history(name) || name == "force" || name == "compression" || name == "ball_position";
+}
+
+std::vector<std::string> scene_keys(StudyKind kind) {
+  std::vector<std::string> names;
+  for (const KeySpec& k : keys)
+    if (k.kinds & bit(kind)) names.emplace_back(k.name);
+  return names;
 }
 
 const std::vector<std::string>& output_names(StudyKind kind) {

@@ -6,8 +6,6 @@
 #include <map>
 #include <sstream>
 
-#include "sweetspot/version.hpp"
-
 namespace sweetspot {
 
 namespace {
@@ -35,7 +33,7 @@ const std::map<std::string, Description>& descriptions() {
       {"modes_error", {"1", "estimated relative vf error of the dropped modes (modes = auto)"}},
       {"mode_tolerance", {"1", "relative vf error allowed the dropped modes (modes = auto)"}},
       {"accuracy", {"1", "relative vf error the integration may add (sets the step)"}},
-      {"status", {"1", "outcome of the impact"}},
+      {"status", {"", "outcome of the impact"}},  // a flag, not a quantity: no units
       {"energy_initial", {"J", "initial kinetic energy of ball and bat"}},
       {"energy_ball", {"J", "final kinetic energy of the ball"}},
       {"energy_bat_translation", {"J", "final kinetic energy of the bat's centre of mass"}},
@@ -60,19 +58,20 @@ const std::map<std::string, Description>& descriptions() {
       {"e0", {"1", "coefficient of restitution of the ball on a rigid wall"}},
       {"ball_mass", {"kg", "ball mass"}},
       {"ball_radius", {"m", "ball radius"}},
-      {"k1", {"N m^-a", "ball stiffness k1"}},
+      // N/m^a has no UDUNITS spelling (the exponent is the ball's a), which CF units need.
+      {"k1", {"", "ball stiffness k1, in N m^-a (a the ball's compression exponent)"}},
       {"a", {"1", "ball compression exponent"}},
       {"cm_speed", {"m/s", "bat centre-of-mass speed toward the ball"}},
       {"center", {"m", "rotation centre of the swing from the knob"}},
       {"omega", {"rad/s", "bat angular velocity"}},
-      {"pivot", {"1", "bat held at the rotation centre (1) or free (0)"}},
-      {"modes", {"1", "vibrational modes kept (-1: all, -2: auto)"}},
+      {"pivot", {"", "bat held at the rotation centre or free"}},  // a flag
+      {"modes", {"1", "vibrational modes kept, or all or auto (flag_values)"}},
       {"slices", {"1", "slices of the bat"}},
       {"dt", {"s", "integration step"}},
       {"window", {"s", "free flight followed after a separation"}},
       {"omega_tau", {"1", "toy model: bat spring frequency omega times collision time tau (N2000 App. A)"}},
-      {"bat", {"1", "bat"}},
-      {"theory", {"1", "beam theory"}},
+      {"bat", {"", "bat"}},  // strings: no units
+      {"theory", {"", "beam theory"}},
       {"mode", {"1", "vibrational mode number"}},
       {"frequency", {"Hz", "frequency of each vibrational mode of each bat"}},
   };
@@ -112,15 +111,32 @@ double scalar_value(const ImpactResult& r, const std::string& name) {
   return energy_value(r.energy, name);
 }
 
+std::vector<std::int32_t> integers(const std::vector<double>& values) {
+  return {values.begin(), values.end()};
+}
+
+// Counts are integers on disk; the words that stand for a count ("all", "auto") and the two
+// states of pivot are CF flags, values named by flag_meanings.
 Coordinate axis_coordinate(const Study& study, const Axis& axis) {
   const Description d = describe(axis.name);
   Coordinate c{axis.name, d.units, d.long_name, {}, {}};
-  if (axis.name == "bat")
+  if (axis.name == "bat") {
     for (double index : axis.values) c.labels.push_back(study.bat_names[static_cast<std::size_t>(index)]);
-  else if (axis.name == "theory")
+  } else if (axis.name == "theory") {
     c.labels = axis.labels;
-  else
+  } else if (axis.name == "slices") {
+    c.integers = integers(axis.values);
+  } else if (axis.name == "modes") {
+    c.integers = integers(axis.values);
+    c.int_attributes.push_back({"flag_values", {auto_modes, all_modes}});
+    c.text_attributes.push_back({"flag_meanings", "auto all"});
+  } else if (axis.name == "pivot") {
+    c.integers = integers(axis.values);
+    c.int_attributes.push_back({"flag_values", {0, 1}});
+    c.text_attributes.push_back({"flag_meanings", "free pivoted"});
+  } else {
     c.values = axis.values;
+  }
   return c;
 }
 
@@ -128,7 +144,7 @@ Coordinate axis_coordinate(const Study& study, const Axis& axis) {
 Variable output_variable(const std::string& name, std::vector<std::string> dims, std::vector<double> values,
                          const char* units = nullptr) {
   Description d = describe(name);
-  if (units) d.units = units;
+  if (units && *d.units) d.units = units;  // a flag (status) has no units in any kind
   Variable v{name, d.units, d.long_name, std::move(dims), {}, {}, {}};
   if (name == "status" || name == "contacts" || name == "modes_kept") {
     std::vector<std::int32_t> ints(values.size());
@@ -159,7 +175,7 @@ std::vector<std::string> extra_dims(const Study& study, const std::string& name)
 }
 
 std::size_t dim_size(const Study& study, const std::string& dim) {
-  if (dim == "mode") return static_cast<std::size_t>(dataset_mode_count(study));
+  if (dim == "mode") return static_cast<std::size_t>(study.base.vibrational_modes);  // a fixed count (load_study)
   if (dim == "omega_tau") return force_response_grid().size();
   if (dim == "probe") return study.base.history.probes.size();
   return study.base.history.samples();  // time
@@ -192,10 +208,17 @@ std::vector<double> array_value(const ImpactResult& r, const std::string& name) 
 
 }  // namespace
 
-int dataset_mode_count(const Study& study) {
-  const bool per_mode =
-      std::ranges::count(study.outputs, "mode_energy") + std::ranges::count(study.outputs, "mode_response") > 0;
-  return per_mode ? study.base.vibrational_modes : 10;
+int dataset_mode_count(const Study& study, const std::vector<std::vector<double>>& bat_frequencies_hz) {
+  const auto axis = std::ranges::find(study.axes, "modes", &Axis::name);
+  const std::vector<double> counts = axis == study.axes.end() ? std::vector<double>{static_cast<double>(study.base.vibrational_modes)}
+                                                              : axis->values;
+  // "all" or "auto" somewhere: as many as a bat has (auto may keep any of them).
+  std::size_t most = 0;
+  if (std::ranges::any_of(counts, [](double n) { return n < 0; })) {
+    for (const std::vector<double>& f : bat_frequencies_hz) most = std::max(most, f.size());
+    return static_cast<int>(most);
+  }
+  return static_cast<int>(std::ranges::max(counts));
 }
 
 OutputLayout::OutputLayout(const Study& study) : names(study.outputs) {
@@ -224,12 +247,12 @@ void OutputLayout::extract(const ImpactResult& result, double* row) const {
 namespace {
 
 // The bat's own dimensions: `bat` when no axis sweeps it, and `mode` (frequencies, mode_energy).
-void add_bat_coordinates(const Study& study, Dataset& d) {
+void add_bat_coordinates(const Study& study, const std::vector<std::vector<double>>& bat_frequencies_hz, Dataset& d) {
   if (std::ranges::none_of(study.axes, [](const Axis& axis) { return axis.name == "bat"; }))
-    d.coordinates.push_back({"bat", "1", "bat", {}, {study.bat_names.front()}});
+    d.coordinates.push_back({"bat", "", "bat", {}, {study.bat_names.front()}});
   if (!keeps_vibrations(study)) return;
   Coordinate mode{"mode", "1", describe("mode").long_name, {}, {}};
-  for (int n = 1; n <= dataset_mode_count(study); ++n) mode.values.push_back(n);
+  for (int n = 1; n <= dataset_mode_count(study, bat_frequencies_hz); ++n) mode.integers.push_back(n);
   d.coordinates.push_back(mode);
 }
 
@@ -278,7 +301,7 @@ void add_outputs(const Study& study, const OutputLayout& layout, const std::vect
 }
 
 Variable frequency_variable(const Study& study, const std::vector<std::vector<double>>& bat_frequencies_hz) {
-  const int modes = dataset_mode_count(study);
+  const int modes = dataset_mode_count(study, bat_frequencies_hz);
   std::vector<double> frequencies;
   for (const auto& f : bat_frequencies_hz)
     for (int n = 0; n < modes; ++n) frequencies.push_back(n < static_cast<int>(f.size()) ? f[n] : missing);
@@ -303,22 +326,12 @@ Dataset make_dataset(const Study& study, const OutputLayout& layout, const std::
   }
   // Wall and toy studies have no bat: no bat or mode dimension and no frequencies; a study of
   // rigid bats alone computed no modes, so it stores no frequencies either.
-  if (has_bat(study.kind)) add_bat_coordinates(study, d);
+  if (has_bat(study.kind)) add_bat_coordinates(study, bat_frequencies_hz, d);
   add_history_coordinates(study, d);
   add_outputs(study, layout, rows, dims, d);
   if (!bat_frequencies_hz.empty()) d.variables.push_back(frequency_variable(study, bat_frequencies_hz));
 
-  d.text_attributes = {{"title", study.title},
-                       {"study_file", study.file.string()},
-                       {"kind", to_string(study.kind)},
-                       {"study", study.text},
-                       {"program", "sweetspot"},
-                       {"program_version", version},
-                       {"git_commit", git_commit},
-                       {"references", "A. M. Nathan, Am. J. Phys. 68, 979 (2000)"}};
-  d.number_attributes = {{"mpi_ranks", static_cast<double>(info.ranks)},
-                         {"omp_threads", static_cast<double>(info.threads)},
-                         {"wall_time_s", info.wall_time}};
+  add_provenance(study, info, d);
   return d;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Reading a bat from its TOML file and the profile CSV it names (README: "Bat files").
 #include <filesystem>
+#include <string>
 
 #include "sweetspot/bat/bat.hpp"
 
@@ -9,5 +10,15 @@ namespace sweetspot {
 // Loads and validates a bat file; throws InputError naming the file, key or CSV line, the value
 // and what was expected.
 Bat load_bat(const std::filesystem::path& toml_path);
+
+// The files a bat was read from and their texts byte for byte, as load_bat parsed them: what a
+// dataset stores so that its bats can be told apart and rebuilt.
+struct BatSource {
+  std::filesystem::path toml_file, profile_file;
+  std::string toml_text, profile_text;
+};
+
+// As load_bat, and fills `source` with the texts the bat was built from.
+Bat load_bat(const std::filesystem::path& toml_path, BatSource& source);
 
 }  // namespace sweetspot

@@ -52,6 +52,7 @@
 #include <string_view>
 #include <vector>
 
+#include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/bat/modes.hpp"
 #include "sweetspot/impact/scene.hpp"
 
@@ -87,6 +88,10 @@ struct Study {
   // empty for the kinds without a bat.
   std::vector<std::filesystem::path> bats;
   std::vector<std::string> bat_names;
+  // Each bat as read when the study was loaded, and the texts it was read from: every rank
+  // computes with these, and the dataset stores the texts, so the two cannot differ.
+  std::vector<Bat> loaded_bats;
+  std::vector<BatSource> bat_sources;
   // The [scene] values over the defaults; axes set their own keys per grid point.
   BeamTheory theory = BeamTheory::timoshenko;
   int slices = 0;  // 0: the profile's own slice count
@@ -133,6 +138,9 @@ std::vector<std::size_t> task_order(const Study& study);       // task_point for
 // ball_position): all add a `time` dimension.
 bool is_probe_history(std::string_view name);
 bool is_history(std::string_view name);
+
+// The [scene] keys of a kind, in the order of the table of keys (the study file's names).
+std::vector<std::string> scene_keys(StudyKind kind);
 
 // Output variables a study of a kind may ask for, and the list used when [output] gives none.
 const std::vector<std::string>& output_names(StudyKind kind = StudyKind::impact);

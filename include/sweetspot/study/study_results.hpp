@@ -7,9 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "sweetspot/study/dataset.hpp"
 #include "sweetspot/impact/impact.hpp"
+#include "sweetspot/study/dataset.hpp"
 #include "sweetspot/study/study.hpp"
+#include "sweetspot/study/study_provenance.hpp"
 
 namespace sweetspot {
 
@@ -24,21 +25,16 @@ struct OutputLayout {
   void extract(const ImpactResult& result, double* row) const;
 };
 
-struct RunInfo {
-  int ranks = 1;
-  int threads = 1;
-  double wall_time = 0;
-};
-
 // Rows of every point (row-major over the axes) and the vibrational frequencies (Hz) of each bat
-// (none for the kinds without a bat).
+// (none for the kinds without a bat), with the provenance of study_provenance.hpp.
 Dataset make_dataset(const Study& study, const OutputLayout& layout, const std::vector<double>& rows,
                      const std::vector<std::vector<double>>& bat_frequencies_hz, const RunInfo& info);
 
 // Whether any point of the study keeps a vibrational mode (else no modes are computed at all).
 bool keeps_vibrations(const Study& study);
 
-// How many modes the dataset's `mode` dimension has.
-int dataset_mode_count(const Study& study);
+// How many modes the dataset's `mode` dimension has: the largest count the study keeps, or with
+// "all" or "auto" anywhere, as many as the bat with the most has.
+int dataset_mode_count(const Study& study, const std::vector<std::vector<double>>& bat_frequencies_hz);
 
 }  // namespace sweetspot

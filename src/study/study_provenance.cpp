@@ -1,0 +1,139 @@
+#include "sweetspot/study/study_provenance.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sweetspot/version.hpp"
+
+namespace sweetspot {
+
+namespace {
+
+bool is_axis(const Study& study, const std::string& key) {
+  return std::ranges::any_of(study.axes, [&](const Axis& axis) { return axis.name == key; });
+}
+
+// Global attributes named scene_KEY, typed as the key is: numbers as doubles, counts and
+// booleans as integers, names as text.
+struct SceneAttributes {
+  Dataset& d;
+  void number(const std::string& key, double x) { d.number_attributes.push_back({"scene_" + key, x}); }
+  void integer(const std::string& key, int x) { d.int_attributes.push_back({"scene_" + key, {x}}); }
+  void text(const std::string& key, const std::string& x) { d.text_attributes.push_back({"scene_" + key, x}); }
+};
+
+// A count of modes, or the word that stands for the count ("all", "auto").
+void add_modes(SceneAttributes& out, int modes) {
+  if (modes == all_modes) return out.text("modes", "all");
+  if (modes == auto_modes) return out.text("modes", "auto");
+  out.integer("modes", modes);
+}
+
+// One key of [scene] with the value the run used for it (the study's, else the default). Keys
+// that only the other kinds of study read are never asked of an impact study, and so on.
+void add_scene_key(const Study& study, const std::string& key, SceneAttributes& out) {
+  const ImpactScene& s = study.base;
+  if (key == "bat" || key == "slices") return;  // the bat_* variables: files and slices per bat
+  if (key == "theory") return out.text(key, to_string(study.theory));
+  if (key == "z") return out.number(key, s.z);
+  if (key == "ball_speed") return out.number(key, s.ball_speed);
+  if (key == "e0") return out.number(key, s.ball.e0);
+  if (key == "ball_mass") return out.number(key, s.ball.mass);
+  if (key == "ball_radius") return out.number(key, s.ball.radius);
+  if (key == "k1") return out.number(key, s.ball.k1);
+  if (key == "a") return out.number(key, s.ball.a);
+  // The swing is given one way: the other key has no value to show.
+  if (key == "center") return s.swing.about_center ? out.number(key, s.swing.center) : void();
+  if (key == "cm_speed") return s.swing.about_center ? void() : out.number(key, s.swing.cm_speed);
+  if (key == "omega") return out.number(key, s.swing.omega);
+  if (key == "pivot") return out.integer(key, s.pivoted ? 1 : 0);
+  if (key == "modes") return add_modes(out, s.vibrational_modes);
+  if (key == "mode_tolerance") return out.number(key, s.mode_tolerance);
+  if (key == "accuracy") return out.number(key, s.accuracy);  // 0: the step as given (dt)
+  if (key == "integrator") return out.text(key, to_string(s.integrator.method));
+  if (key == "tolerance") return out.number(key, s.integrator.tolerance);
+  if (key == "dt") return out.number(key, s.integrator.dt);
+  if (key == "window") return out.number(key, s.integrator.window);
+  if (key == "probes") {
+    if (!s.history.probes.empty()) out.d.number_list_attributes.push_back({"scene_probes", s.history.probes});
+    return;
+  }
+  if (key == "history_window") return out.number(key, s.history.window);
+  if (key == "history_step") return out.number(key, s.history.step);
+  if (key == "omega_tau") return out.number(key, study.omega_tau);
+  // A key added to the study without a line here would silently go missing from every dataset.
+  throw std::logic_error("no dataset attribute for the scene key '" + key + "'");
+}
+
+// An axis's values are its coordinate: only the keys that are not axes are attributes.
+void add_scene(const Study& study, Dataset& d) {
+  SceneAttributes out{d};
+  for (const std::string& key : scene_keys(study.kind))
+    if (!is_axis(study, key)) add_scene_key(study, key, out);
+}
+
+Variable bat_texts(const std::string& name, const std::string& long_name, std::vector<std::string> texts) {
+  return {name, "", long_name, {"bat"}, std::move(texts), {}, {}};
+}
+
+void add_bats(const Study& study, Dataset& d) {
+  std::vector<std::string> files, tomls, profile_files, profiles;
+  std::vector<std::int32_t> slices;
+  for (std::size_t b = 0; b < study.bat_sources.size(); ++b) {
+    const BatSource& source = study.bat_sources[b];
+    files.push_back(source.toml_file.string());
+    tomls.push_back(source.toml_text);
+    profile_files.push_back(source.profile_file.string());
+    profiles.push_back(source.profile_text);
+    slices.push_back(study.slices > 0 ? study.slices : study.loaded_bats[b].slices());
+  }
+  d.variables.push_back(bat_texts("bat_file", "bat file, as the run read it", std::move(files)));
+  d.variables.push_back(bat_texts("bat_toml", "text of the bat file", std::move(tomls)));
+  d.variables.push_back(bat_texts("bat_profile_file", "profile of the bat, as the run read it",
+                                  std::move(profile_files)));
+  d.variables.push_back(bat_texts("bat_profile", "text of the bat's profile", std::move(profiles)));
+  // With a slices axis, the points take the axis's counts; the frequencies still take these.
+  d.variables.push_back({"bat_slices", "1", "slices the bat is cut into (the profile's own unless the study sets slices)",
+                         {"bat"}, std::move(slices), {}, {}});
+}
+
+void add_run(const RunInfo& info, Dataset& d) {
+  d.int_attributes.push_back({"mpi_ranks", {info.ranks}});
+  d.int_attributes.push_back({"omp_threads", {info.threads}});
+  d.number_attributes.push_back({"wall_time_s", info.wall_time});
+  d.int_attributes.push_back({"resumed", {info.resumed_points > 0 ? 1 : 0}});
+  d.int_attributes.push_back({"resumed_points", {static_cast<std::int32_t>(info.resumed_points)}});
+  if (info.resumed_points > 0) d.text_attributes.push_back({"resumed_from", info.journal.string()});
+}
+
+}  // namespace
+
+std::string input_texts(const Study& study) {
+  std::string texts = study.text;
+  // Each text's length before it: two different splits of the same bytes must not look alike.
+  for (const BatSource& source : study.bat_sources)
+    for (const std::string* text : {&source.toml_text, &source.profile_text})
+      texts.append("\n").append(std::to_string(text->size())).append("\n").append(*text);
+  return texts;
+}
+
+void add_provenance(const Study& study, const RunInfo& info, Dataset& d) {
+  d.text_attributes = {{"Conventions", "CF-1.8"},
+                       {"title", study.title},
+                       {"source", std::string("sweetspot ") + version + " (" + git_commit + ")"},
+                       {"references", "A. M. Nathan, Am. J. Phys. 68, 979 (2000)"},
+                       {"study_file", study.file.string()},
+                       {"kind", to_string(study.kind)},
+                       {"study", study.text},
+                       {"program", "sweetspot"},
+                       {"program_version", version},
+                       {"git_commit", git_commit}};
+  add_scene(study, d);
+  if (has_bat(study.kind)) add_bats(study, d);
+  add_run(info, d);
+}
+
+}  // namespace sweetspot
