@@ -16,6 +16,7 @@
 
 #include <toml++/toml.h>
 
+#include "sweetspot/bat/profile.hpp"
 #include "sweetspot/input_error.hpp"
 #include "toml_values.hpp"
 
@@ -186,13 +187,17 @@ std::vector<std::string_view> split_fields(std::string_view line) {
 struct Columns {
   std::vector<std::string> names;
   int z = -1, outer = -1, inner = -1;
+  bool knots = false;  // z_m: diameters at knots; z_center_m: one row per slice
 };
 
 Columns read_header(const fs::path& file, int line, std::string_view text) {
   Columns c;
-  int slice = -1;  // an index column: allowed, never read
+  int slice = -1, knot = -1;  // index columns: allowed, never read
+  int z_center = -1, z_knot = -1;
   const std::pair<std::string_view, int*> known[] = {{"slice", &slice},
-                                                     {"z_center_m", &c.z},
+                                                     {"knot", &knot},
+                                                     {"z_center_m", &z_center},
+                                                     {"z_m", &z_knot},
                                                      {"outer_diameter_m", &c.outer},
                                                      {"inner_diameter_m", &c.inner}};
   const std::string where = at_line(file, line);
@@ -200,14 +205,17 @@ Columns read_header(const fs::path& file, int line, std::string_view text) {
     const auto it = std::ranges::find(known, name, [](const auto& k) { return k.first; });
     const std::string column = "column '" + std::string(name) + "'";
     if (it == std::end(known)) {
-      fail(where, "unknown " + column + "; expected slice, z_center_m, outer_diameter_m, " +
-                      "inner_diameter_m");
+      fail(where, "unknown " + column + "; expected slice, z_center_m (one row per slice) or z_m (knots), " +
+                      "outer_diameter_m, inner_diameter_m");
     }
     if (*it->second >= 0) fail(where, column + " appears twice");
     *it->second = static_cast<int>(c.names.size());
     c.names.emplace_back(name);
   }
-  if (c.z < 0) fail(where, "header has no column 'z_center_m'");
+  if (z_center >= 0 && z_knot >= 0) fail(where, "columns 'z_center_m' and 'z_m' both given; expected one of them");
+  if (z_center < 0 && z_knot < 0) fail(where, "header has no column 'z_center_m' (one row per slice) or 'z_m' (knots)");
+  c.z = std::max(z_center, z_knot);
+  c.knots = z_knot >= 0;
   if (c.outer < 0) fail(where, "header has no column 'outer_diameter_m'");
   return c;
 }
@@ -251,31 +259,38 @@ Row read_row(const fs::path& file, int line, std::string_view text, const Column
   return {line, what(c.z), x[c.z], x[c.outer], inner};
 }
 
-// Slice i of N must be centred at (i + 1/2) L/N (physics.md §1); the tolerance absorbs the
-// rounding of z in the shipped profiles. Checking sorted, then evenly spaced, then spanning the
-// length gives each kind of mistake its own message.
+// Rows must run strictly from the knob to the barrel end.
+void check_sorted(const fs::path& file, const std::vector<Row>& rows) {
+  for (std::size_t i = 1; i < rows.size(); ++i)
+    if (rows[i].z <= rows[i - 1].z)
+      fail(at_line(file, rows[i].line), rows[i].z_text + " is not greater than the previous row's " +
+                                            format_number(rows[i - 1].z) + "; rows must be sorted by z, knob first");
+}
+
+// Slice centres within 1 % of a slice of where they belong: enough to place every row on its
+// slice, and it admits positions rounded to 0.1 mm (a 33-in bat's centres written to 4 decimals
+// are up to 0.5 % of a slice off).
+constexpr double slice_centre_tolerance = 1e-2;
+
+// Slice i of N must be centred at (i + 1/2) L/N (physics.md §1). Checking sorted, then evenly
+// spaced, then spanning the length gives each kind of mistake its own message.
 void check_slicing(const fs::path& file, const std::vector<Row>& rows, double length) {
   const int n = static_cast<int>(rows.size());
   const auto fail_at = [&](int i, const std::string& what) {
     fail(at_line(file, rows[i].line), rows[i].z_text + " " + what);
   };
-  for (int i = 1; i < n; ++i) {
-    if (rows[i].z <= rows[i - 1].z) {
-      fail_at(i, "is not greater than the previous row's " + format_number(rows[i - 1].z) +
-                     "; rows must be sorted by z, knob first");
-    }
-  }
+  check_sorted(file, rows);
   const double step = n > 1 ? (rows[n - 1].z - rows[0].z) / (n - 1) : 0.0;
   for (int i = 1; i < n - 1; ++i) {
     const double expected = rows[0].z + i * step;
-    if (std::abs(rows[i].z - expected) > 1e-3 * step) {
+    if (std::abs(rows[i].z - expected) > slice_centre_tolerance * step) {
       fail_at(i, "breaks the even spacing of the rows (" + format_number(step) +
                      " m from first to last); expected " + format_number(expected));
     }
   }
   const double dz = length / n;
   for (int i = 0; i < n; ++i) {
-    if (std::abs(rows[i].z - (i + 0.5) * dz) > 1e-3 * dz) {
+    if (std::abs(rows[i].z - (i + 0.5) * dz) > slice_centre_tolerance * dz) {
       fail(file.string(), "slice centres run from " + format_number(rows[0].z) + " to " +
                               format_number(rows[n - 1].z) + " m, but length " +
                               format_number(length) + " m in " + std::to_string(n) +
@@ -285,8 +300,50 @@ void check_slicing(const fs::path& file, const std::vector<Row>& rows, double le
   }
 }
 
-// Reads the profile text into the bat's slices (outer and, for a hollow bat, inner diameters).
-void read_profile(const fs::path& file, const std::string& text, Bat& bat) {
+// What the bat file says of how to read its profile: both keys are optional.
+struct ProfileOptions {
+  std::optional<Interpolation> interpolation;
+  std::optional<int> slices;
+  std::string interpolation_where;  // "FILE: key 'interpolation'", for messages
+};
+
+// Knots: sorted, at least two, and on the bat (a rounding's worth beyond its ends is allowed).
+void check_knots(const fs::path& file, const std::vector<Row>& rows, double length) {
+  check_sorted(file, rows);
+  if (rows.size() < 2) fail(file.string(), "a knot profile (z_m) needs at least 2 knots; it has 1");
+  const double tolerance = 1e-9 * length;
+  for (const Row& row : rows)
+    if (row.z < -tolerance || row.z > length + tolerance)
+      fail(at_line(file, row.line), row.z_text + " lies outside the bat; expected 0 to " + format_number(length) +
+                                        " m (its length)");
+}
+
+ProfileOptions read_profile_options(const Section& top) {
+  ProfileOptions o;
+  o.interpolation_where = top.where("interpolation");
+  if (top.table.contains("interpolation")) {
+    const std::string text = top.text("interpolation");
+    try {
+      o.interpolation = parse_interpolation(text);
+    } catch (const InputError&) {
+      fail(o.interpolation_where, "value '" + text + "': expected 'stepped', 'linear' or 'pchip'");
+    }
+  }
+  if (const toml::node* node = top.table.get("slices")) {
+    const auto n = node->value<int64_t>();
+    if (!node->is_integer() || !n || *n < 4 || *n > 4096)
+      fail(top.where("slices"), "value " + describe(*node) + " must be an integer slice count from 4 to 4096");
+    o.slices = static_cast<int>(*n);
+  }
+  return o;
+}
+
+// A knot profile's default slices: about 1 cm thick, as N2000's.
+int default_slices(double length) { return std::max(4, static_cast<int>(std::lround(length / 0.01))); }
+
+// Reads the profile text into the bat's slices: rows that are slices (z_center_m) as they are,
+// knots (z_m) cut into slices by integrating A and I (profile.hpp).
+void read_profile(const fs::path& file, const std::string& text, const ProfileOptions& options, Bat& bat) {
   std::optional<Columns> columns;
   std::vector<Row> rows;
   int number = 0;
@@ -303,14 +360,26 @@ void read_profile(const fs::path& file, const std::string& text, Bat& bat) {
       rows.push_back(read_row(file, number, content, *columns));
   }
   if (!columns) fail(file.string(), "no header line; expected e.g. 'z_center_m,outer_diameter_m'");
-  if (rows.empty()) fail(file.string(), "the profile has no rows; expected one row per slice");
-  check_slicing(file, rows, bat.length);
-  std::vector<double> outer, inner;
+  if (rows.empty()) fail(file.string(), "the profile has no rows; expected one row per slice or knot");
+  Profile profile;
   for (const Row& row : rows) {
-    outer.push_back(row.outer);
-    if (columns->inner >= 0) inner.push_back(row.inner);
+    profile.z.push_back(row.z);
+    profile.outer.push_back(row.outer);
+    if (columns->inner >= 0) profile.inner.push_back(row.inner);
   }
-  bat.set_slices(std::move(outer), std::move(inner));
+  if (!columns->knots) {
+    if (options.interpolation && *options.interpolation != Interpolation::stepped)
+      fail(options.interpolation_where, std::string("value '") + to_string(*options.interpolation) + "' with " +
+                                            file.string() + ", which lists one diameter per slice (z_center_m): " +
+                                            "expected 'stepped', or knots in a z_m column");
+    check_slicing(file, rows, bat.length);
+    bat.set_slices(std::move(profile.outer), std::move(profile.inner));
+    if (options.slices) bat = resample(bat, *options.slices);
+    return;
+  }
+  check_knots(file, rows, bat.length);
+  profile.interpolation = options.interpolation.value_or(Interpolation::linear);
+  cut_into_slices(profile, options.slices.value_or(default_slices(bat.length)), bat);
 }
 
 }  // namespace
@@ -325,18 +394,19 @@ Bat load_bat(const std::filesystem::path& toml_path, BatSource& source) {
   source.toml_text = read_text(toml_path);
   const toml::table doc = parse_toml(toml_path, source.toml_text);
   const Section top{toml_path, doc, ""};
-  top.reject_unknown({"name", "length", "material", "profile"});
+  top.reject_unknown({"name", "length", "material", "profile", "interpolation", "slices"});
   Bat bat;
   bat.name = top.text("name");
   bat.length = top.positive("length", "m");
   bat.material = read_material(top.section("material"));
+  const ProfileOptions options = read_profile_options(top);
   const std::string profile = top.text("profile");
   // The profile is named relative to the bat file, so a study directory can be moved whole.
   source.profile_file = toml_path.parent_path() / profile;
   source.profile_text =
       read_text(source.profile_file, " (the profile named by key 'profile' in " + toml_path.string() + ")");
   require_text(source.profile_file, source.profile_text);  // TOML itself must be UTF-8 already
-  read_profile(source.profile_file, source.profile_text, bat);  // rows keep views into the text
+  read_profile(source.profile_file, source.profile_text, options, bat);
   return bat;
 }
 

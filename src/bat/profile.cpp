@@ -1,0 +1,152 @@
+#include "sweetspot/bat/profile.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "sweetspot/input_error.hpp"
+
+namespace sweetspot {
+
+namespace {
+
+double sign(double x) { return (x > 0) - (x < 0); }
+
+// The end slope of the three-point formula, kept shape-preserving (scipy's PchipInterpolator).
+double pchip_end_slope(double h0, double h1, double m0, double m1) {
+  double d = ((2 * h0 + h1) * m0 - h0 * m1) / (h0 + h1);
+  if (sign(d) != sign(m0)) return 0;
+  if (sign(m0) != sign(m1) && std::abs(d) > 3 * std::abs(m0)) return 3 * m0;
+  return d;
+}
+
+// Fritsch-Butland slopes: zero at a local extremum, else the weighted harmonic mean of the
+// neighbouring secants, which keeps the cubic between its knots' values.
+std::vector<double> pchip_slopes(const std::vector<double>& x, const std::vector<double>& y) {
+  const std::size_t n = x.size();
+  std::vector<double> d(n, 0.0);
+  if (n < 2) return d;
+  std::vector<double> h(n - 1), m(n - 1);
+  for (std::size_t k = 0; k + 1 < n; ++k) h[k] = x[k + 1] - x[k], m[k] = (y[k + 1] - y[k]) / h[k];
+  if (n == 2) return {m[0], m[0]};
+  for (std::size_t k = 1; k + 1 < n; ++k) {
+    if (m[k - 1] * m[k] <= 0) continue;
+    const double w1 = 2 * h[k] + h[k - 1], w2 = h[k] + 2 * h[k - 1];
+    d[k] = (w1 + w2) / (w1 / m[k - 1] + w2 / m[k]);
+  }
+  d[0] = pchip_end_slope(h[0], h[1], m[0], m[1]);
+  d[n - 1] = pchip_end_slope(h[n - 2], h[n - 3], m[n - 2], m[n - 3]);
+  return d;
+}
+
+// One diameter (outer or inner) along the bat, the slopes worked out once.
+class Curve {
+ public:
+  Curve(Interpolation how, const std::vector<double>& z, const std::vector<double>& v)
+      : how_(how), z_(z), v_(v), slope_(how == Interpolation::pchip ? pchip_slopes(z, v) : std::vector<double>{}) {}
+
+  double operator()(double z) const {
+    if (z <= z_.front()) return v_.front();
+    if (z >= z_.back()) return v_.back();
+    const std::size_t k = static_cast<std::size_t>(std::upper_bound(z_.begin(), z_.end(), z) - z_.begin()) - 1;
+    const double h = z_[k + 1] - z_[k], t = (z - z_[k]) / h;
+    switch (how_) {
+      case Interpolation::stepped: return t < 0.5 ? v_[k] : v_[k + 1];
+      case Interpolation::linear: return (1 - t) * v_[k] + t * v_[k + 1];
+      case Interpolation::pchip: break;
+    }
+    const double t2 = t * t, t3 = t2 * t;
+    return (2 * t3 - 3 * t2 + 1) * v_[k] + (t3 - 2 * t2 + t) * h * slope_[k] + (-2 * t3 + 3 * t2) * v_[k + 1] +
+           (t3 - t2) * h * slope_[k + 1];
+  }
+
+  // Where the curve's pieces meet: knots, or for steps the midpoints between them.
+  std::vector<double> breaks() const {
+    if (how_ != Interpolation::stepped) return z_;
+    std::vector<double> mid;
+    for (std::size_t k = 0; k + 1 < z_.size(); ++k) mid.push_back((z_[k] + z_[k + 1]) / 2);
+    return mid;
+  }
+
+ private:
+  Interpolation how_;
+  const std::vector<double>& z_;
+  const std::vector<double>& v_;
+  std::vector<double> slope_;
+};
+
+// 7-point Gauss-Legendre on [0, 1]: exact for degree 13, so for D^4 of a cubic piece.
+constexpr std::array<double, 7> gl_x = {0.0254460438286207, 0.1292344072003028, 0.2970774243113014, 0.5,
+                                        0.7029225756886986, 0.8707655927996972, 0.9745539561713793};
+constexpr std::array<double, 7> gl_w = {0.0647424830844348, 0.1398526957446384, 0.1909150252525595,
+                                        0.2089795918367347, 0.1909150252525595, 0.1398526957446384,
+                                        0.0647424830844348};
+
+struct SliceMeans {
+  double outer = 0, inner = 0, area = 0, second_moment = 0;
+};
+
+SliceMeans slice_means(const Curve& outer, const Curve* inner, const std::vector<double>& breaks, double a,
+                       double b) {
+  std::vector<double> cuts = {a};
+  for (double x : breaks)
+    if (x > a && x < b) cuts.push_back(x);
+  cuts.push_back(b);
+  SliceMeans s;
+  for (std::size_t p = 0; p + 1 < cuts.size(); ++p) {
+    const double width = cuts[p + 1] - cuts[p];
+    for (std::size_t j = 0; j < gl_x.size(); ++j) {
+      const double z = cuts[p] + gl_x[j] * width, w = gl_w[j] * width / (b - a);
+      const double d = outer(z), di = inner ? (*inner)(z) : 0.0;
+      s.outer += w * d;
+      s.inner += w * di;
+      s.area += w * std::numbers::pi / 4 * (d * d - di * di);
+      s.second_moment += w * std::numbers::pi / 64 * (d * d * d * d - di * di * di * di);
+    }
+  }
+  return s;
+}
+
+}  // namespace
+
+double Profile::diameter(double at, bool of_inner) const {
+  if (of_inner && this->inner.empty()) return 0;
+  return Curve(interpolation, z, of_inner ? this->inner : outer)(at);
+}
+
+void cut_into_slices(const Profile& profile, int slices, Bat& bat) {
+  const Curve outer(profile.interpolation, profile.z, profile.outer);
+  const bool hollow = !profile.inner.empty();
+  const Curve inner(profile.interpolation, profile.z, hollow ? profile.inner : profile.outer);
+  // Both curves break at the same places: the knots are shared.
+  const std::vector<double> breaks = outer.breaks();
+  for (auto* v : {&bat.outer_diameter, &bat.inner_diameter, &bat.section_area, &bat.section_second_moment})
+    v->clear();
+  const double dz = bat.length / slices;
+  for (int i = 0; i < slices; ++i) {
+    const SliceMeans m = slice_means(outer, hollow ? &inner : nullptr, breaks, i * dz, (i + 1) * dz);
+    bat.outer_diameter.push_back(m.outer);
+    if (hollow) bat.inner_diameter.push_back(m.inner);
+    bat.section_area.push_back(m.area);
+    bat.section_second_moment.push_back(m.second_moment);
+  }
+}
+
+const char* to_string(Interpolation interpolation) {
+  switch (interpolation) {
+    case Interpolation::stepped: return "stepped";
+    case Interpolation::linear: return "linear";
+    case Interpolation::pchip: return "pchip";
+  }
+  return "";
+}
+
+Interpolation parse_interpolation(const std::string& text) {
+  for (Interpolation i : {Interpolation::stepped, Interpolation::linear, Interpolation::pchip})
+    if (text == to_string(i)) return i;
+  throw InputError("interpolation '" + text + "': expected 'stepped', 'linear' or 'pchip'");
+}
+
+}  // namespace sweetspot
