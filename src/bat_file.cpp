@@ -272,6 +272,11 @@ void read_profile(const fs::path& file, const std::string& context, Bat& bat) {
   }
 }
 
+// The profile is named relative to the bat file, so a study directory can be moved whole.
+fs::path profile_path(const fs::path& toml_path, const Section& top) {
+  return toml_path.parent_path() / top.text("profile");
+}
+
 }  // namespace
 
 Bat load_bat(const std::filesystem::path& toml_path) {
@@ -282,11 +287,14 @@ Bat load_bat(const std::filesystem::path& toml_path) {
   bat.name = top.text("name");
   bat.length = top.positive("length", "m");
   bat.material = read_material(top.section("material"));
-  const std::string profile = top.text("profile");
-  // The profile is named relative to the bat file, so a study directory can be moved whole.
-  read_profile(toml_path.parent_path() / profile,
-               " (the profile named by key 'profile' in " + toml_path.string() + ")", bat);
+  read_profile(profile_path(toml_path, top), " (the profile named by key 'profile' in " + toml_path.string() + ")",
+               bat);
   return bat;
+}
+
+std::filesystem::path profile_path(const std::filesystem::path& toml_path) {
+  const toml::table doc = parse_toml(toml_path);
+  return profile_path(toml_path, Section{toml_path, doc, ""});
 }
 
 }  // namespace sweetspot
