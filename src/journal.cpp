@@ -165,6 +165,7 @@ void Journal::read_existing(const RowCheck& check) {
       if (point >= key_.points)
         return drop("point " + std::to_string(point) + " outside the study's " + std::to_string(key_.points));
       if (seen[point]) return drop("point " + std::to_string(point) + " recorded twice");
+      seen[point] = true;  // within this record too; a record dropped ends the reading anyway
       std::memcpy(row.data(), at + sizeof point, key_.width * sizeof(double));
       if (const std::string why = check(row.data()); !why.empty())
         return drop("point " + std::to_string(point) + ": " + why);
@@ -172,11 +173,9 @@ void Journal::read_existing(const RowCheck& check) {
     // Sound: keep it whole (a record is kept or dropped entirely).
     for (std::uint64_t i = 0; i < count; ++i) {
       const char* at = record.data() + i * entry;
-      const std::uint64_t point = word_at(at);
-      seen[point] = true;
-      recovered_points_.push_back(point);
+      recovered_points_.push_back(word_at(at));
       recovered_values_.resize(recovered_values_.size() + key_.width);
-      std::memcpy(recovered_values_.data() + recovered_values_.size() - key_.width, at + sizeof point,
+      std::memcpy(recovered_values_.data() + recovered_values_.size() - key_.width, at + sizeof(std::uint64_t),
                   key_.width * sizeof(double));
     }
     offset += sizeof count + body;
