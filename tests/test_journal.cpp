@@ -247,7 +247,7 @@ TEST_CASE("Random byte flips in a journal never reach the dataset", "[run][journ
   const KilledRun k;
   std::mt19937 random(20240611);  // fixed: the same trials every time
   std::vector<std::string> resumed;
-  for (int trial = 0; trial < 16; ++trial) {
+  for (int trial = 0; trial < 12; ++trial) {
     std::string bytes = k.journal;
     bool header = false;
     const int flips = 1 + static_cast<int>(random() % 3);
@@ -268,15 +268,15 @@ TEST_CASE("Random byte flips in a journal never reach the dataset", "[run][journ
       resumed.push_back(name);
     }
   }
-  REQUIRE(resumed.size() >= 10);
+  REQUIRE(resumed.size() >= 8);
   k.require_identical(resumed);
 }
 
 TEST_CASE("Journal records with a right checksum but wrong contents are dropped, memory bounded", "[run][journal]") {
   const KilledRun k;
   const std::vector<std::size_t> ends = record_ends(k.journal);
-  const std::string kept = k.journal.substr(0, ends[2]);  // two whole records
-  const std::set<std::uint64_t> done = points_before(k.journal, ends[2]);
+  const std::string kept = k.journal.substr(0, ends.back());  // every whole record
+  const std::set<std::uint64_t> done = points_before(k.journal, ends.back());
   std::uint64_t free_point = 0;
   while (done.count(free_point)) ++free_point;
   const Row ok{40, 0.2, 1e-3, 1e-3, 0};
@@ -306,7 +306,10 @@ TEST_CASE("Journal records with a right checksum but wrong contents are dropped,
   std::vector<std::string> resumed;
   for (const Case& c : cases) {
     // Bounded memory: a journal that could make the run allocate by its word fails under the limit.
-    const ProgramRun run = k.resume(c.name, kept + c.tail + k.journal.substr(ends[2]), "ulimit -v 4000000; ");
+    // After the bad record, one that looks sound: dropped too (nothing after damage is trusted),
+    // or its made-up row would reach the dataset.
+    const std::string after = record({free_point + 1}, {ok});
+    const ProgramRun run = k.resume(c.name, kept + c.tail + after, "ulimit -v 4000000; ");
     k.require_resumed(run, c.name);
     CHECK_THAT(run.output, Catch::Contains(c.expected) && Catch::Contains("dropped"));
     CHECK_THAT(run.output, Catch::Contains("resuming: " + std::to_string(done.size()) + " of 1600"));
