@@ -80,11 +80,13 @@ TEST_CASE("A run killed with SIGKILL resumes to the file of an uninterrupted run
   REQUIRE_THAT(killed.output, Catch::Contains("killed 137"));
   CHECK_FALSE(std::filesystem::exists(out));
   REQUIRE(std::filesystem::exists(out + ".journal"));
+  REQUIRE(std::filesystem::exists(out + ".lock"));  // the killed run's: a stale lock blocks nothing
   const ProgramRun resumed = run_program("run " + study.string() + " -o " + out + " --resume");
   INFO(resumed.output);
   REQUIRE(resumed.exit_code == 0);
   CHECK_THAT(resumed.output, Catch::Contains("resuming:"));
   CHECK_FALSE(std::filesystem::exists(out + ".journal"));
+  CHECK_FALSE(std::filesystem::exists(out + ".lock"));
   require_identical(dir / "whole.h5", out);
 }
 

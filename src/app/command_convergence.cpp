@@ -9,7 +9,9 @@
 #include "commands.hpp"
 #include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/study/convergence.hpp"
+#include "sweetspot/study/dataset.hpp"
 #include "sweetspot/input_error.hpp"
+#include "sweetspot/study/output_paths.hpp"
 
 namespace sweetspot::app {
 
@@ -21,6 +23,7 @@ constexpr double recommended_vf_error = 1e-6;
 struct ConvergenceCommandOptions {
   std::string study;
   std::string output;
+  bool output_given = false;  // `-o ""` is a mistake to refuse, not a wish for the default
   bool quick = false;
 };
 
@@ -73,6 +76,9 @@ void run(const ConvergenceCommandOptions& o) {
   if (study.kind != StudyKind::impact)
     throw InputError(o.study + ": kind = \"" + to_string(study.kind) +
                      "\": convergence needs a study of kind \"impact\" (a ball on a bat)");
+  const std::filesystem::path out =
+      o.output_given ? o.output : std::filesystem::path(o.study).stem().string() + "_convergence.h5";
+  check_output_paths(out, {dataset_temporary_path(out)}, study_inputs(study));  // before any work
   const GridPoint point = grid_point(study, 0);
   if (!study.axes.empty())
     spdlog::info("{} has {} grid points: using grid point 0 ({})", o.study, study.points(),
@@ -85,8 +91,6 @@ void run(const ConvergenceCommandOptions& o) {
   spdlog::info("{}: z = {:g} m, {} modes kept (rigid included), largest stable RK4 step {:.4g} us{}", bat.name,
                point.scene.z, table.kept_modes, 1e6 * table.rk4_largest_step, o.quick ? " (quick)" : "");
   log_table(table);
-  const std::filesystem::path out =
-      o.output.empty() ? std::filesystem::path(o.study).stem().string() + "_convergence.h5" : o.output;
   write_dataset(out, convergence_dataset(table, study));
   spdlog::info("wrote {}", out.string());
 }
@@ -98,9 +102,13 @@ void add_convergence_command(CLI::App& app) {
   CLI::App* cmd =
       app.add_subcommand("convergence", "Error against run time of every integrator on a study's base scene");
   cmd->add_option("study", o->study, "study file (TOML) of kind \"impact\"; with axes, grid point 0")->required();
-  cmd->add_option("-o,--output", o->output, "dataset to write (default: the study's name + _convergence.h5)");
+  CLI::Option* output =
+      cmd->add_option("-o,--output", o->output, "dataset to write (default: the study's name + _convergence.h5)");
   cmd->add_flag("--quick", o->quick, "the 3 finest settings of each integrator, each timed once (for tests)");
-  cmd->callback([o] { run(*o); });
+  cmd->callback([o, output] {
+    o->output_given = output->count() > 0;
+    run(*o);
+  });
 }
 
 }  // namespace sweetspot::app

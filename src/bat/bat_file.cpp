@@ -382,6 +382,11 @@ void read_profile(const fs::path& file, const std::string& text, const ProfileOp
   cut_into_slices(profile, options.slices.value_or(default_slices(bat.length)), bat);
 }
 
+// The profile is named relative to the bat file, so a study directory can be moved whole.
+fs::path profile_path(const fs::path& toml_path, const Section& top) {
+  return toml_path.parent_path() / top.text("profile");
+}
+
 }  // namespace
 
 Bat load_bat(const std::filesystem::path& toml_path) {
@@ -400,14 +405,17 @@ Bat load_bat(const std::filesystem::path& toml_path, BatSource& source) {
   bat.length = top.positive("length", "m");
   bat.material = read_material(top.section("material"));
   const ProfileOptions options = read_profile_options(top);
-  const std::string profile = top.text("profile");
-  // The profile is named relative to the bat file, so a study directory can be moved whole.
-  source.profile_file = toml_path.parent_path() / profile;
+  source.profile_file = profile_path(toml_path, top);
   source.profile_text =
       read_text(source.profile_file, " (the profile named by key 'profile' in " + toml_path.string() + ")");
   require_text(source.profile_file, source.profile_text);  // TOML itself must be UTF-8 already
   read_profile(source.profile_file, source.profile_text, options, bat);
   return bat;
+}
+
+std::filesystem::path profile_path(const std::filesystem::path& toml_path) {
+  const toml::table doc = parse_toml(toml_path, read_text(toml_path));
+  return profile_path(toml_path, Section{toml_path, doc, ""});
 }
 
 }  // namespace sweetspot

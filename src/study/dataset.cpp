@@ -303,19 +303,22 @@ void flush_to_disk(const fs::path& path) {
 }
 
 // Removes the temporary file on every way out; after the rename there is nothing left to remove.
+// A directory of that name is not ours (creating the file failed on it): it stays.
 struct TemporaryFile {
   fs::path path;
   ~TemporaryFile() {
     std::error_code ignored;
-    fs::remove(path, ignored);
+    if (!fs::is_directory(fs::symlink_status(path, ignored))) fs::remove(path, ignored);
   }
 };
 
 }  // namespace
 
+fs::path dataset_temporary_path(const fs::path& path) { return fs::path(path) += ".tmp"; }
+
 void write_dataset(const fs::path& path, const Dataset& dataset) {
   validate(dataset);
-  const TemporaryFile temporary{fs::path(path) += ".tmp"};
+  const TemporaryFile temporary{dataset_temporary_path(path)};
   try {
     const QuietHdf5 quiet;
     write_file(temporary.path, dataset);

@@ -9,11 +9,17 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <memory>
+#include <string>
+#include <string_view>
 #include <tuple>
 
 #include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/study/output_paths.hpp"
 #include "sweetspot/study/affinity.hpp"
+#include "sweetspot/study/dataset.hpp"
 #include "sweetspot/study/journal.hpp"
+#include "sweetspot/study/output_lock.hpp"
 #include "sweetspot/study/study_point.hpp"
 #include "sweetspot/study/study_provenance.hpp"
 #include "sweetspot/study/study_results.hpp"
@@ -127,16 +133,82 @@ class Progress {
   Clock::time_point start_ = Clock::now(), last_ = Clock::now();
 };
 
+// Why a journal's row cannot be a finished point of this study, or "" when it can: a status
+// outside the enumeration, a failed point with values, an ok point without its exit speed.
+std::string recovered_row_problem(const OutputLayout& layout, const double* row) {
+  const auto column = [&layout](const std::string& name) {
+    const auto it = std::find(layout.names.begin(), layout.names.end(), name);
+    return it == layout.names.end() ? -1 : layout.offsets[it - layout.names.begin()];
+  };
+  const int status_at = column("status"), vf_at = column("vf");
+  if (status_at < 0) return "";  // without a status there is nothing the values must agree with
+  const double status = row[status_at];
+  const bool named = status >= 0 && status <= 255 && status == std::floor(status) &&
+                     std::string_view(to_string(static_cast<CollisionStatus>(static_cast<int>(status)))) != "unknown";
+  if (!named) return fmt::format("status {} is none of the statuses", status);
+  if (status == static_cast<double>(CollisionStatus::ok))
+    return vf_at >= 0 && !std::isfinite(row[vf_at]) ? fmt::format("status ok with vf = {}", row[vf_at]) : "";
+  for (int i = 0; i < layout.width; ++i)
+    if (i != status_at && !std::isnan(row[i])) return fmt::format("a failed point with a value {}", row[i]);
+  return "";
+}
+
+// Rank 0's hold on the output for the whole run, taken before any rank works: the paths checked,
+// the lock taken, the journal read (and the points it recovered).
+struct OutputClaim {
+  OutputLock lock;
+  Journal journal;
+
+  OutputClaim(const Study& study, const OutputLayout& layout, const RunOptions& options)
+      : lock(options.output),
+        journal(Journal::path_for(options.output), journal_key(study, layout.width), options.resume,
+                [&layout](const double* row) { return recovered_row_problem(layout, row); }) {
+    if (!journal.dropped().empty()) spdlog::warn("{}: {}", Journal::path_for(options.output).string(), journal.dropped());
+    if (options.resume && journal.recovered_points().empty())
+      spdlog::info("resuming: no finished point in a journal: computing all {} points", study.points());
+  }
+
+  // Before the claim: no lock file is created where the output cannot or must not be.
+  static void check(const Study& study, const RunOptions& options) {
+    const std::filesystem::path journal = Journal::path_for(options.output);
+    check_output_paths(options.output,
+                       {dataset_temporary_path(options.output), journal, Journal::rewrite_path(journal),
+                        OutputLock::path_for(options.output)},
+                       study_inputs(study));
+  }
+};
+
+// Rank 0 claims the output; every rank learns whether it did, and all throw RunRefused with rank
+// 0's reason if not (a rank that went on alone would wait for the others forever).
+std::unique_ptr<OutputClaim> claim_output(const Study& study, const OutputLayout& layout, const RunOptions& options,
+                                          int rank) {
+  std::unique_ptr<OutputClaim> claim;
+  std::string refusal;
+  if (rank == 0) try {
+      OutputClaim::check(study, options);
+      claim = std::make_unique<OutputClaim>(study, layout, options);
+    } catch (const InputError& e) {
+      refusal = e.what();
+    }
+  int length = static_cast<int>(refusal.size());
+  MPI_Bcast(&length, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  refusal.resize(static_cast<std::size_t>(length));
+  MPI_Bcast(refusal.data(), length, MPI_CHAR, 0, MPI_COMM_WORLD);
+  if (!refusal.empty()) throw RunRefused(refusal);
+  return claim;
+}
+
 // Rank 0: hands out chunks, computes chunks itself between requests, journals every result.
 class Coordinator {
  public:
-  Coordinator(const Study& study, const OutputLayout& layout, const RunOptions& options, int ranks)
-      : study_(study), layout_(layout), ranks_(ranks), cache_(study),
-        journal_(journal_path(options), study_hash(input_texts(study)), layout.width, options.resume),
+  Coordinator(const Study& study, const OutputLayout& layout, const RunOptions& options, int ranks, Journal& journal)
+      : study_(study), layout_(layout), ranks_(ranks), cache_(study), journal_(journal),
         rows_(study.points() * layout.width, std::nan("")), done_(study.points(), false),
-        progress_(study.points(), journal_.recovered().size(), options.verbosity) {
-    for (const JournalEntry& e : journal_.recovered()) store_row(e.point, e.values.data());
-    if (!journal_.recovered().empty()) spdlog::info("resuming: {} of {} points already done", journal_.recovered().size(), study.points());
+        progress_(study.points(), journal.recovered_points().size(), options.verbosity) {
+    const std::vector<std::uint64_t>& recovered = journal_.recovered_points();
+    for (std::size_t i = 0; i < recovered.size(); ++i)
+      store_row(recovered[i], journal_.recovered_values().data() + i * layout.width);
+    if (!recovered.empty()) spdlog::info("resuming: {} of {} points already done", recovered.size(), study.points());
     for (std::size_t point : task_order(study))
       if (!done_[point]) todo_.push_back(point);
     const std::size_t threads = static_cast<std::size_t>(omp_get_max_threads());
@@ -144,8 +216,6 @@ class Coordinator {
     // Rank 0 answers requests only between its own chunks: small ones keep the workers' wait short.
     own_chunk_ = ranks > 1 ? std::max<std::size_t>(threads, chunk_ / 64) : chunk_;
   }
-
-  static std::filesystem::path journal_path(const RunOptions& o) { return o.output.string() + ".journal"; }
 
   void run() {
     int active = ranks_ - 1;
@@ -161,8 +231,7 @@ class Coordinator {
   void log_summary(Clock::time_point start) const { log_rank_summary(0, cache_.solves(), tally_, start); }
 
   const std::vector<double>& rows() const { return rows_; }
-  std::size_t resumed_points() const { return journal_.recovered().size(); }
-  void remove_journal() { journal_.remove(); }
+  std::size_t resumed_points() const { return journal_.recovered_points().size(); }
 
  private:
   std::vector<std::uint64_t> take_chunk(std::size_t size) {
@@ -218,7 +287,7 @@ class Coordinator {
   const OutputLayout& layout_;
   int ranks_;
   ModalCache cache_;
-  Journal journal_;
+  Journal& journal_;
   std::vector<double> rows_;
   std::vector<bool> done_;
   Progress progress_;
@@ -268,6 +337,7 @@ void run_study(const Study& study, const RunOptions& options) {
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   const OutputLayout layout(study);
   log_rank_cores(rank);
+  const std::unique_ptr<OutputClaim> claim = claim_output(study, layout, options, rank);
   if (rank != 0) {
     work(study, layout, rank);
     return;
@@ -275,12 +345,12 @@ void run_study(const Study& study, const RunOptions& options) {
   const auto start = Clock::now();
   spdlog::info("study {} ({}): {} points on {} rank(s) x {} thread(s)", study.file.string(), to_string(study.kind),
                study.points(), ranks, omp_get_max_threads());
-  Coordinator coordinator(study, layout, options, ranks);
+  Coordinator coordinator(study, layout, options, ranks, claim->journal);
   coordinator.run();
   const RunInfo info{ranks, omp_get_max_threads(), seconds_since(start), coordinator.resumed_points(),
-                     Coordinator::journal_path(options)};
+                     Journal::path_for(options.output)};
   write_dataset(options.output, make_dataset(study, layout, coordinator.rows(), bat_frequencies(study), info));
-  coordinator.remove_journal();
+  claim->journal.remove();  // the lock goes with the claim, after the journal
   coordinator.log_summary(start);
   spdlog::info("wrote {}: {} points in {:.3f} s, {:.0f} points/s", options.output.string(), study.points(),
                info.wall_time, study.points() / info.wall_time);

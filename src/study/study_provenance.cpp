@@ -111,15 +111,6 @@ void add_run(const RunInfo& info, Dataset& d) {
 
 }  // namespace
 
-std::string input_texts(const Study& study) {
-  std::string texts = study.text;
-  // Each text's length before it: two different splits of the same bytes must not look alike.
-  for (const BatSource& source : study.bat_sources)
-    for (const std::string* text : {&source.toml_text, &source.profile_text})
-      texts.append("\n").append(std::to_string(text->size())).append("\n").append(*text);
-  return texts;
-}
-
 void add_provenance(const Study& study, const RunInfo& info, Dataset& d) {
   d.text_attributes = {{"Conventions", "CF-1.8"},
                        {"title", study.title},

@@ -67,4 +67,7 @@ struct Dataset {
 // and an existing `path` left as it was.
 void write_dataset(const std::filesystem::path& path, const Dataset& dataset);
 
+// The temporary file write_dataset writes before renaming it to `path`: `path` + ".tmp".
+std::filesystem::path dataset_temporary_path(const std::filesystem::path& path);
+
 }  // namespace sweetspot

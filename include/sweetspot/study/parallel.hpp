@@ -6,6 +6,7 @@
 // for any number of ranks and threads.
 #include <filesystem>
 
+#include "sweetspot/input_error.hpp"
 #include "sweetspot/study/study.hpp"
 
 namespace sweetspot {
@@ -13,12 +14,21 @@ namespace sweetspot {
 enum class Verbosity { quiet, normal, verbose };
 
 struct RunOptions {
-  std::filesystem::path output;  // the dataset; OUT.journal beside it while running
+  std::filesystem::path output;  // the dataset; OUT.journal and OUT.lock beside it while running
   bool resume = false;           // keep the journal's finished points
   Verbosity verbosity = Verbosity::normal;
 };
 
-// Call between MPI_Init_thread and MPI_Finalize on every rank. Rank 0 writes the dataset.
+// A run refused before any rank did any work: the output cannot or must not be written
+// (output_paths.hpp), another run holds it (output_lock.hpp), or its journal cannot be trusted
+// (journal.hpp). Thrown on every rank with rank 0's one-line reason, so that all stop together.
+class RunRefused : public InputError {
+ public:
+  using InputError::InputError;
+};
+
+// Call between MPI_Init_thread and MPI_Finalize on every rank. Rank 0 checks the output, locks
+// it for the run, reads the journal, and writes the dataset.
 void run_study(const Study& study, const RunOptions& options);
 
 }  // namespace sweetspot

@@ -20,11 +20,6 @@ struct RunInfo {
   std::filesystem::path journal;   // that journal
 };
 
-// Everything a run's results depend on that is read from files: the study's text and each bat's
-// TOML and profile texts, one after the other. A journal is resumed only by a run of the same
-// inputs (a bat edited between the kill and the resume would otherwise mix two bats' results).
-std::string input_texts(const Study& study);
-
 // Adds the global attributes (Conventions, title, the study text, the program, the scene_* keys,
 // the run) and, for a study on bats, the per-bat variables bat_file, bat_toml, bat_profile_file,
 // bat_profile and bat_slices over the `bat` dimension, which `dataset` must already have.

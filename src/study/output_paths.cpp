@@ -1,0 +1,101 @@
+#include "sweetspot/study/output_paths.hpp"
+
+#include <stdlib.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <string>
+#include <system_error>
+
+#include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/input_error.hpp"
+
+namespace sweetspot {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string quoted(const fs::path& path) {
+  std::string text(1, '\'');
+  return text.append(path.string()).append(1, '\'');
+}
+
+[[noreturn]] void refuse(const fs::path& path, const std::string& what) {
+  throw InputError(path.string() + ": " + what);
+}
+
+fs::file_status status_of(const fs::path& path) {
+  std::error_code ignored;  // a status we cannot get reads as "not found"
+  return fs::status(path, ignored);
+}
+
+// The directory the output goes in must exist and take new files: checked now, not at the
+// rename after the whole study.
+void check_directory(const fs::path& output) {
+  const fs::path directory = output.has_parent_path() ? output.parent_path() : fs::path(".");
+  const fs::file_status status = status_of(directory);
+  if (!fs::exists(status)) {
+    // A path under a regular file ("result.txt/out.h5") is not a missing directory: name the file.
+    for (fs::path up = directory.parent_path(); !up.empty() && up != up.parent_path(); up = up.parent_path()) {
+      const fs::file_status above = status_of(up);
+      if (fs::exists(above) && !fs::is_directory(above))
+        refuse(output, quoted(up) + " is a file, not a directory; expected the output in an existing directory");
+      if (fs::exists(above)) break;
+    }
+    refuse(output, "directory " + quoted(directory) + " does not exist; expected the output in an existing directory");
+  }
+  if (!fs::is_directory(status))
+    refuse(output, quoted(directory) + " is a file, not a directory; expected the output in an existing directory");
+  // Creating a file is the one test that holds for every user and file system: permission bits
+  // do not stop root, while a read-only mount or /proc stop everyone.
+  std::string probe = (directory / ".sweetspot-probe-XXXXXX").string();
+  const int fd = ::mkstemp(probe.data());
+  if (fd < 0)
+    refuse(output, "cannot create files in directory " + quoted(directory) + " (" + std::strerror(errno) +
+                       "); expected a writable directory");
+  ::close(fd);
+  ::unlink(probe.c_str());
+}
+
+void check_not_an_input(const fs::path& written, const std::vector<fs::path>& inputs) {
+  if (!fs::exists(status_of(written))) return;  // a file not there yet is no input
+  for (const fs::path& input : inputs) {
+    std::error_code error;
+    if (fs::equivalent(written, input, error))
+      refuse(written, "is the run's input " + quoted(input) +
+                          " (the same file); expected an output that is none of the study, bat and profile files");
+  }
+}
+
+}  // namespace
+
+std::vector<fs::path> study_inputs(const Study& study) {
+  std::vector<fs::path> inputs{study.file};
+  inputs.insert(inputs.end(), study.bats.begin(), study.bats.end());
+  for (const fs::path& bat : study.bats) inputs.push_back(profile_path(bat));
+  return inputs;
+}
+
+void check_output_paths(const fs::path& output, const std::vector<fs::path>& beside,
+                        const std::vector<fs::path>& inputs) {
+  if (output.empty()) throw InputError("the output path is empty; expected the name of a file to write");
+  const fs::file_status status = status_of(output);
+  if (fs::is_directory(status))
+    refuse(output, "is a directory; expected the name of a file to write (e.g. " + (output / "result.h5").string() + ")");
+  if (fs::exists(status) && !fs::is_regular_file(status))
+    refuse(output, "exists and is not a regular file; expected the name of a file to write");
+  check_directory(output);
+  for (const fs::path& file : beside) {
+    const fs::file_status s = status_of(file);
+    if (fs::exists(s) && !fs::is_regular_file(s))
+      refuse(file, std::string(fs::is_directory(s) ? "is a directory" : "is not a regular file") +
+                       "; expected no file there or a regular one (sweetspot writes it beside " + output.string() +
+                       ")");
+  }
+  check_not_an_input(output, inputs);
+  for (const fs::path& file : beside) check_not_an_input(file, inputs);
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,124 @@
+// Where `run` and `convergence` write, checked before any work: an output that is one of the
+// run's inputs (whatever its spelling), or a path that cannot be written, is refused in one line
+// with exit status 2, and every file already there stays as it was.
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "program.hpp"
+#include "study_dir.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string quoted(const std::string& path) { return std::string(1, '\'').append(path).append(1, '\''); }
+
+}  // namespace
+
+TEST_CASE("An output that is one of the run's inputs is refused, however it is spelt", "[run][output]") {
+  StudyDir s;
+  fs::create_hard_link(s.study, s.dir.path / "hard_link.toml");
+  fs::create_symlink(s.dir.path / "bats" / "torpedo_profile.csv", s.dir.path / "profile_link.csv");
+  // A second copy of the study whose name is the temporary file, the journal or the lock of an
+  // output: those are written too.
+  for (const char* beside : {"x.h5.tmp", "y.h5.journal", "z.h5.lock"}) fs::copy_file(s.study, s.dir.path / beside);
+  struct Case {
+    std::string study, output, input;  // input: the file the message must name
+  };
+  const std::string study = s.study.string();
+  const Case cases[] = {
+      {study, study, "study.toml"},
+      {study, s / "bats/../study.toml", "study.toml"},
+      {study, s / "./hard_link.toml", "study.toml"},
+      {study, s / "bats/r161.toml", "r161.toml"},
+      {study, s / "bats/r161_profile.csv", "r161_profile.csv"},
+      {study, s / "bats/torpedo.toml", "torpedo.toml"},
+      {study, s / "profile_link.csv", "torpedo_profile.csv"},
+      {s / "x.h5.tmp", s / "x.h5", "x.h5.tmp"},
+      {s / "y.h5.journal", s / "y.h5", "y.h5.journal"},
+      {s / "z.h5.lock", s / "z.h5", "z.h5.lock"},
+  };
+  const auto before = s.snapshot();
+  for (const Case& c : cases) {
+    for (const std::string command : {"run", "convergence"}) {
+      // The lock and journal are no files of `convergence`: only its temporary file is.
+      if (command == "convergence" && c.input.find(".h5.") != std::string::npos && c.input != "x.h5.tmp") continue;
+      const ProgramRun run =
+          run_program(command + " " + c.study + " -o " + c.output + (command == "run" ? "" : " --quick"));
+      INFO(command << " -o " << c.output);
+      require_refused(run, "is the run's input");
+      CHECK_THAT(run.output, Catch::Contains(c.input + "' (the same file)"));
+    }
+  }
+  // Under mpirun too: rank 0 checks, every rank stops, one line.
+  require_refused(run_program_mpi(2, 1, "run " + study + " -o " + s / "bats/r161_profile.csv"), "r161_profile.csv",
+                  true);
+  CHECK(s.snapshot() == before);
+}
+
+TEST_CASE("An output path that cannot be written is refused before any work, in one line", "[run][output]") {
+  StudyDir s;
+  fs::create_directory(s.dir.path / "existing_dir");
+  s.dir.write("result.txt", "a file, not a directory");
+  s.dir.write("out.h5", "an earlier result");
+  struct Case {
+    std::string output, expected;
+    std::string in_the_way;  // a directory where a file is written beside the output
+    bool mpi = false;        // tried under mpirun too (a few: each mpirun takes a second)
+  };
+  const Case cases[] = {
+      {s / "existing_dir", "existing_dir: is a directory; expected the name of a file to write", "", true},
+      {s / "missing/out.h5", "directory " + quoted(s / "missing") + " does not exist", "", true},
+      {s / "missing/deeper/out.h5", "directory " + quoted(s / "missing/deeper") + " does not exist"},
+      {s / "result.txt/out.h5", quoted(s / "result.txt") + " is a file, not a directory", "", true},
+      {s / "result.txt/sub/out.h5", quoted(s / "result.txt") + " is a file, not a directory"},
+      {"''", "the output path is empty; expected the name of a file to write", "", true},
+      {s / "out.h5", "out.h5.tmp: is a directory", "out.h5.tmp", true},
+      {s / "out.h5", "out.h5.journal: is a directory", "out.h5.journal"},
+      {s / "out.h5", "out.h5.journal.new: is a directory", "out.h5.journal.new"},
+      {s / "out.h5", "out.h5.lock: is a directory", "out.h5.lock"},
+      {"/dev/null", "/dev/null: exists and is not a regular file"},
+  };
+  for (const Case& c : cases) {
+    if (!c.in_the_way.empty()) fs::create_directory(s.dir.path / c.in_the_way);
+    const auto before = s.snapshot();
+    for (const std::string command : {"run", "convergence --quick"}) {
+      for (const bool mpi : {false, true}) {
+        // Only `run` keeps a journal and a lock beside its output.
+        const bool run_only = !c.in_the_way.empty() && c.in_the_way != "out.h5.tmp";
+        if ((mpi || run_only) && command != "run") continue;
+        if (mpi && !c.mpi) continue;
+        const std::string arguments = command + " " + s.study.string() + " -o " + c.output;
+        INFO(arguments << (mpi ? " under mpirun" : ""));
+        require_refused(mpi ? run_program_mpi(2, 1, arguments) : run_program(arguments), c.expected, mpi);
+        CHECK(s.snapshot() == before);  // the directory in the way too: nothing deleted
+      }
+    }
+    if (!c.in_the_way.empty()) fs::remove(s.dir.path / c.in_the_way);
+  }
+  CHECK(file_text(s / "out.h5") == "an earlier result");
+}
+
+TEST_CASE("An output in a directory the program cannot write in is refused before any work", "[run][output]") {
+  // As root, permission bits stop no one: a directory of /proc takes no new file whoever asks.
+  // Permission bits are tried too when the tests do not run as root.
+  StudyDir s;
+  std::vector<std::string> directories{"/proc"};
+  if (::geteuid() != 0) {
+    fs::create_directory(s.dir.path / "read_only");
+    fs::permissions(s.dir.path / "read_only", fs::perms::owner_read | fs::perms::owner_exec);
+    directories.push_back(s / "read_only");
+  }
+  const auto before = s.snapshot();
+  for (const std::string& directory : directories)
+    for (const std::string command : {"run", "convergence --quick"})
+      require_refused(run_program(command + " " + s.study.string() + " -o " + directory + "/out.h5"),
+                      "cannot create files in directory '" + directory + "'");
+  CHECK(s.snapshot() == before);
+  if (::geteuid() != 0) fs::permissions(s.dir.path / "read_only", fs::perms::owner_all);
+}
