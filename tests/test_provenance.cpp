@@ -92,7 +92,7 @@ TEST_CASE("A run killed with SIGKILL and resumed says so in its dataset, with th
   CHECK_THAT(check.output, Catch::Contains("provenance ok"));
 }
 
-TEST_CASE("A bat edited between the kill and the resume makes the run start over, and its dataset says so",
+TEST_CASE("A bat edited between the kill and the resume is refused, and a fresh run's dataset says so",
           "[run][provenance]") {
   TempDir dir;
   write_dense_r161(dir);
@@ -100,7 +100,12 @@ TEST_CASE("A bat edited between the kill and the resume makes the run start over
   const std::string out = dir / "out.h5";
   run_and_kill(study, out);
   write_dense_r161(dir, 900);  // the study's text is the same; its results are not
-  const ProgramRun rerun = run_program("run " + study.string() + " -o " + out + " --resume");
+  const ProgramRun refused = run_program("run " + study.string() + " -o " + out + " --resume");
+  INFO(refused.output);
+  REQUIRE(refused.exit_code == 2);
+  REQUIRE(std::filesystem::exists(out + ".journal"));  // kept: the user decides
+  std::filesystem::remove(out + ".journal");
+  const ProgramRun rerun = run_program("run " + study.string() + " -o " + out);
   INFO(rerun.output);
   REQUIRE(rerun.exit_code == 0);
   CHECK_THAT(rerun.output, !Catch::Contains("resuming:"));

@@ -336,8 +336,8 @@ void run_study(const Study& study, const RunOptions& options) {
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   const OutputLayout layout(study);
-  log_rank_cores(rank);
   const std::unique_ptr<OutputClaim> claim = claim_output(study, layout, options, rank);
+  log_rank_cores(rank);  // after the output is checked: a refused run prints its one line alone
   if (rank != 0) {
     work(study, layout, rank);
     return;
