@@ -46,6 +46,7 @@ ImpactResult toy_model(double omega_tau) {
   if (c.status != CollisionStatus::ok) return r;  // no whole force profile to drive the modes with
   const double recoil = ball_mass / total;         // the rigid bat: all of it moves as one
   r.vf_van_zandt = van_zandt_exit_speed(bat, ball, recoil, speed, 0.0, c.force);
+  require_finite(r, {true, false, true});
   return r;
 }
 

@@ -9,6 +9,7 @@ ImpactResult hit_wall(const Ball& ball, double speed, const CollisionOptions& op
   r.energy.initial = 0.5 * ball.mass * speed * speed;
   r.energy.ball = 0.5 * ball.mass * r.vf * r.vf;
   close_balance(r);
+  require_finite(r, {options.find_collision_time});
   return r;
 }
 

@@ -54,8 +54,10 @@ struct CollisionOptions {
   double contact_phase_limit = 2;
 };
 
-// unbalanced: integrated, but the energy balance is off by more than 1 % (impact.hpp)
-enum class CollisionStatus { ok, no_separation, non_finite, refused_step, unbalanced };
+// unbalanced: integrated, but the energy balance is off by more than 1 % (impact.hpp).
+// no_contact: ball and struck point never approach (closing speed <= 0 at first touch): there is
+// no collision, and every result is NaN. A ball at rest struck by a moving bat (a tee) collides.
+enum class CollisionStatus { ok, no_separation, non_finite, refused_step, unbalanced, no_contact };
 const char* to_string(CollisionStatus status);
 
 struct ForceSample {
