@@ -151,9 +151,9 @@ constexpr KeySpec keys[] = {
     {"probes", Type::numbers, "a list of points on the bat, each a finite number >= 0 (m from the knob)", on_bat,
      [](GridPoint& p, double x) { p.scene.history.probes.push_back(x); }, impact, 0, false},
     {"history_window", Type::number, "a finite number > 0 (s of history from first touch)", positive,
-     [](GridPoint& p, double x) { p.scene.history.window = x; }, impact, 0, false},
+     [](GridPoint& p, double x) { p.scene.history.window = x; }, ball_kinds, 0, false},
     {"history_step", Type::number, "a finite number > 0 (s between history samples)", positive,
-     [](GridPoint& p, double x) { p.scene.history.step = x; }, impact, 0, false},
+     [](GridPoint& p, double x) { p.scene.history.step = x; }, ball_kinds, 0, false},
     {"omega_tau", Type::number, "a finite number > 0 (omega tau of the toy model)", positive,
      [](GridPoint& p, double x) { p.omega_tau = x; }, toy, toy},
 };
@@ -203,9 +203,9 @@ constexpr OutputSpec output_specs[] = {
     {"vibration_displacement", impact, 0},
     {"vibration_velocity", impact, 0},
     {"vibration_acceleration", impact, 0},
-    {"force", impact, 0},
-    {"compression", impact, 0},
-    {"ball_position", impact, 0},
+    {"force", ball_kinds, 0},
+    {"compression", ball_kinds, 0},
+    {"ball_position", ball_kinds, 0},
     {"force_response", impact, 0},
     {"mode_response", impact, 0},
     {"modes_kept", impact, 0},
@@ -714,7 +714,7 @@ Study load_study(const fs::path& file) {
   check_grid_size(s, top);
   check_required(s, top, study.kind);
   if (has_bat(study.kind)) check_bat_scene(study, s, top);
-  if (study.kind == StudyKind::wall) check_wall_speeds(s);
+  if (study.kind == StudyKind::wall) check_wall_speeds(s), check_history_samples(s);
   study.outputs = read_outputs(top, doc, s, study.kind);
 
   GridPoint base;

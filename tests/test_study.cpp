@@ -361,7 +361,7 @@ TEST_CASE("each kind has its outputs and its defaults", "[study]") {
   CHECK(default_outputs(StudyKind::impact) == V{"vf", "e_eff", "contact_time", "collision_time", "status"});
   CHECK(output_names(StudyKind::wall) == V{"vf", "e_eff", "contact_time", "collision_time", "u_max", "peak_force",
                                            "impulse", "energy_initial", "energy_ball", "energy_ball_dissipated",
-                                           "energy_residual", "status"});
+                                           "energy_residual", "force", "compression", "ball_position", "status"});
   CHECK(default_outputs(StudyKind::wall) == V{"vf", "e_eff", "contact_time", "collision_time", "status"});
   CHECK(output_names(StudyKind::toy) == V{"vf", "vf_van_zandt", "energy_initial", "energy_ball",
                                           "energy_bat_translation", "energy_vibration", "energy_residual", "status"});

@@ -18,7 +18,7 @@
 //            (default: the integrator's own), tolerance (dopri), window, preset ("n2000": RK4 at
 //            5 us with 18 modes wherever the study does not say otherwise; never an axis)
 //            wall: ball_speed (> 0), e0, ball_mass, ball_radius, k1, a, integrator, dt, tolerance,
-//            window, preset
+//            window, preset, history_window, history_step
 //            toy: omega_tau (> 0)
 //   [axes]   any [scene] key of the kind but integrator, preset and the histories' keys, as a
 //            list of values (bat: paths; theory: names; pivot: booleans; modes: counts, "all" or
@@ -32,8 +32,9 @@
 //            default default_outputs(kind). impact: vf, e_eff, contact_time, collision_time and
 //            status by default; vf_rigid and vf_van_zandt (the rigid bat's and Van Zandt's exit
 //            speeds at the same point) are computed only when named; wall: vf, e_eff (the
-//            restitution), contact_time, collision_time, u_max, peak_force, impulse, status and
-//            the energies of the ball (initial, ball, ball_dissipated, residual); toy: vf
+//            restitution), contact_time, collision_time, u_max, peak_force, impulse, status,
+//            the energies of the ball (initial, ball, ball_dissipated, residual) and the
+//            histories force, compression and ball_position; toy: vf
 //            (v_f / v_i), vf_van_zandt, status and the energies initial, ball,
 //            bat_translation, vibration, residual (model units, m = k = v_i = 1).
 //            "mode_energy" adds a mode dimension of length base.vibrational_modes, so it needs
