@@ -240,7 +240,7 @@ TEST_CASE("An RK4 step unstable for the fastest kept mode is refused", "[impact]
   CHECK(r.status == CollisionStatus::refused_step);
   CHECK_THAT(r.message, Catch::Contains("omega*dt must stay below 2.8"));
   const ProgramRun run = run_program("impact --bat " + source_path("studies/bats/r161.toml") +
-                                     " --z 0.7 --ball-speed 40 --center 0.09 --omega 51 --modes all");
+                                     " --z 0.7 --ball-speed 40 --center 0.09 --omega 51 --n2000 --modes all");
   CHECK(run.exit_code == 2);
   CHECK_THAT(run.output, Catch::Contains("unstable"));
 }

@@ -22,7 +22,7 @@ TEST_CASE("modes rejects bad options with a non-zero exit", "[program]") {
 }
 
 TEST_CASE("wall and toy commands print JSON with their results", "[program]") {
-  const ProgramRun wall = run_program("wall --speed 67 --e0 0.5 --json");
+  const ProgramRun wall = run_program("wall --speed 67 --e0 0.5 --n2000 --json");
   REQUIRE(wall.exit_code == 0);
   CHECK_THAT(wall.output, Catch::Contains("\"restitution\": 0.49999"));
   const ProgramRun toy = run_program("toy --omega-tau 20 --json");

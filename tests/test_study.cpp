@@ -176,7 +176,7 @@ TEST_CASE("defaults fill what the study leaves out", "[study]") {
   CHECK(s.swing.center == 0.09);
   CHECK(s.swing.omega == 0);
   CHECK_FALSE(s.pivoted);
-  CHECK(s.vibrational_modes == 18);
+  CHECK(s.vibrational_modes == auto_modes);  // the library's and the impact command's default too
   CHECK(s.integrator.dt == default_step(Method::exact));
   CHECK(s.integrator.window == 5e-3);
   const GridPoint p = grid_point(study, 0);
@@ -328,7 +328,8 @@ TEST_CASE("tasks run model-major: each (bat, slices, theory) in one contiguous r
 
 TEST_CASE("outputs: any ImpactResult field, mode_energy with a fixed mode count", "[study]") {
   const StudyDir dir;
-  const Study study = dir.load(with(good_study, "[\"vf\", \"e_eff\"]", "[\"status\", \"mode_energy\", \"u_max\"]"));
+  const Study study = dir.load(
+      with(with(good_study, "e0 = 0.5", "e0 = 0.5\nmodes = 18"), "[\"vf\", \"e_eff\"]", "[\"status\", \"mode_energy\", \"u_max\"]"));
   CHECK(study.outputs == std::vector<std::string>{"status", "mode_energy", "u_max"});
   CHECK(study.base.vibrational_modes == 18);
   // The comparisons cost time: computed only for a study that names them.
@@ -341,7 +342,7 @@ TEST_CASE("outputs: any ImpactResult field, mode_energy with a fixed mode count"
   std::string all;
   for (const std::string& name : output_names()) all += (all.empty() ? "\"" : ", \"") + name + "\"";
   // The histories at the probes need probes.
-  const std::string probed = with(good_study, "e0 = 0.5\n", "e0 = 0.5\nprobes = [0.13]\n");
+  const std::string probed = with(good_study, "e0 = 0.5\n", "e0 = 0.5\nmodes = 18\nprobes = [0.13]\n");
   const Study every = dir.load(with(probed, "[\"vf\", \"e_eff\"]", "[" + all + "]"));
   CHECK(every.outputs == output_names());
   CHECK(every.base.histories);
@@ -360,7 +361,7 @@ TEST_CASE("each kind has its outputs and its defaults", "[study]") {
   CHECK(default_outputs(StudyKind::impact) == V{"vf", "e_eff", "contact_time", "collision_time", "status"});
   CHECK(output_names(StudyKind::wall) == V{"vf", "e_eff", "contact_time", "collision_time", "u_max", "peak_force",
                                            "impulse", "energy_initial", "energy_ball", "energy_ball_dissipated",
-                                           "energy_residual", "status"});
+                                           "energy_residual", "force", "compression", "ball_position", "status"});
   CHECK(default_outputs(StudyKind::wall) == V{"vf", "e_eff", "contact_time", "collision_time", "status"});
   CHECK(output_names(StudyKind::toy) == V{"vf", "vf_van_zandt", "energy_initial", "energy_ball",
                                           "energy_bat_translation", "energy_vibration", "energy_residual", "status"});
@@ -611,7 +612,7 @@ TEST_CASE("bad studies: values", "[study]") {
                   {"key 'axes.z' = 0.845", "every bat", "R161", "0.84"});
   }
   SECTION("more modes than the slices give") {
-    require_error("e0 = 0.5", "slices = 4", {"key 'scene.modes' = 18 (the default)", "6 vibrational modes"});
+    require_error("e0 = 0.5", "slices = 4\npreset = \"n2000\"", {"key 'scene.modes' = 18 (the n2000 preset)", "6 vibrational modes"});
     require_error("e0 = 0.5", "slices = 4\nmodes = 7", {"key 'scene.modes' = 7", "R161", "6 vibrational modes"});
   }
   SECTION("required keys") {

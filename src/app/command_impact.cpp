@@ -11,6 +11,7 @@
 #include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/impact/impact.hpp"
 #include "sweetspot/input_error.hpp"
+#include "sweetspot/impact/n2000_settings.hpp"
 
 namespace sweetspot::app {
 
@@ -21,7 +22,7 @@ struct ImpactOptions {
   std::string theory = "timoshenko";
   int slices = 0;
   std::optional<double> cm_speed, center;
-  std::string modes = "18";
+  std::string modes = "auto";
   bool json = false;
   ImpactScene scene;
 };
@@ -119,7 +120,8 @@ void add_ball_options(CLI::App& cmd, Ball& ball) {
   cmd.add_option("--a", ball.a, "ball compression exponent a")->capture_default_str();
 }
 
-void resolve_default_step(const CLI::App& cmd, CollisionOptions& options) {
+void resolve_integrator(const CLI::App& cmd, CollisionOptions& options) {
+  if (cmd.count("--n2000") && cmd.count("--integrator") == 0) options = with_n2000_settings(options);
   if (cmd.count("--dt") == 0) options.dt = default_step(options.method);
 }
 
@@ -127,9 +129,12 @@ void add_integrator_options(CLI::App& cmd, CollisionOptions& options) {
   cmd.add_option("--integrator", options.method, "rk4 (N2000), exact (modal, any step) or dopri (adaptive)")
       ->transform(CLI::CheckedTransformer(
           std::map<std::string, Method>{{"rk4", Method::rk4}, {"exact", Method::exact}, {"dopri", Method::dopri}}))
-      ->default_str("rk4");
+      ->default_str("exact");
   cmd.add_option("--dt", options.dt, "step (rk4, exact) or first step (dopri), s [default: 5e-6 for rk4, "
                                      "1e-5 for exact, 1e-6 for dopri]");
+  cmd.add_flag("--n2000")->description(
+      "N2000's settings: RK4 at 5 us (and 18 vibrational modes for impact) unless --integrator, --dt or "
+      "--modes say otherwise");
   cmd.add_option("--tolerance", options.tolerance, "relative local error per step (dopri)")->capture_default_str();
   cmd.add_option("--window", options.window, "free flight followed after a separation, s")->capture_default_str();
 }
@@ -150,7 +155,8 @@ void add_impact_command(CLI::App& app) {
   center->excludes(cm);
   cmd->add_option("--omega", o->scene.swing.omega, "bat angular velocity, rad/s")->capture_default_str();
   cmd->add_flag("--pivot", o->scene.pivoted, "hold the bat at the rotation centre (N2000 Fig. 16)");
-  cmd->add_option("--modes", o->modes, "vibrational modes kept: a number, 'all' or 'auto'")->capture_default_str();
+  cmd->add_option("--modes", o->modes, "vibrational modes kept: a number, 'all' or 'auto' [default: auto; 18 with "
+                                       "--n2000]");
   cmd->add_option("--mode-tolerance", o->scene.mode_tolerance,
                   "with --modes auto: relative vf error allowed the dropped modes")
       ->capture_default_str();
@@ -160,7 +166,8 @@ void add_impact_command(CLI::App& app) {
   add_integrator_options(*cmd, o->scene.integrator);
   cmd->add_flag("--json", o->json, "print one JSON object");
   cmd->callback([o, cmd] {
-    resolve_default_step(*cmd, o->scene.integrator);
+    resolve_integrator(*cmd, o->scene.integrator);
+    if (cmd->count("--n2000") && cmd->count("--modes") == 0) o->modes = std::to_string(n2000_modes);
     if (!o->cm_speed && !o->center) throw InputError("impact: give the swing as --cm-speed or as --center");
     run_impact(*o);
   });

@@ -54,7 +54,7 @@ void add_wall_command(CLI::App& app) {
   add_integrator_options(*cmd, o->integrator);
   cmd->add_flag("--json", o->json, "print one JSON object");
   cmd->callback([o, cmd] {
-    resolve_default_step(*cmd, o->integrator);
+    resolve_integrator(*cmd, o->integrator);
     run_wall(*o);
   });
 }

@@ -17,7 +17,8 @@ void add_convergence_command(CLI::App& app);
 // Options shared by the commands that run a collision.
 void add_ball_options(CLI::App& cmd, Ball& ball);
 void add_integrator_options(CLI::App& cmd, CollisionOptions& options);
-// The chosen integrator's own step unless --dt was given.
-void resolve_default_step(const CLI::App& cmd, CollisionOptions& options);
+// N2000's integration (RK4) under --n2000 unless --integrator was given, then the chosen
+// integrator's own step unless --dt was given.
+void resolve_integrator(const CLI::App& cmd, CollisionOptions& options);
 
 }  // namespace sweetspot::app

@@ -110,6 +110,7 @@ class CollisionRun {
       result_.message = why;
       return result_;
     }
+    if (never_approach()) return no_contact(state_.compression_rate(y_));
     while (contact() && free_flight()) {
     }
     finish();
@@ -120,6 +121,25 @@ class CollisionRun {
   Stepper make_stepper(double ball_speed) {
     if constexpr (std::is_same_v<Stepper, detail::DopriStepper>) return Stepper(state_, options_, ball_speed);
     else return Stepper(state_, options_);
+  }
+
+  // Ball and body move apart (or together at the same speed) at first touch: they never meet.
+  // The struck point's speed is a sum over the modes, exact only to round-off: a closing speed
+  // within that of zero is zero.
+  bool never_approach() const {
+    const double bat = body_.psi.dot(body_.velocity0), ball = -y_(1);
+    return !(bat + ball > 1e-12 * (std::abs(bat) + std::abs(ball)));
+  }
+
+  Collision no_contact(double closing) {
+    const double nan = std::nan("");
+    result_.status = CollisionStatus::no_contact;
+    char text[120];
+    std::snprintf(text, sizeof text, "ball and bat never approach: closing speed %g m/s at the impact point", closing);
+    result_.message = text;
+    result_.ball_velocity = result_.contact_time = result_.collision_time = nan;
+    result_.u_max = result_.peak_force = result_.impulse = result_.dissipated = nan;
+    return result_;
   }
 
   bool fail(CollisionStatus status, std::string message) {
@@ -289,6 +309,7 @@ const char* to_string(CollisionStatus status) {
     case CollisionStatus::non_finite: return "non_finite";
     case CollisionStatus::refused_step: return "refused_step";
     case CollisionStatus::unbalanced: return "unbalanced";
+    case CollisionStatus::no_contact: return "no_contact";
   }
   return "unknown";
 }

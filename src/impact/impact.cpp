@@ -1,7 +1,10 @@
 #include "sweetspot/impact/impact.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <utility>
 
 #include "sweetspot/impact/formulas.hpp"
 #include "sweetspot/impact/step_selection.hpp"
@@ -71,6 +74,51 @@ void close_balance(ImpactResult& r) {
   r.message = text;
 }
 
+namespace {
+
+bool finite(const std::vector<double>& values) {
+  return std::ranges::all_of(values, [](double x) { return std::isfinite(x); });
+}
+
+// The first value of an ok result that is NaN or infinite, or nullptr.
+const char* first_non_finite(const ImpactResult& r, const AskedValues& asked) {
+  const ImpactEnergy& e = r.energy;
+  const std::pair<const char*, double> scalars[] = {
+      {"vf", r.vf},
+      {"e_eff", r.e_eff},
+      {"contact_time", r.contact_time},
+      {"collision_time", asked.collision_time ? r.collision_time : 0.0},
+      {"u_max", r.u_max},
+      {"peak_force", r.peak_force},
+      {"impulse", r.impulse},
+      {"vf_rigid", asked.vf_rigid ? r.vf_rigid : 0.0},
+      {"vf_van_zandt", asked.vf_van_zandt ? r.vf_van_zandt : 0.0},
+      {"energy", e.initial + e.ball + e.bat_translation + e.bat_rotation + e.vibration + e.ball_dissipated + e.residual},
+  };
+  for (const auto& [name, value] : scalars)
+    if (!std::isfinite(value)) return name;
+  if (!finite(r.mode_energy)) return "mode_energy";
+  if (!finite(r.force_response)) return "force_response";
+  if (!finite(r.mode_response)) return "mode_response";
+  const Histories& h = r.histories;
+  if (!finite(h.force) || !finite(h.compression) || !finite(h.ball_position)) return "the force history";
+  for (const ProbeHistory& p : h.probes)
+    for (const auto* v : {&p.displacement, &p.velocity, &p.acceleration, &p.vibration_displacement,
+                          &p.vibration_velocity, &p.vibration_acceleration})
+      if (!finite(*v)) return "a probe's history";
+  return nullptr;
+}
+
+}  // namespace
+
+void require_finite(ImpactResult& r, const AskedValues& asked) {
+  if (r.status != CollisionStatus::ok) return;
+  if (const char* name = first_non_finite(r, asked)) {
+    r.status = CollisionStatus::non_finite;
+    r.message = std::string(name) + " is not finite";
+  }
+}
+
 ImpactResult collision_result(const Collision& c) {
   ImpactResult r;
   r.status = c.status;
@@ -107,8 +155,13 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& scene) 
   r.z = g.z;
   r.modes_kept = g.modes_kept;
   r.modes_error = g.modes_error;
-  if (scene.rigid_comparison) r.vf_rigid = rigid_exit_speed(scene.ball.e0, g.recoil, scene.ball_speed, g.bat_speed);
   if (c.status == CollisionStatus::refused_step) return r;
+  if (c.status == CollisionStatus::no_contact) {  // nothing happened: no result
+    r.e_eff = std::nan("");
+    r.energy = {std::nan(""), std::nan(""), std::nan(""), std::nan(""), std::nan(""), std::nan(""), std::nan("")};
+    return r;
+  }
+  if (scene.rigid_comparison) r.vf_rigid = rigid_exit_speed(scene.ball.e0, g.recoil, scene.ball_speed, g.bat_speed);
   r.e_eff = effective_cor(r.vf, g.recoil, scene.ball_speed, g.bat_speed);
   // Only a whole force profile can drive the modes (the toy model does the same).
   if (scene.van_zandt_comparison && c.status == CollisionStatus::ok)
@@ -120,6 +173,7 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& scene) 
   e.ball = 0.5 * scene.ball.mass * r.vf * r.vf;
   bat_energies(scene, g, basis, c, r);
   close_balance(r);
+  require_finite(r, {options.find_collision_time, scene.rigid_comparison, scene.van_zandt_comparison});
   return r;
 }
 

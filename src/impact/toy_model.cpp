@@ -22,6 +22,7 @@ ImpactResult toy_model(double omega_tau) {
 
   const Ball ball{ball_mass, 1.0, spring, 1.0, 1.0};  // linear (a = 1) and lossless (e0 = 1)
   CollisionOptions options;
+  options.method = Method::rk4;  // its step is fixed in tau (below)
   options.dt = tau / steps_per_tau;
   options.window = 4 * tau;
   options.max_contact_time = 100 * tau;
@@ -45,6 +46,7 @@ ImpactResult toy_model(double omega_tau) {
   if (c.status != CollisionStatus::ok) return r;  // no whole force profile to drive the modes with
   const double recoil = ball_mass / total;         // the rigid bat: all of it moves as one
   r.vf_van_zandt = van_zandt_exit_speed(bat, ball, recoil, speed, 0.0, c.force);
+  require_finite(r, {true, false, true});
   return r;
 }
 

@@ -16,6 +16,7 @@
 
 #include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/input_error.hpp"
+#include "sweetspot/impact/n2000_settings.hpp"
 #include "toml_values.hpp"
 
 namespace sweetspot {
@@ -71,7 +72,7 @@ constexpr KindSet every_kind = impact | wall | toy;
 std::string kind_text(StudyKind kind) { return quote(to_string(kind)); }
 
 // `numbers`: a list of numbers in [scene] (probes), never an axis; `set` takes each in turn.
-enum class Type { number, integer, boolean, bat, theory, modes, integrator, numbers };
+enum class Type { number, integer, boolean, bat, theory, modes, integrator, preset, numbers };
 
 // One key of [scene]: how its value is read, the rule validate() in scene.cpp applies to it, how
 // it sets a grid point, and the kinds of study it belongs to and must be given in. Every value
@@ -135,6 +136,9 @@ constexpr KeySpec keys[] = {
      [](GridPoint& p, double x) { p.scene.mode_tolerance = x; }},
     {"accuracy", Type::number, "a finite number > 0 (relative vf error the integration may add)", positive,
      [](GridPoint& p, double x) { p.scene.accuracy = x; }},
+    // N2000's settings (RK4 at 5 us, 18 modes) under the keys the study leaves out: load_study.
+    {"preset", Type::preset, "\"n2000\" (RK4 at 5 us with 18 vibrational modes)", any, [](GridPoint&, double) {},
+     ball_kinds, 0, false},
     {"integrator", Type::integrator, "\"exact\", \"rk4\" or \"dopri\"", any,
      [](GridPoint& p, double x) { p.scene.integrator.method = static_cast<Method>(x); }, ball_kinds, 0, false},
     {"tolerance", Type::number, "a finite number > 0 (relative error per step, dopri)", positive,
@@ -147,9 +151,9 @@ constexpr KeySpec keys[] = {
     {"probes", Type::numbers, "a list of points on the bat, each a finite number >= 0 (m from the knob)", on_bat,
      [](GridPoint& p, double x) { p.scene.history.probes.push_back(x); }, impact, 0, false},
     {"history_window", Type::number, "a finite number > 0 (s of history from first touch)", positive,
-     [](GridPoint& p, double x) { p.scene.history.window = x; }, impact, 0, false},
+     [](GridPoint& p, double x) { p.scene.history.window = x; }, ball_kinds, 0, false},
     {"history_step", Type::number, "a finite number > 0 (s between history samples)", positive,
-     [](GridPoint& p, double x) { p.scene.history.step = x; }, impact, 0, false},
+     [](GridPoint& p, double x) { p.scene.history.step = x; }, ball_kinds, 0, false},
     {"omega_tau", Type::number, "a finite number > 0 (omega tau of the toy model)", positive,
      [](GridPoint& p, double x) { p.omega_tau = x; }, toy, toy},
 };
@@ -199,9 +203,9 @@ constexpr OutputSpec output_specs[] = {
     {"vibration_displacement", impact, 0},
     {"vibration_velocity", impact, 0},
     {"vibration_acceleration", impact, 0},
-    {"force", impact, 0},
-    {"compression", impact, 0},
-    {"ball_position", impact, 0},
+    {"force", ball_kinds, 0},
+    {"compression", ball_kinds, 0},
+    {"ball_position", ball_kinds, 0},
     {"force_response", impact, 0},
     {"mode_response", impact, 0},
     {"modes_kept", impact, 0},
@@ -267,6 +271,8 @@ Value read_value(const Where& at, const KeySpec& spec, const toml::node& node) {
     return {auto_modes, ""};
   else if ((spec.type == Type::bat || spec.type == Type::theory || spec.type == Type::integrator) && node.is_string())
     v.label = node.as_string()->get();
+  else if (spec.type == Type::preset && node.value<std::string_view>() == "n2000")
+    return {0, "n2000"};
   else
     bad();
   if (spec.type == Type::bat && v.label.empty()) bad();
@@ -466,6 +472,9 @@ struct Settings {
   }
 };
 
+// The mode count a study keeps unless it says: "auto", or N2000's 18 under preset = "n2000".
+double default_mode_count(const Settings& s) { return s["preset"] ? n2000_modes : default_modes; }
+
 void check_required(const Settings& s, const Where& top, StudyKind kind) {
   for (const KeySpec& key : keys)
     if ((key.required & bit(kind)) && !s[key.name])
@@ -540,10 +549,10 @@ void check_mode_counts(const Settings& s, const Where& top, const std::vector<Ba
   for (std::size_t b = 0; b < bats.size(); ++b)
     for (const double slices : s.values("slices", bats[b].slices()))
       for (const double theory : s.values("theory", 0))
-        for (const double m : s.values("modes", default_modes)) {
+        for (const double m : s.values("modes", default_mode_count(s))) {
           const int available = vibrational_modes(static_cast<int>(slices), static_cast<BeamTheory>(theory));
           if (m == all_modes || m == auto_modes || m <= available) continue;
-          reject(where, format_number(m) + (modes ? "" : " (the default)"),
+          reject(where, format_number(m) + (modes ? "" : s["preset"] ? " (the n2000 preset)" : " (the default)"),
                  bat_text(bats, bat, b) + " in " + format_number(slices) + " slices has " + std::to_string(available) +
                      " vibrational modes (" + to_string(static_cast<BeamTheory>(theory)) +
                      "); expected at most that, or \"all\"");
@@ -634,7 +643,7 @@ std::vector<std::string> read_outputs(const Where& top, const toml::table& doc, 
   if (!node.is_array() || node.as_array()->empty())
     reject(at, describe(node), "expected a non-empty list of output names");
   // One mode dimension for the whole dataset: its length must not vary from point to point.
-  const bool fixed_modes = !find(s.axes, "modes") && s.values("modes", default_modes)[0] >= 1;
+  const bool fixed_modes = !find(s.axes, "modes") && s.values("modes", default_mode_count(s))[0] >= 1;
   std::vector<std::string> outputs;
   for (std::size_t i = 0; i < node.as_array()->size(); ++i) {
     const toml::node& item = (*node.as_array())[i];
@@ -646,7 +655,8 @@ std::vector<std::string> read_outputs(const Where& top, const toml::table& doc, 
       reject(at.item(i, item), describe(item), "needs probes = [z, ...] in [scene] (m from the knob)");
     if ((name == "mode_energy" || name == "mode_response") && !fixed_modes)
       reject(at.item(i, item), describe(item),
-             "needs a fixed number of modes >= 1 (modes a number in [scene], not \"all\" or an axis)");
+             "needs a fixed number of modes >= 1 (modes a number in [scene], not \"all\", \"auto\" (the "
+             "default) or an axis)");
     outputs.push_back(name);
   }
   return outputs;
@@ -719,13 +729,14 @@ Study load_study(const fs::path& file) {
   check_grid_size(s, top);
   check_required(s, top, study.kind);
   if (has_bat(study.kind)) check_bat_scene(study, s, top);
-  if (study.kind == StudyKind::wall) check_wall_speeds(s);
+  if (study.kind == StudyKind::wall) check_wall_speeds(s), check_history_samples(s);
   study.outputs = read_outputs(top, doc, s, study.kind);
 
   GridPoint base;
-  // Studies integrate by exact modal stepping unless they say otherwise: the fastest method for
-  // a given accuracy (README, "Numerics"); each method has its own default step.
-  base.scene.integrator.method = Method::exact;
+  // The library's defaults (exact modal stepping, modes = auto: README, "Numerics"), or N2000's
+  // settings under preset = "n2000"; what the study gives overrides either. Each method has its
+  // own default step.
+  if (s["preset"]) base.scene = with_n2000_settings(base.scene);
   for (const Setting& setting : s.scene)
     for (const double x : setting.values) setting.spec->set(base, x);  // one value, or each of a list
   if (!s["dt"]) base.scene.integrator.dt = default_step(base.scene.integrator.method);

@@ -10,7 +10,8 @@ namespace sweetspot {
 ImpactResult simulate_point(const GridPoint& point, const ModalBasis* basis) {
   switch (point.kind) {
     case StudyKind::wall:
-      return hit_wall(point.scene.ball, point.scene.ball_speed, point.scene.integrator);
+      return hit_wall(point.scene.ball, point.scene.ball_speed, point.scene.integrator,
+                      point.scene.histories ? &point.scene.history : nullptr);
     case StudyKind::toy:
       return toy_model(point.omega_tau);
     case StudyKind::impact:

@@ -4,13 +4,14 @@
 
 #include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/impact/impact.hpp"
+#include "sweetspot/impact/n2000_settings.hpp"
 #include "timing.hpp"
 
 int main(int argc, char** argv) {
   using namespace sweetspot;
   const ModalBasis basis =
       compute_modes(load_bat(argc > 1 ? argv[1] : SWEETSPOT_R161), BeamTheory::timoshenko);
-  ImpactScene scene;
+  ImpactScene scene = with_n2000_settings(ImpactScene{});
   scene.z = 0.705;
   scene.ball_speed = 40;
   scene.swing = {51, true, 0, 0.09};

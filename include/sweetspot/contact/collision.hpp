@@ -33,12 +33,16 @@ const char* to_string(Method method);
 // Throws InputError for anything but "rk4", "exact" or "dopri".
 Method parse_method(const std::string& text);
 // The step each method takes unless told otherwise: N2000's 5 us for RK4; 10 us for exact
-// stepping (vf to about 2e-7 on the high-impact scene); the first trial step for Dormand-Prince.
+// stepping (vf to about 2e-8 over the high-impact scenes, README "Numerics"); the first trial
+// step for Dormand-Prince.
 double default_step(Method method);
 
+// The defaults are sweetspot's recommended settings, the same for the library, the program and
+// studies: exact modal stepping at its default step. N2000's (RK4 at 5 us) are one call away,
+// with_n2000_settings() (n2000_settings.hpp).
 struct CollisionOptions {
-  Method method = Method::rk4;
-  double dt = 5e-6;                // s: the step (rk4, exact) or the first step (dopri)
+  Method method = Method::exact;
+  double dt = 1e-5;                // s: the step (rk4, exact) or the first step (dopri)
   double tolerance = 1e-9;         // relative local error per step (dopri)
   double window = 5e-3;            // s of free flight followed after each separation
   double max_contact_time = 0.05;  // s; a contact lasting longer is reported as no separation
@@ -50,8 +54,10 @@ struct CollisionOptions {
   double contact_phase_limit = 2;
 };
 
-// unbalanced: integrated, but the energy balance is off by more than 1 % (impact.hpp)
-enum class CollisionStatus { ok, no_separation, non_finite, refused_step, unbalanced };
+// unbalanced: integrated, but the energy balance is off by more than 1 % (impact.hpp).
+// no_contact: ball and struck point never approach (closing speed <= 0 at first touch): there is
+// no collision, and every result is NaN. A ball at rest struck by a moving bat (a tee) collides.
+enum class CollisionStatus { ok, no_separation, non_finite, refused_step, unbalanced, no_contact };
 const char* to_string(CollisionStatus status);
 
 struct ForceSample {

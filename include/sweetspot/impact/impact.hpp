@@ -60,6 +60,17 @@ struct ImpactResult {
 constexpr double balance_limit = 1e-2;
 void close_balance(ImpactResult& result);
 
+// The values a result gives only when asked, NaN otherwise (a study may not ask).
+struct AskedValues {
+  bool collision_time = true;
+  bool vf_rigid = false;
+  bool vf_van_zandt = false;
+};
+
+// No NaN or infinite output comes with status ok: an ok result with one (a degenerate pulse, an
+// overflow) becomes non_finite, its message naming the value. Values not asked are skipped.
+void require_finite(ImpactResult& result, const AskedValues& asked);
+
 // The omega tau at which a study gives g(omega tau): 0, 0.1, ..., 20 (tau = collision_time),
 // far enough for g to fall to nothing (N2000 Fig. 4).
 std::vector<double> force_response_grid();
@@ -67,7 +78,7 @@ std::vector<double> force_response_grid();
 // What every collision gives whatever was struck: status, message, vf, the times, u_max,
 // peak_force, impulse, contacts and energy.ball_dissipated. The caller adds what depends on the
 // struck body: e_eff and the rest of the energy balance. A refused step gives status and message
-// only, since nothing was integrated.
+// only, since nothing was integrated; no contact (nothing to integrate) gives NaN for all of them.
 ImpactResult collision_result(const Collision& c);
 
 // Validates the scene (InputError for bad input), then runs the collision.

@@ -43,7 +43,7 @@ struct ImpactScene {
   double ball_speed = 40;     // m/s toward the bat
   Swing swing;
   bool pivoted = false;       // held at swing.center by a constraint force (N2000 Fig. 16)
-  int vibrational_modes = 18; // kept vibrational modes, or all_modes, or auto_modes
+  int vibrational_modes = auto_modes; // kept vibrational modes, or all_modes, or auto_modes (the default)
   double mode_tolerance = 1e-5; // auto_modes: relative exit-speed error allowed the dropped modes
   // Relative exit-speed error the integration may add; > 0 chooses the step (or tolerance) from
   // the scene's pulse (step_selection.hpp) instead of integrator.dt. 0: integrator as given.

@@ -2,25 +2,34 @@
 // The integration settings that meet a stated accuracy (relative exit-speed error), from the
 // pulse the scene makes: each method's error was measured against its step relative to the
 // pulse duration T (sweetspot convergence, README "Numerics") and is modelled as
-//   exact: 7 (dt/T)^3.8 on the high-impact scene, up to 4x that at 150 m/s;
+//   exact: a baseball-like ball (modelled_step: e0 >= 0.5, a in [1.5, 2.2]) within 10 (dt/T)^3.8
+//          (e0 >= 0.8: 12 (dt/T)^3.8, and 0.17 (dt/T)^(a+1) at fine steps)
+//          on a single contact, wherever on the bat and at 1-150 m/s; other balls 7 (dt/T)^3.8
+//          on the high-impact scene, up to 4x that at 150 m/s;
 //   rk4: 555 (dt/T)^4;   dopri: up to about 20x its tolerance;
-// and the settings chosen keep within half the accuracy asked for, for margin. The fixed-step
-// methods also keep omega_c h (the contact's own ringing) below a bound that tightens with the
-// accuracy: a nearly dead ball's force falls within a few 1/omega_c, far inside T.
-// The model is calibrated on single contacts; where the ball is caught again (handle, 150 m/s,
-// e0 <= 0.35) a step it chooses can err several times more, or even miss a contact. So
-// collide_within() checks each result against a run at twice the step.
+// For a modelled ball the step is taken as the model says, and one run is made: its cost is
+// within 2x the cheapest fixed step that meets the accuracy (tests/benchmarks/bench_accuracy).
+// Elsewhere the settings keep within half the accuracy asked for, for margin, and the
+// fixed-step methods also keep omega_c h (the contact's own ringing) below a bound that
+// tightens with the accuracy: a nearly dead ball's force falls within a few 1/omega_c, far
+// inside T. Those models are calibrated on single contacts; where the ball is caught again
+// (handle, 150 m/s, e0 <= 0.35) a step they choose can err several times more, or even miss a
+// contact. So collide_within() checks each such result against a run at twice the step.
 #include "sweetspot/contact/ball.hpp"
 #include "sweetspot/contact/collision.hpp"
 
 namespace sweetspot {
+
+// Whether the method's step for an accuracy comes from its error model alone (no check run).
+bool modelled_step(Method method, const Ball& ball);
 
 // Sets dt and contact_phase_limit (exact, rk4: dt never above RK4's stability limit for
 // omega_max) or the tolerance (dopri).
 CollisionOptions options_for_accuracy(CollisionOptions options, double accuracy, const Ball& ball,
                                       double approach_speed, double recoil, double omega_max);
 
-// The collision at options.dt (exact, rk4) with its exit speed's error checked: a run at twice
+// The collision at options.dt; for a modelled step (above) that is all, unless the ball is
+// caught again. Otherwise (exact, rk4) with its exit speed's error checked: a run at twice
 // the step costs half as much, and their difference over 2^p - 1 (p = a + 1 at most 4, the order
 // the ball's t^a onset leaves at fine steps) bounds the finer run's error. While that exceeds
 // `accuracy` (relative to |v_f|, or to 5 % of the ball's speed when v_f is near 0), the step

@@ -12,14 +12,17 @@
 //   [scene]  impact: bat (path relative to the study file), theory ("timoshenko" |
 //              "euler-bernoulli"), slices (4..4096; default the profile's own), z, ball_speed, e0,
 //              ball_mass, ball_radius, k1, a, center | cm_speed (exactly one), omega, pivot
-//              (bool), modes (count or "all"), probes (a list of points on the bat, m from the
-//              knob), history_window (s, default 3e-3), history_step (s, default 5e-6; at most
-//              1e5 samples), integrator ("exact" (default), "rk4", "dopri"), dt (default: the integrator's
-//            own), tolerance (dopri), window
-//            wall: ball_speed (> 0), e0, ball_mass, ball_radius, k1, a, integrator, dt, tolerance, window
+//              (bool), modes (count, "all" or "auto" (default)), probes (a list of points on the
+//              bat, m from the knob), history_window (s, default 3e-3), history_step (s, default
+//              5e-6; at most 1e5 samples), integrator ("exact" (default), "rk4", "dopri"), dt
+//            (default: the integrator's own), tolerance (dopri), window, preset ("n2000": RK4 at
+//            5 us with 18 modes wherever the study does not say otherwise; never an axis)
+//            wall: ball_speed (> 0), e0, ball_mass, ball_radius, k1, a, integrator, dt, tolerance,
+//            window, preset, history_window, history_step
 //            toy: omega_tau (> 0)
-//   [axes]   any [scene] key of the kind but integrator, as a list of values (bat: paths; theory:
-//            names; pivot: booleans; modes: counts or "all"), or for numbers as a range table
+//   [axes]   any [scene] key of the kind but integrator, preset and the histories' keys, as a
+//            list of values (bat: paths; theory: names; pivot: booleans; modes: counts, "all" or
+//            "auto"), or for numbers as a range table
 //            { start, stop, step } (stop included when it lands within 1e-9 step) or
 //            { start, stop, count } (count points, both ends included), the latter with
 //            spacing = "log" for points spaced evenly in the logarithm (start, stop > 0). An axis
@@ -29,13 +32,14 @@
 //            default default_outputs(kind). impact: vf, e_eff, contact_time, collision_time and
 //            status by default; vf_rigid and vf_van_zandt (the rigid bat's and Van Zandt's exit
 //            speeds at the same point) are computed only when named; wall: vf, e_eff (the
-//            restitution), contact_time, collision_time, u_max, peak_force, impulse, status and
-//            the energies of the ball (initial, ball, ball_dissipated, residual); toy: vf
+//            restitution), contact_time, collision_time, u_max, peak_force, impulse, status,
+//            the energies of the ball (initial, ball, ball_dissipated, residual) and the
+//            histories force, compression and ball_position; toy: vf
 //            (v_f / v_i), vf_van_zandt, status and the energies initial, ball,
 //            bat_translation, vibration, residual (model units, m = k = v_i = 1).
 //            "mode_energy" adds a mode dimension of length base.vibrational_modes, so it needs
-//            one mode count >= 1 for the whole study: modes a number in [scene] (or the default
-//            18), not "all" and not an axis; so does "mode_response" (R_n per kept vibrational
+//            one mode count >= 1 for the whole study: modes a number in [scene] (or 18 under
+//            preset = "n2000"), not "all", not "auto" and not an axis; so does "mode_response" (R_n per kept vibrational
 //            mode, physics.md §5). Time histories, only when asked (histories.hpp):
 //            displacement, velocity, acceleration and vibration_* of each of them at the points
 //            `probes` (needed; with more than one a `probe` dimension), and force, compression,
