@@ -37,6 +37,7 @@ void add_modes(SceneAttributes& out, int modes) {
 void add_scene_key(const Study& study, const std::string& key, SceneAttributes& out) {
   const ImpactScene& s = study.base;
   if (key == "bat" || key == "slices") return;  // the bat_* variables: files and slices per bat
+  if (key == "preset") return;  // what it sets is in the scene_* keys (integrator, dt, modes)
   if (key == "theory") return out.text(key, to_string(study.theory));
   if (key == "z") return out.number(key, s.z);
   if (key == "ball_speed") return out.number(key, s.ball_speed);
