@@ -139,8 +139,8 @@ Variable output_variable(const std::string& name, std::vector<std::string> dims,
     v.values = std::move(values);
   }
   if (name == "status") {
-    v.int_attributes.push_back({"flag_values", {0, 1, 2, 3, 4}});
-    v.text_attributes.push_back({"flag_meanings", "ok no_separation non_finite refused_step unbalanced"});
+    v.int_attributes.push_back({"flag_values", {0, 1, 2, 3, 4, 5}});
+    v.text_attributes.push_back({"flag_meanings", "ok no_separation non_finite refused_step unbalanced failed"});
   }
   return v;
 }

@@ -50,8 +50,17 @@ struct CollisionOptions {
   double contact_phase_limit = 2;
 };
 
+// A contact takes at most this many steps: a mistyped step (1e-12 for 1e-5) or tolerance would
+// otherwise fill the memory with force samples. Past it the point fails.
+inline constexpr double max_contact_steps = 1e7;
+// The finest step (s) a user may give the fixed-step methods: one that could take more than
+// max_contact_steps to cover max_contact_time is refused before any work.
+inline constexpr double finest_step = CollisionOptions{}.max_contact_time / max_contact_steps;
+
 // unbalanced: integrated, but the energy balance is off by more than 1 % (impact.hpp)
-enum class CollisionStatus { ok, no_separation, non_finite, refused_step, unbalanced };
+// failed: the point could not be computed (an error, or more than max_contact_steps in a
+// contact); the message says why. A study records it and goes on.
+enum class CollisionStatus { ok, no_separation, non_finite, refused_step, unbalanced, failed };
 const char* to_string(CollisionStatus status);
 
 struct ForceSample {
