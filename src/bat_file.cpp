@@ -38,11 +38,17 @@ std::string at_line(const fs::path& file, int line) {
 }
 
 // `context` says why the file was wanted, for files the user did not name directly.
+constexpr std::uintmax_t max_input_bytes = 16 << 20;
+
 std::string read_text(const fs::path& file, const std::string& context = "") {
   std::error_code ignored;  // a status we cannot get reads as "not found"
   const fs::file_status status = fs::status(file, ignored);
   if (!fs::exists(status)) fail(file.string(), "file not found" + context);
   if (!fs::is_regular_file(status)) fail(file.string(), "not a regular file" + context);
+  // A bat file or a profile of 4096 rows is far smaller: do not read a mistaken path's gigabytes.
+  if (const std::uintmax_t size = fs::file_size(file, ignored); !ignored && size > max_input_bytes)
+    fail(file.string(), "larger than 16 MB" + context + "; expected a bat file or a profile of at most " +
+                            std::to_string(max_slices) + " rows");
   std::ifstream in(file, std::ios::binary);
   if (!in) fail(file.string(), "cannot open the file for reading" + context);
   std::ostringstream text;
@@ -260,12 +266,18 @@ void read_profile(const fs::path& file, const std::string& context, Bat& bat) {
     if (content.empty() || content.starts_with('#')) continue;
     if (!columns)
       columns = read_header(file, number, content);
+    else if (rows.size() == static_cast<std::size_t>(max_slices))
+      fail(at_line(file, number), "row " + std::to_string(max_slices + 1) + ": a profile has at most " +
+                                      std::to_string(max_slices) + " rows (slices), as --slices");
     else
       rows.push_back(read_row(file, number, content, *columns));
   }
   if (!columns) fail(file.string(), "no header line; expected e.g. 'z_center_m,outer_diameter_m'");
   if (rows.empty()) fail(file.string(), "the profile has no rows; expected one row per slice");
   check_slicing(file, rows, bat.length);
+  if (rows.size() < static_cast<std::size_t>(min_slices))
+    fail(file.string(), "the profile has " + std::to_string(rows.size()) + " rows; expected one row per slice, at least " +
+                            std::to_string(min_slices) + " (as --slices)");
   for (const Row& row : rows) {
     bat.outer_diameter.push_back(row.outer);
     if (columns->inner >= 0) bat.inner_diameter.push_back(row.inner);
