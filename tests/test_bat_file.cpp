@@ -155,20 +155,21 @@ TEST_CASE("the shipped torpedo bat loads", "[bat_file]") {
 TEST_CASE("a minimal bat file: integer length, no slice column, BOM, CRLF, default kappa",
           "[bat_file]") {
   const BatDir dir(with(good_toml, "length = 0.3", "length = 1"),
-                   "\xEF\xBB\xBFz_center_m,outer_diameter_m\r\n0.25,0.03\r\n0.75,0.05\r\n");
+                   "\xEF\xBB\xBFz_center_m,outer_diameter_m\r\n0.125,0.03\r\n0.375,0.05\r\n0.625,0.05\r\n"
+                   "0.875,0.04\r\n");
   const sweetspot::Bat bat = load_bat(dir.toml);
   CHECK(bat.length == 1.0);
-  CHECK(bat.outer_diameter == std::vector{0.03, 0.05});
+  CHECK(bat.outer_diameter == std::vector{0.03, 0.05, 0.05, 0.04});
   CHECK(bat.material.shear_coefficient == 1);
 }
 
 TEST_CASE("a hollow bat with a shear coefficient", "[bat_file]") {
-  const BatDir dir(std::string(good_toml) + "shear_coefficient = 0.9\n",
+  const BatDir dir(with(good_toml, "length = 0.3", "length = 0.4") + "shear_coefficient = 0.9\n",
                    "slice, z_center_m, outer_diameter_m, inner_diameter_m\n"
-                   "1, 0.05, 0.03, 0\n2, 0.15, 0.05, 0.04\n3, 0.25, 0.06, 0.05\n");
+                   "1, 0.05, 0.03, 0\n2, 0.15, 0.05, 0.04\n3, 0.25, 0.06, 0.05\n4, 0.35, 0.06, 0.05\n");
   const sweetspot::Bat bat = load_bat(dir.toml);
   REQUIRE(bat.hollow());
-  CHECK(bat.inner_diameter == std::vector{0.0, 0.04, 0.05});
+  CHECK(bat.inner_diameter == std::vector{0.0, 0.04, 0.05, 0.05});
   CHECK(bat.material.shear_coefficient == 0.9);
 }
 

@@ -285,7 +285,7 @@ TEST_CASE("The impact command rejects bad input with exit status 2", "[impact][i
       {bat + " --z 0.7 --ball-speed 40 --e0 1.5" + swing, "e0 = 1.5"},
       {bat + " --z 0.7 --ball-speed 40 --a -1" + swing, "a = -1"},
       {bat + " --z 0.7 --ball-speed 40 --k1 0" + swing, "k1 = 0"},
-      {bat + " --z 0.7 --ball-speed 40 --dt 0" + swing, "dt = 0"},
+      {bat + " --z 0.7 --ball-speed 40 --dt 0" + swing, "--dt 0: expected a step >= 5e-09 s"},
       {bat + " --z 0.7 --ball-speed 40 --modes lots" + swing, "--modes lots"},
       {bat + " --z 0.7 --ball-speed 40 --omega 51", "--cm-speed or as --center"},
       {bat + " --z 0.7 --ball-speed 40 --frobnicate 3" + swing, "frobnicate"},

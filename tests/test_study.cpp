@@ -17,6 +17,7 @@
 #include "text_edit.hpp"
 #include "sweetspot/input_error.hpp"
 #include "sweetspot/study/study.hpp"
+#include "sweetspot/study/study_memory.hpp"
 
 namespace fs = std::filesystem;
 using namespace sweetspot;
@@ -205,7 +206,7 @@ omega = 40
 pivot = false
 modes = "all"
 integrator = "rk4"
-dt = 2e-6
+dt = 3e-7
 window = 1e-3
 [axes]
 z = [0.6, 0.8]
@@ -225,7 +226,7 @@ omega = [10, 20]
   CHECK_FALSE(s.swing.about_center);
   CHECK(s.swing.cm_speed == 20);
   CHECK(s.vibrational_modes == all_modes);
-  CHECK(s.integrator.dt == 2e-6);
+  CHECK(s.integrator.dt == 3e-7);  // RK4 with all 80 modes of 40 EB slices needs dt < 3.3e-7
   CHECK(s.integrator.window == 1e-3);
   const GridPoint p = grid_point(study, 3);
   CHECK(p.scene.z == 0.8);
@@ -597,7 +598,7 @@ TEST_CASE("bad studies: values", "[study]") {
   }
   SECTION("a") { require_error("e0 = 0.5", "a = 0", {"key 'scene.a' = 0", "> 0"}); }
   SECTION("k1") { require_error("e0 = 0.5", "k1 = -6.53e7", {"key 'scene.k1' = -65300000", "> 0"}); }
-  SECTION("dt") { require_error("e0 = 0.5", "dt = 0", {"key 'scene.dt' = 0", "> 0"}); }
+  SECTION("dt") { require_error("e0 = 0.5", "dt = 0", {"key 'scene.dt' = 0", ">= 5e-9"}); }
   SECTION("window") { require_error("e0 = 0.5", "window = -1", {"key 'scene.window' = -1", "> 0"}); }
   SECTION("ball mass") { require_error("e0 = 0.5", "ball_mass = 0", {"key 'scene.ball_mass' = 0", "> 0"}); }
   SECTION("nan") { require_error("ball_speed = 40", "ball_speed = nan", {"key 'scene.ball_speed' = nan", "finite"}); }
@@ -668,5 +669,24 @@ TEST_CASE("bad studies: outputs", "[study]") {
   SECTION("mode_energy with all modes") {
     require_error(with(with(good_study, "e0 = 0.5", "modes = \"all\""), "[\"vf\", \"e_eff\"]", "[\"mode_energy\"]"),
                   {"key 'output.variables[0]' = \"mode_energy\"", "fixed number of modes"});
+  }
+}
+
+TEST_CASE("the memory a study needs grows with its points, outputs and bats, and a bound names the axes",
+          "[study][bounds]") {
+  const StudyDir dir;
+  const std::string axes = "[axes]\nz = [0.6, 0.7, 0.8]\nball_speed = [30.0, 40.0]\n";
+  const std::string scene = "[scene]\nbat = \"bats/r161.toml\"\ncenter = 0.09\nomega = 51\nmodes = 0\n";
+  const Study small = dir.load(scene + axes + "[output]\nvariables = [\"vf\"]\n");
+  const Study wide = dir.load(scene + axes + "[output]\nvariables = [\"vf\", \"status\", \"force\"]\n");
+  // No modes: 8 bytes a value, twice (results, dataset), the task order and a chunk in flight.
+  CHECK(sweetspot::study_memory_bytes(small) == 6 * (2 * 8 * 1 + 16) + 2 * 8 * 1 * 6);
+  CHECK(sweetspot::study_memory_bytes(wide) == 6 * (2 * 8 * 603 + 16) + 2 * 8 * 603 * 6);  // force: 601 samples
+  CHECK_NOTHROW(sweetspot::check_study_memory(wide, sweetspot::study_memory_bytes(wide)));
+  try {
+    sweetspot::check_study_memory(wide, sweetspot::study_memory_bytes(wide) - 1);
+    FAIL("no error");
+  } catch (const InputError& e) {
+    CHECK_THAT(e.what(), Catch::Contains("6 points = z (3) x ball_speed (2), 603 values each"));
   }
 }

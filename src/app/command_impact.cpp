@@ -123,12 +123,24 @@ void add_ball_options(CLI::App& cmd, Ball& ball) {
 void resolve_integrator(const CLI::App& cmd, CollisionOptions& options) {
   if (cmd.count("--n2000") && cmd.count("--integrator") == 0) options = with_n2000_settings(options);
   if (cmd.count("--dt") == 0) options.dt = default_step(options.method);
+  // As history_step is bounded: a mistyped step would take billions of steps and their memory.
+  if (!(options.dt >= finest_step)) {
+    char text[160];
+    std::snprintf(text, sizeof text, ": --dt %g: expected a step >= %g s (a finer one could take more than 1e7 steps "
+                  "per contact)", options.dt, finest_step);
+    throw InputError(cmd.get_name() + text);
+  }
 }
 
 void add_integrator_options(CLI::App& cmd, CollisionOptions& options) {
   cmd.add_option("--integrator", options.method, "rk4 (N2000), exact (modal, any step) or dopri (adaptive)")
-      ->transform(CLI::CheckedTransformer(
-          std::map<std::string, Method>{{"rk4", Method::rk4}, {"exact", Method::exact}, {"dopri", Method::dopri}}))
+      ->transform(CLI::Validator(
+          [](std::string& value) -> std::string {
+            for (const Method m : {Method::rk4, Method::exact, Method::dopri})
+              if (value == to_string(m)) return value = std::to_string(static_cast<int>(m)), std::string();
+            return "'" + value + "': expected rk4, exact or dopri";
+          },
+          "rk4|exact|dopri"))
       ->default_str("exact");
   cmd.add_option("--dt", options.dt, "step (rk4, exact) or first step (dopri), s [default: 5e-6 for rk4, "
                                      "1e-5 for exact, 1e-6 for dopri]");
@@ -146,7 +158,7 @@ void add_impact_command(CLI::App& app) {
   cmd->add_option("--theory", o->theory, "beam theory")
       ->check(CLI::IsMember({"timoshenko", "euler-bernoulli"}))
       ->capture_default_str();
-  cmd->add_option("--slices", o->slices, "slice count N (default: the profile's own)")->check(CLI::Range(4, 4096));
+  cmd->add_option("--slices", o->slices, "slice count N (default: the profile's own)")->check(CLI::Range(min_slices, max_slices));
   cmd->add_option("--z", o->scene.z, "impact location, m from the knob (anywhere on the bat)")->required();
   cmd->add_option("--ball-speed", o->scene.ball_speed, "ball speed toward the bat, m/s")->required();
   auto* cm = cmd->add_option("--cm-speed", o->cm_speed, "bat centre-of-mass speed toward the ball, m/s");

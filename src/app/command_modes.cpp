@@ -93,9 +93,9 @@ void add_modes_command(CLI::App& app) {
       ->check(CLI::IsMember({"timoshenko", "euler-bernoulli"}))
       ->capture_default_str();
   cmd->add_option("--slices", options->slices, "slice count N (default: the profile's own)")
-      ->check(CLI::Range(4, 4096));
+      ->check(CLI::Range(min_slices, max_slices));
   cmd->add_option("--count", options->count, "vibrational modes to print")
-      ->check(CLI::PositiveNumber)
+      ->check(CLI::Range(1, 2 * max_slices))
       ->capture_default_str();
   CLI::Option* json = cmd->add_flag("--json", options->json, "print one JSON object");
   cmd->add_flag("--shapes", options->shapes,

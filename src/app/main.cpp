@@ -1,6 +1,8 @@
 // sweetspot: the ball-bat collision engine's command line.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
+#include <string>
 
 #include "commands.hpp"
 #include "sweetspot/input_error.hpp"
@@ -19,7 +21,18 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);  // --help, --version
+    // A usage error is a bad input like any other: one line, exit status 2.
+    std::string text = e.what();
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    for (const CLI::App* command : app.get_subcommands()) text = command->get_name() + ": " + text;
+    if (app.get_subcommands().empty()) {  // CLI11 says only "A subcommand is required"
+      text = "expected a command: modes, impact, wall, toy, run or convergence";
+      if (argc > 1) text += ", not '" + std::string(argv[1]) + "'";
+    }
+    std::fprintf(stderr, "sweetspot: error: %s (see sweetspot%s --help)\n", text.c_str(),
+                 app.get_subcommands().empty() ? "" : (" " + app.get_subcommands().front()->get_name()).c_str());
+    return 2;
   } catch (const sweetspot::InputError& e) {
     std::fprintf(stderr, "sweetspot: error: %s\n", e.what());
     return 2;

@@ -40,11 +40,17 @@ std::string at_line(const fs::path& file, int line) {
 }
 
 // `context` says why the file was wanted, for files the user did not name directly.
+constexpr std::uintmax_t max_input_bytes = 16 << 20;
+
 std::string read_text(const fs::path& file, const std::string& context = "") {
   std::error_code ignored;  // a status we cannot get reads as "not found"
   const fs::file_status status = fs::status(file, ignored);
   if (!fs::exists(status)) fail(file.string(), "file not found" + context);
   if (!fs::is_regular_file(status)) fail(file.string(), "not a regular file" + context);
+  // A bat file or a profile of 4096 rows is far smaller: do not read a mistaken path's gigabytes.
+  if (const std::uintmax_t size = fs::file_size(file, ignored); !ignored && size > max_input_bytes)
+    fail(file.string(), "larger than 16 MB" + context + "; expected a bat file or a profile of at most " +
+                            std::to_string(max_slices) + " rows");
   std::ifstream in(file, std::ios::binary);
   if (!in) fail(file.string(), "cannot open the file for reading" + context);
   std::ostringstream text;
@@ -331,15 +337,18 @@ ProfileOptions read_profile_options(const Section& top) {
   }
   if (const toml::node* node = top.table.get("slices")) {
     const auto n = node->value<int64_t>();
-    if (!node->is_integer() || !n || *n < 4 || *n > 4096)
-      fail(top.where("slices"), "value " + describe(*node) + " must be an integer slice count from 4 to 4096");
+    if (!node->is_integer() || !n || *n < min_slices || *n > max_slices)
+      fail(top.where("slices"), "value " + describe(*node) + " must be an integer slice count from " +
+                                    std::to_string(min_slices) + " to " + std::to_string(max_slices));
     o.slices = static_cast<int>(*n);
   }
   return o;
 }
 
 // A knot profile's default slices: about 1 cm thick, as N2000's.
-int default_slices(double length) { return std::max(4, static_cast<int>(std::lround(length / 0.01))); }
+int default_slices(double length) {
+  return std::clamp(static_cast<int>(std::lround(length / 0.01)), min_slices, max_slices);
+}
 
 // Reads the profile text into the bat's slices: rows that are slices (z_center_m) as they are,
 // knots (z_m) cut into slices by integrating A and I (profile.hpp).
@@ -356,6 +365,9 @@ void read_profile(const fs::path& file, const std::string& text, const ProfileOp
     if (content.empty() || content.starts_with('#')) continue;
     if (!columns)
       columns = read_header(file, number, content);
+    else if (rows.size() == static_cast<std::size_t>(max_slices))
+      fail(at_line(file, number), "row " + std::to_string(max_slices + 1) + ": a profile has at most " +
+                                      std::to_string(max_slices) + " rows (slices), as --slices");
     else
       rows.push_back(read_row(file, number, content, *columns));
   }
@@ -373,6 +385,9 @@ void read_profile(const fs::path& file, const std::string& text, const ProfileOp
                                             file.string() + ", which lists one diameter per slice (z_center_m): " +
                                             "expected 'stepped', or knots in a z_m column");
     check_slicing(file, rows, bat.length);
+    if (rows.size() < static_cast<std::size_t>(min_slices))
+      fail(file.string(), "the profile has " + std::to_string(rows.size()) + " rows; expected one row per slice, at least " +
+                              std::to_string(min_slices) + " (as --slices)");
     bat.set_slices(std::move(profile.outer), std::move(profile.inner));
     if (options.slices) bat = resample(bat, *options.slices);
     return;

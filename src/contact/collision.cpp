@@ -158,8 +158,12 @@ class CollisionRun {
     record_sample(law);
     VectorXd next(y_.size());
     double h = stepper_.first_step();
-    while (true) {
+    for (double steps = 1;; ++steps) {
       h = stiffness_limited(h, law);
+      if (steps > max_contact_steps)
+        return fail(CollisionStatus::failed, "more than 1e7 steps (max_contact_steps) in contact " +
+                                                 std::to_string(result_.contacts) +
+                                                 ": the step or the tolerance is too fine");
       if (t_ - touch > options_.max_contact_time)
         return fail(CollisionStatus::no_separation,
                     format("the ball did not separate within %g s of touching (contact %g)", options_.max_contact_time,
@@ -310,6 +314,7 @@ const char* to_string(CollisionStatus status) {
     case CollisionStatus::refused_step: return "refused_step";
     case CollisionStatus::unbalanced: return "unbalanced";
     case CollisionStatus::no_contact: return "no_contact";
+    case CollisionStatus::failed: return "failed";
   }
   return "unknown";
 }

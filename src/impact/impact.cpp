@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <utility>
 
@@ -136,8 +137,25 @@ ImpactResult collision_result(const Collision& c) {
   return r;
 }
 
-ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& scene) {
-  validate(scene, basis);
+namespace {
+
+// validate() lets points lie a rounding error past the bat's ends (bat_extent_tolerance): the
+// scene with them put on it, or nullptr when all are on it already (the usual case: no copy).
+std::unique_ptr<ImpactScene> clamped_onto_bat(const ImpactScene& scene, double length) {
+  const auto off = [length](double z) { return z < 0 || z > length; };
+  if (!off(scene.z) && !(scene.histories && std::ranges::any_of(scene.history.probes, off))) return nullptr;
+  auto clamped = std::make_unique<ImpactScene>(scene);
+  clamped->z = std::clamp(scene.z, 0.0, length);
+  for (double& z : clamped->history.probes) z = std::clamp(z, 0.0, length);
+  return clamped;
+}
+
+}  // namespace
+
+ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& given) {
+  validate(given, basis);
+  const std::unique_ptr<ImpactScene> clamped = clamped_onto_bat(given, basis.length());
+  const ImpactScene& scene = clamped ? *clamped : given;
   const SceneGeometry g = scene_geometry(scene, basis);
   CollisionOptions options = scene.integrator;
   if (scene.accuracy > 0)

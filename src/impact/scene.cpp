@@ -67,10 +67,10 @@ ModalContact constrained_modes(const ModalContact& free, const Eigen::VectorXd& 
 void validate_history(const HistoryRequest& h, double length) {
   require_positive("history_window", h.window);
   require_positive("history_step", h.step);
-  if (h.window / h.step > max_history_samples)
+  if (!(h.steps() <= max_history_samples))
     reject("history_step", h.step, "gives more than 1e5 samples over the history window");
   for (const double z : h.probes)
-    if (!(z >= 0 && z <= length)) reject("probes", z, "must lie on the bat (0 to " + std::to_string(length) + " m)");
+    if (!lies_on_bat(z, length)) reject("probes", z, "must lie on the bat (0 to " + std::to_string(length) + " m)");
 }
 
 }  // namespace
@@ -82,7 +82,7 @@ Eigen::VectorXd SceneGeometry::shapes_at(const ModalBasis& basis, double z) cons
 
 void validate(const ImpactScene& scene, const ModalBasis& basis) {
   const double length = basis.length();
-  if (!(scene.z >= 0 && scene.z <= length)) reject("z", scene.z, "must lie on the bat (0 to " + std::to_string(length) + " m)");
+  if (!lies_on_bat(scene.z, length)) reject("z", scene.z, "must lie on the bat (0 to " + std::to_string(length) + " m)");
   require_finite("ball_speed", scene.ball_speed);
   require_finite("omega", scene.swing.omega);
   require_finite(scene.swing.about_center ? "center" : "cm_speed",

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <tuple>
@@ -38,7 +39,12 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 struct RankTally {
   double impact_seconds = 0;
   std::size_t past_radius = 0;
+  std::size_t failed = 0;  // points with status failed, each logged with its reason up to failures_logged
 };
+
+// Failed points logged one by one per rank; the rest are only counted, so that a study whose
+// every point fails cannot flood the log.
+constexpr std::size_t failures_logged = 20;
 
 void log_rank_summary(int rank, int solves, const RankTally& tally, Clock::time_point start) {
   const double total = seconds_since(start);
@@ -48,6 +54,47 @@ void log_rank_summary(int rank, int solves, const RankTally& tally, Clock::time_
     spdlog::warn("rank {}: {} points compressed the ball past its radius (u_max > radius): the force law is not "
                  "meant for that",
                  rank, tally.past_radius);
+  if (tally.failed > 0)
+    spdlog::warn("rank {}: {} points failed (status failed; {} of them with their reason above)", rank, tally.failed,
+                 std::min(tally.failed, failures_logged));
+}
+
+// "point 17 (z = 0.84, ball_speed = 30)": a grid point by its index and its axis values.
+std::string describe_point(const Study& study, std::uint64_t index, const GridPoint& p) {
+  std::string text = "point " + std::to_string(index);
+  for (std::size_t k = 0; k < study.axes.size(); ++k) {
+    const Axis& axis = study.axes[k];
+    const std::size_t at = p.coords[k];
+    const std::string value = axis.name == "bat"      ? study.bat_names[static_cast<std::size_t>(axis.values[at])]
+                              : axis.labels.empty() ? fmt::format("{}", axis.values[at])
+                                                    : axis.labels[at];
+    text += (k ? ", " : " (") + axis.name + " = " + value + (k + 1 == study.axes.size() ? ")" : "");
+  }
+  return text;
+}
+
+// Marks a point failed for `why`; keeps the status alone when there is no memory for the reason.
+void fail_point(ImpactResult& r, const char* why) noexcept {
+  r.status = CollisionStatus::failed;
+  try {
+    r.message = why;
+  } catch (...) {
+  }
+}
+
+// A point never takes its worker down: whatever it throws makes it a failed point with the
+// reason, and the sweep goes on. `basis_error` is why its modes could not be had, if they could not.
+ImpactResult guarded_point(const GridPoint& point, const ModalBasis* basis, const std::string& basis_error) {
+  ImpactResult r;
+  try {
+    if (!basis_error.empty()) throw std::runtime_error(basis_error);
+    return simulate_point(point, basis);
+  } catch (const std::exception& e) {
+    fail_point(r, e.what());
+  } catch (...) {
+    fail_point(r, "an unknown error (not a std::exception)");
+  }
+  return r;
 }
 
 // Where the rank may run, and a warning when its threads must share cores: under Slurm >= 22.05
@@ -69,21 +116,31 @@ class ModalCache {
  public:
   explicit ModalCache(const Study& study) : study_(study) {}
   // A point that keeps no vibrational mode gets the rigid modes alone: no eigen-solve.
-  const ModalBasis& get(const GridPoint& p) {
+  // The point's basis, or nullptr with `error` saying why it could not be had (the bat file
+  // changed since the study was checked, say); a failure is kept too, not retried per point.
+  const ModalBasis* get(const GridPoint& p, std::string& error) {
     const bool rigid_only = p.scene.vibrational_modes == 0;
-    const auto key = std::make_tuple(p.bat, p.slices, p.theory, rigid_only);
-    auto it = cache_.find(key);
-    if (it != cache_.end()) return it->second;
-    Bat bat = study_.loaded_bats[p.bat];
-    if (p.slices > 0) bat = resample(bat, p.slices);
-    if (!rigid_only) ++solves_;
-    return cache_.emplace(key, compute_modes(bat, p.theory, rigid_only)).first->second;
+    const Key key = std::make_tuple(p.bat, p.slices, p.theory, rigid_only);
+    if (const auto it = cache_.find(key); it != cache_.end()) return &it->second;
+    if (const auto it = errors_.find(key); it != errors_.end()) return error = it->second, nullptr;
+    try {
+      Bat bat = study_.loaded_bats[p.bat];
+      if (p.slices > 0) bat = resample(bat, p.slices);
+      if (!rigid_only) ++solves_;
+      return &cache_.emplace(key, compute_modes(bat, p.theory, rigid_only)).first->second;
+    } catch (const std::exception& e) {
+      error = "the modes of " + study_.bats[p.bat].string() + ": " + e.what();
+      errors_.emplace(key, error);
+      return nullptr;
+    }
   }
   int solves() const { return solves_; }
 
  private:
+  using Key = std::tuple<std::size_t, int, BeamTheory, bool>;
   const Study& study_;
-  std::map<std::tuple<std::size_t, int, BeamTheory, bool>, ModalBasis> cache_;
+  std::map<Key, ModalBasis> cache_;
+  std::map<Key, std::string> errors_;
   int solves_ = 0;
 };
 
@@ -93,22 +150,36 @@ std::vector<double> compute_chunk(const Study& study, const OutputLayout& layout
                                   const std::vector<std::uint64_t>& points, RankTally& tally) {
   std::vector<GridPoint> grid(points.size());
   std::vector<const ModalBasis*> bases(points.size(), nullptr);  // none for the wall and the toy
+  std::vector<std::string> reasons(points.size());  // why a point failed: first its modes', then its own
   for (std::size_t i = 0; i < points.size(); ++i) {  // modes first, serially: the cache is not shared
     grid[i] = grid_point(study, points[i]);
-    if (has_bat(grid[i].kind)) bases[i] = &cache.get(grid[i]);
+    if (has_bat(grid[i].kind)) bases[i] = cache.get(grid[i], reasons[i]);
   }
   std::vector<double> rows(points.size() * layout.width);
+  std::vector<char> failed(points.size(), 0);  // char, not bool: each thread writes its own
   const auto start = Clock::now();
   std::size_t past_radius = 0;
 #pragma omp parallel for schedule(dynamic) reduction(+ : past_radius)
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const ImpactResult r = simulate_point(grid[i], bases[i]);
-    // The toy model's ball is dimensionless: no radius to pass.
-    if (grid[i].kind != StudyKind::toy && r.u_max > grid[i].scene.ball.radius) ++past_radius;
-    layout.extract(r, rows.data() + i * layout.width);
+    try {
+      const ImpactResult r = guarded_point(grid[i], bases[i], reasons[i]);
+      // The toy model's ball is dimensionless: no radius to pass.
+      if (grid[i].kind != StudyKind::toy && r.u_max > grid[i].scene.ball.radius) ++past_radius;
+      layout.extract(r, rows.data() + i * layout.width);
+      failed[i] = r.status == CollisionStatus::failed;
+      if (failed[i]) reasons[i] = r.message;
+    } catch (...) {  // no memory left even to record the point: all NaN (status -1 in the dataset)
+      std::fill_n(rows.data() + i * layout.width, layout.width, std::nan(""));
+      failed[i] = 1;
+    }
   }
   tally.impact_seconds += seconds_since(start);
   tally.past_radius += past_radius;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!failed[i]) continue;
+    if (tally.failed++ < failures_logged)
+      spdlog::warn("{} failed: {}", describe_point(study, points[i], grid[i]), reasons[i]);
+  }
   return rows;
 }
 

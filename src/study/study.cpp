@@ -17,6 +17,7 @@
 #include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/input_error.hpp"
 #include "sweetspot/impact/n2000_settings.hpp"
+#include "sweetspot/study/study_memory.hpp"
 #include "toml_values.hpp"
 
 namespace sweetspot {
@@ -91,9 +92,10 @@ struct KeySpec {
 bool any(double) { return true; }
 bool finite(double x) { return std::isfinite(x); }
 bool positive(double x) { return std::isfinite(x) && x > 0; }
+bool step(double x) { return positive(x) && x >= finest_step; }  // as the commands' --dt
 bool on_bat(double x) { return std::isfinite(x) && x >= 0; }  // the bats' lengths: check_on_bats
 bool unit_interval(double x) { return x > 0 && x <= 1; }
-bool slice_count(double x) { return x >= 4 && x <= 4096; }  // as `impact --slices`
+bool slice_count(double x) { return x >= min_slices && x <= max_slices; }  // as `impact --slices`
 bool mode_count(double x) { return x >= 0 && x <= 1e6; }    // "all" and "auto" are not checked
 
 constexpr KeySpec keys[] = {
@@ -143,7 +145,7 @@ constexpr KeySpec keys[] = {
      [](GridPoint& p, double x) { p.scene.integrator.method = static_cast<Method>(x); }, ball_kinds, 0, false},
     {"tolerance", Type::number, "a finite number > 0 (relative error per step, dopri)", positive,
      [](GridPoint& p, double x) { p.scene.integrator.tolerance = x; }, ball_kinds},
-    {"dt", Type::number, "a finite number > 0 (s)", positive,
+    {"dt", Type::number, "a finite number >= 5e-9 (s; a finer step could take over 1e7 steps per contact)", step,
      [](GridPoint& p, double x) { p.scene.integrator.dt = x; }, ball_kinds},
     {"window", Type::number, "a finite number > 0 (s)", positive,
      [](GridPoint& p, double x) { p.scene.integrator.window = x; }, ball_kinds},
@@ -531,7 +533,7 @@ std::string bat_text(const std::vector<Bat>& bats, const Setting& bat, std::size
 void check_on_bats(const Setting& points, const std::vector<Bat>& bats, const Setting& bat) {
   for (const double x : points.values)
     for (std::size_t b = 0; b < bats.size(); ++b)
-      if (x > bats[b].length)
+      if (!lies_on_bat(x, bats[b].length))
         reject(points.where, format_number(x),
                "must lie on every bat of the study: 0 to " + format_number(bats[b].length) + " m for " +
                    bat_text(bats, bat, b));
@@ -579,14 +581,66 @@ void check_grid_size(const Settings& s, const Where& top) {
     reject(Where{top.file, "axes", 0}, "{...}", "the grid has " + format_number(points) + " points; at most 1e9");
 }
 
+// Rounded as the time grid rounds (HistoryRequest::steps): 3e-3 / 3e-8 is 1e5, not 1e5 + 1e-11.
 void check_history_samples(const Settings& s) {
-  const double window = s.values("history_window", HistoryRequest{}.window)[0];
-  const double step = s.values("history_step", HistoryRequest{}.step)[0];
-  if (window / step > max_history_samples) {
+  const HistoryRequest h{{}, s.values("history_window", HistoryRequest{}.window)[0],
+                         s.values("history_step", HistoryRequest{}.step)[0]};
+  if (h.steps() > max_history_samples) {
     const Setting* at = s["history_step"] ? s["history_step"] : s["history_window"];
     reject(at->where, format_number(at->values[0]),
-           "history_window / history_step = " + format_number(window / step) + " samples; at most 1e5");
+           "history_window / history_step = " + format_number(h.steps()) + " samples; at most 1e5");
   }
+}
+
+// The fastest mode a point keeps (rad/s): the free bat's, or with `pivot_center` the held bat's,
+// whose modes the constraint makes (scene.cpp), never faster than the free ones.
+double fastest_kept_mode(const ModalBasis& basis, double modes, const double* pivot_center) {
+  if (!pivot_center) return basis.omega(modes == all_modes ? basis.count() - 1 : static_cast<int>(modes) + 1);
+  ImpactScene scene;
+  scene.vibrational_modes = static_cast<int>(modes);
+  scene.pivoted = scene.swing.about_center = true;
+  scene.swing.center = *pivot_center;
+  scene.z = basis.z.front();  // the held bat's frequencies do not depend on where it is struck
+  return scene_geometry(scene, basis).contact.omega.maxCoeff();
+}
+
+// RK4 at a fixed step is unstable once omega dt > 2.8 for a kept mode, and `impact` refuses such a
+// scene: so does the study, before any work, naming the combination of values that makes it.
+// ("auto" keeps modes per point and is left to the point; a stated accuracy keeps the step stable.)
+void check_rk4_stability(const Settings& s, const Where& top, const std::vector<Bat>& bats, const Setting& bat) {
+  const Setting* integrator = s["integrator"];
+  if (!integrator || static_cast<Method>(integrator->values[0]) != Method::rk4 || s["accuracy"]) return;
+  const std::vector<double> steps = s.values("dt", default_step(Method::rk4));
+  const double dt = *std::ranges::max_element(steps);
+  const std::vector<double> pivots = s.values("pivot", 0), centers = s.values("center", 0);
+  const bool all_pivoted = std::ranges::count(pivots, 0.0) == 0;
+  const Setting* modes_setting = s["modes"];
+  const Where where = modes_setting ? modes_setting->where : Where{top.file, "scene", 0}.missing("modes");
+  for (std::size_t b = 0; b < bats.size(); ++b)
+    for (const double slices : s.values("slices", bats[b].slices()))
+      for (const double theory : s.values("theory", 0)) {
+        std::optional<ModalBasis> basis;  // solved only when some point keeps a vibrational mode
+        for (const double m : s.values("modes", default_modes)) {
+          if (m == 0 || m == auto_modes) continue;
+          if (!basis) basis = compute_modes(resample(bats[b], static_cast<int>(slices)), static_cast<BeamTheory>(theory));
+          double omega = fastest_kept_mode(*basis, m, nullptr), center = 0;
+          if (omega * dt <= rk4_stability_limit) continue;
+          if (all_pivoted) {  // held, the fastest mode may be slow enough
+            omega = 0;
+            for (const double c : centers)
+              if (const double w = fastest_kept_mode(*basis, m, &c); w > omega) omega = w, center = c;
+            if (omega * dt <= rk4_stability_limit) continue;
+          }
+          const std::string value = m == all_modes ? "\"all\"" : format_number(m);
+          reject(where, value + (modes_setting ? "" : " (the default)"),
+                 "with integrator = \"rk4\" and dt = " + format_number(dt) + " s, " + bat_text(bats, bat, b) + " in " +
+                     format_number(slices) + " slices (" + to_string(static_cast<BeamTheory>(theory)) + ")" +
+                     (all_pivoted ? ", pivoted at center = " + format_number(center) + " m," : "") +
+                     " keeps a mode of omega = " + format_number(omega) + " rad/s: omega dt = " +
+                     format_number(omega * dt) + " > 2.8 is unstable; expected fewer modes, dt <= " +
+                     format_number(rk4_stability_limit / omega) + " s, accuracy, or integrator = \"exact\"");
+        }
+      }
 }
 
 // The impact kind's checks across keys: the swing, the bat files, z on every bat, mode counts.
@@ -599,6 +653,7 @@ void check_bat_scene(Study& study, const Settings& s, const Where& top) {
   check_mode_counts(s, top, bats, bat);
   check_euler_bernoulli_slices(s, top, bats, bat);
   check_history_samples(s);
+  check_rk4_stability(s, top, bats, bat);
 }
 
 // ---- The kind ----------------------------------------------------------------------------------
@@ -753,6 +808,7 @@ Study load_study(const fs::path& file) {
   study.theory = base.theory;
   study.slices = base.slices;
   for (const Setting& axis : s.axes) study.axes.push_back(make_axis(axis));
+  check_study_memory(study, machine_memory_bytes());
   return study;
 }
 

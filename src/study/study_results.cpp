@@ -154,9 +154,15 @@ Variable output_variable(const std::string& name, std::vector<std::string> dims,
   } else {
     v.values = std::move(values);
   }
-  if (name == "status") {
-    v.int_attributes.push_back({"flag_values", {0, 1, 2, 3, 4, 5}});
-    v.text_attributes.push_back({"flag_meanings", "ok no_separation non_finite refused_step unbalanced no_contact"});
+  if (name == "status") {  // every CollisionStatus, by its value and name
+    std::vector<std::int32_t> flags;
+    std::string meanings;
+    for (int k = 0; k <= static_cast<int>(CollisionStatus::failed); ++k) {
+      flags.push_back(k);
+      meanings += (k ? " " : "") + std::string(to_string(static_cast<CollisionStatus>(k)));
+    }
+    v.int_attributes.push_back({"flag_values", flags});
+    v.text_attributes.push_back({"flag_meanings", meanings});
   }
   return v;
 }

@@ -16,6 +16,11 @@ struct Material {
   double shear_coefficient = 1;  // kappa; N2000 folds it into S (kappa = 1)
 };
 
+// The slice counts a bat may have, from its profile or resampled (--slices, `slices`): fewer
+// than 4 cannot bend, and the dense eigen-solve of more than 4096 (2 GB, hours) would not end.
+inline constexpr int min_slices = 4;
+inline constexpr int max_slices = 4096;
+
 struct Bat {
   std::string name;
   double length = 0;                   // m

@@ -54,10 +54,20 @@ struct CollisionOptions {
   double contact_phase_limit = 2;
 };
 
+// A contact takes at most this many steps: a mistyped step (1e-12 for 1e-5) or tolerance would
+// otherwise fill the memory with force samples. Past it the point fails.
+inline constexpr double max_contact_steps = 1e7;
+// The finest step (s) a user may give the fixed-step methods: one that could take more than
+// max_contact_steps to cover max_contact_time is refused before any work.
+inline constexpr double finest_step = CollisionOptions{}.max_contact_time / max_contact_steps;
+
 // unbalanced: integrated, but the energy balance is off by more than 1 % (impact.hpp).
 // no_contact: ball and struck point never approach (closing speed <= 0 at first touch): there is
 // no collision, and every result is NaN. A ball at rest struck by a moving bat (a tee) collides.
-enum class CollisionStatus { ok, no_separation, non_finite, refused_step, unbalanced, no_contact };
+// failed: the point could not be computed (an error, or more than max_contact_steps in a
+// contact); the message says why. A study records it and goes on.
+// Datasets list every status by value (flag_values): `failed` stays the last.
+enum class CollisionStatus { ok, no_separation, non_finite, refused_step, unbalanced, no_contact, failed };
 const char* to_string(CollisionStatus status);
 
 struct ForceSample {

@@ -24,7 +24,17 @@ inline constexpr int all_modes = -1;
 // Keep the modes the collision can excite (see mode_selection.hpp), within mode_tolerance.
 inline constexpr int auto_modes = -2;
 
-// Bounds a history's samples, so that a mistyped step cannot exhaust memory.
+// Points on the bat (z, probes) may lie this far past its ends, relative to its length: the
+// length its slice centres give rounds (0.84 m in 5 slices comes to 0.8399999...), and a point
+// given at the end must not fall off it. Such points are clamped onto the bat.
+inline constexpr double bat_extent_tolerance = 1e-9;
+inline bool lies_on_bat(double z, double length) {
+  const double slack = bat_extent_tolerance * length;
+  return z >= -slack && z <= length + slack;
+}
+
+// Bounds a history's steps (history_window / history_step, at most 1e5, i.e. 1e5 + 1 samples
+// with both ends), so that a mistyped step cannot exhaust memory.
 inline constexpr double max_history_samples = 1e5;
 
 // Time histories of an impact (histories.hpp): where on the bat, and the uniform time grid.
@@ -33,8 +43,11 @@ struct HistoryRequest {
   double window = 3e-3;        // s from first touch
   double step = 5e-6;          // s between samples
 
+  // Steps from 0 to the window: window / step, rounded down unless within 1e-9 of the next
+  // whole number (3e-3 / 3e-8 comes to 100000.00000000001 and is 1e5 steps).
+  double steps() const { return std::floor(window / step + 1e-9); }
   // Samples from 0 to the window, both ends included when the step divides it.
-  std::size_t samples() const { return static_cast<std::size_t>(std::floor(window / step + 1e-9)) + 1; }
+  std::size_t samples() const { return static_cast<std::size_t>(steps()) + 1; }
 };
 
 struct ImpactScene {

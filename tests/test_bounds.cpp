@@ -1,0 +1,175 @@
+// Bounds on what a user can ask, and the command line's usage errors: each refused before any
+// work with one line `sweetspot: error: ...` naming the option or key, the value and the bound,
+// exit status 2, and no existing output touched.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "program.hpp"
+#include "temp_dir.hpp"
+
+namespace {
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+// One line, in the program's style, with every fragment; exit status 2.
+void require_refused(const ProgramRun& run, std::initializer_list<std::string> fragments) {
+  INFO(run.output);
+  CHECK(run.exit_code == 2);
+  CHECK_THAT(run.output, Catch::StartsWith("sweetspot: error: "));
+  CHECK(std::ranges::count(run.output, '\n') == 1);
+  for (const std::string& fragment : fragments) CHECK_THAT(run.output, Catch::Contains(fragment));
+}
+
+// A bat of length 0.84 m over a profile of `rows` slices of 6 cm diameter.
+std::filesystem::path write_bat(const TempDir& dir, const std::string& name, int rows) {
+  std::ostringstream csv;
+  csv << "z_center_m,outer_diameter_m\n";
+  csv.precision(12);
+  for (int i = 0; i < rows; ++i) csv << (i + 0.5) * 0.84 / rows << ",0.06\n";
+  dir.write(name + ".csv", csv.str());
+  return dir.write(name + ".toml", "name = \"" + name + "\"\nlength = 0.84\nprofile = \"" + name +
+                                       ".csv\"\n[material]\ndensity = 649\nyoungs_modulus = 1.814e10\n"
+                                       "shear_modulus = 1.05e9\n");
+}
+
+const std::string r161 = source_path("studies/bats/r161.toml");
+const std::string scene = " --ball-speed 40 --center 0.09 --omega 51";
+
+// A study over the R161 with `scene` lines in [scene] and `rest` after it; run into out.h5,
+// which holds an earlier result that must survive a refusal.
+ProgramRun run_study(const TempDir& dir, const std::string& scene_lines, const std::string& rest) {
+  dir.write("out.h5", "an earlier result");
+  const auto study = dir.write("study.toml", "[scene]\nbat = \"" + r161 + "\"\ncenter = 0.09\nomega = 51\n" +
+                                                 scene_lines + rest);
+  return run_program("run " + study.string() + " -o " + dir / "out.h5");
+}
+
+void require_untouched(const TempDir& dir) {
+  CHECK(read_file(dir / "out.h5") == "an earlier result");
+  CHECK_FALSE(std::filesystem::exists(dir / "out.h5.journal"));
+}
+
+}  // namespace
+
+TEST_CASE("A step that could take more than 1e7 steps per contact is refused", "[bounds]") {
+  require_refused(run_program("impact --bat " + r161 + " --z 0.7" + scene + " --integrator exact --dt 1e-12"),
+                  {"impact: --dt 1e-12: expected a step >= 5e-09 s"});
+  require_refused(run_program("wall --speed 40 --dt 4.9e-9"), {"wall: --dt 4.9e-09"});
+  // The bound itself is a step that works: a 1 ms contact in 2e5 steps.
+  const ProgramRun finest = run_program("impact --bat " + r161 + " --z 0.7" + scene + " --integrator exact --dt 5e-9 --modes 0");
+  INFO(finest.output);
+  CHECK(finest.exit_code == 0);
+  CHECK_THAT(finest.output, Catch::Contains("status          ok"));
+  TempDir dir;
+  require_refused(run_study(dir, "dt = 1e-12\n", "[axes]\nz = [0.7]\nball_speed = [40.0]\n"),
+                  {"key 'scene.dt' = 1e-12: expected a finite number >= 5e-9"});
+  require_untouched(dir);
+}
+
+TEST_CASE("A profile has 4 to 4096 rows, as --slices", "[bounds]") {
+  TempDir dir;
+  require_refused(run_program("modes " + write_bat(dir, "huge", 20000).string()),
+                  {"huge.csv:4098: row 4097: a profile has at most 4096 rows"});
+  for (const int rows : {1, 3})
+    require_refused(run_program("impact --bat " + write_bat(dir, "few", rows).string() + " --z 0.7" + scene +
+                                " --pivot --modes 0"),
+                    {"few.csv: the profile has " + std::to_string(rows) + " rows", "at least 4"});
+  // Both bounds are profiles that work (4096 rows without vibrational modes: no eigen-solve).
+  for (const int rows : {4, 4096}) {
+    const std::string bat = write_bat(dir, "edge" + std::to_string(rows), rows).string();
+    const ProgramRun run = run_program("impact --bat " + bat + " --z 0.84" + scene + " --pivot --modes 0");
+    INFO(run.output);
+    CHECK(run.exit_code == 0);
+    CHECK_THAT(run.output, Catch::Contains("status          ok"));
+  }
+}
+
+TEST_CASE("A study that cannot fit in the machine's memory is refused, naming its axes", "[bounds]") {
+  TempDir dir;
+  require_refused(run_study(dir, "",
+                            "[axes]\nz = { start = 0.0, stop = 0.84, count = 1000 }\n"
+                            "ball_speed = { start = 1, stop = 100, count = 1000 }\ne0 = { start = 0.001, stop = 1, count = 1000 }\n"
+                            "[output]\nvariables = [\"vf\", \"status\", \"mode_energy\"]\n"),
+                  {"study.toml: the study needs about ", "GB of memory, more than the ",
+                   "1000000000 points = z (1000) x ball_speed (1000) x e0 (1000), 20 values each"});
+  require_untouched(dir);
+}
+
+TEST_CASE("A history of exactly 1e5 steps is accepted, one more is refused", "[bounds]") {
+  TempDir dir;
+  const std::string axes = "[axes]\nz = [0.7]\nball_speed = [40.0]\n[output]\nvariables = [\"status\", \"force\"]\n";
+  require_refused(run_study(dir, "modes = 0\nhistory_step = 2.9e-8\n", axes),
+                  {"key 'scene.history_step' = 2.9e-08: history_window / history_step = 103448 samples; at most 1e5"});
+  require_untouched(dir);
+  // 3e-3 / 3e-8 is 100000.00000000001 in floating point: 1e5 steps all the same.
+  const ProgramRun run = run_study(dir, "modes = 0\nhistory_step = 3e-8\n", axes);
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  const ProgramRun check = run_command(std::string(python) + " -c \"import xarray as x; d = x.open_dataset('" +
+                                       dir / "out.h5" + "', engine='h5netcdf'); assert d.sizes['time'] == 100001, " +
+                                       "d.sizes; assert int(d.status.max()) == 0; print('ok')\"");
+  INFO(check.output);
+  CHECK(check.exit_code == 0);
+}
+
+TEST_CASE("RK4 with modes it cannot integrate stably is refused by the study, as by impact", "[bounds]") {
+  require_refused(run_program("impact --bat " + r161 + " --z 0.7" + scene + " --integrator rk4 --modes all"),
+                  {"--dt: RK4 step dt = 5e-06 s is unstable"});
+  TempDir dir;
+  require_refused(run_study(dir, "integrator = \"rk4\"\nmodes = \"all\"\n", "[axes]\nz = [0.7]\nball_speed = [40.0]\n"),
+                  {"key 'scene.modes' = \"all\": with integrator = \"rk4\" and dt = 5e-06 s, R161 (", " in 84 slices",
+                   "omega dt = ", "> 2.8 is unstable"});
+  require_untouched(dir);
+  // An axis names the combination: the modes value, the bat and its slices, and the step.
+  require_refused(run_study(dir, "integrator = \"rk4\"\n",
+                            "[axes]\nz = [0.7]\nball_speed = [40.0]\nslices = [84, 168]\nmodes = [18, \"all\"]\n"
+                            "dt = [1e-6, 2.6e-6]\n"),
+                  {"key 'axes.modes' = \"all\": with integrator = \"rk4\" and dt = 2.6e-06 s", "in 84 slices"});
+  // Held at a pivot, the fastest kept mode is the held bat's.
+  require_refused(run_study(dir, "integrator = \"rk4\"\npivot = true\nmodes = \"all\"\n",
+                            "[axes]\nz = [0.7]\nball_speed = [40.0]\n"),
+                  {"pivoted at center = 0.09 m"});
+  // What RK4 can integrate runs (18 modes at 5 us; all modes at a stated accuracy).
+  for (const std::string ok : {"integrator = \"rk4\"\nmodes = 18\n", "integrator = \"rk4\"\nmodes = \"all\"\naccuracy = 1e-4\n"}) {
+    const ProgramRun run = run_study(dir, ok, "[axes]\nz = [0.7]\nball_speed = [40.0]\n");
+    INFO(run.output);
+    CHECK(run.exit_code == 0);
+  }
+}
+
+TEST_CASE("Usage errors: one line in the program's style, exit status 2", "[bounds][cli]") {
+  const std::string impact = "impact --bat " + r161 + " --z 0.7 --ball-speed 40";
+  struct Case {
+    std::string arguments, expected;
+  };
+  const Case cases[] = {
+      {"impact --bat " + r161, "impact: --z is required"},
+      {impact + " --center 0.1 --spin", "impact: The following argument was not expected: --spin"},
+      {"impact --bat " + r161 + " --z abc --ball-speed 40 --center 0.1", "impact: Could not convert: --z = abc"},
+      {"modes " + r161 + " --slices 3", "modes: --slices: Value 3 not in range 4 to 4096"},
+      {"run study.toml --quiet --verbose", "run: --quiet excludes --verbose"},
+      {impact + " --center 0.1 --cm-speed 3", "impact: --cm-speed excludes --center"},
+      {impact + " --center 0.1 --integrator euler", "impact: --integrator: 'euler': expected rk4, exact or dopri"},
+      {"modes " + r161 + " --count 0", "modes: --count: Value 0 not in range 1 to 8192"},
+      {"modes " + r161 + " --shapes", "modes: --shapes requires --json"},
+      {"", "expected a command: modes, impact, wall, toy, run or convergence"},
+      {"swing", "expected a command: modes, impact, wall, toy, run or convergence, not 'swing'"},
+      {impact, "impact: give the swing as --cm-speed or as --center"},
+  };
+  for (const Case& c : cases) {
+    const ProgramRun run = run_program(c.arguments);
+    require_refused(run, {c.expected});
+    CHECK(run.output.size() < 200);  // no 300-digit bound
+  }
+  CHECK(run_program("--version").exit_code == 0);
+  const ProgramRun help = run_program("impact --help");
+  CHECK(help.exit_code == 0);
+  CHECK_THAT(help.output, Catch::Contains("--ball-speed"));
+}
