@@ -327,8 +327,9 @@ TEST_CASE("bat file: a profile that is not UTF-8 text, which a dataset could not
   require_csv_error("# a comment", "# a caf\xE9 comment", {"profile.csv:1", "byte 0xE9", "UTF-8"});
   require_csv_error("1,0.05,0.030", "1,0.05,0.030\xC3", {"profile.csv:4", "byte 0xC3", "UTF-8"});  // cut short
   require_csv_error("# a comment", std::string_view("# a\0comment", 12), {"profile.csv:1", "byte 0x00"});
-  const BatDir bat(good_toml, with(good_csv, "# a comment", "# a café comment ω"));  // UTF-8 is fine
-  CHECK(load_bat(bat.toml).slices() == 3);
+  const BatDir bat(with(good_toml, "length = 0.3", "length = 0.4"),  // UTF-8 is fine
+                   with(good_csv, "# a comment", "# a café comment ω") + "4,0.35,0.060\n");
+  CHECK(load_bat(bat.toml).slices() == 4);
 }
 
 TEST_CASE("bat file: profile header with a wrong column", "[bat_file]") {
