@@ -34,6 +34,15 @@ inline ProgramRun run_program_mpi(int ranks, int threads, const std::string& arg
                      " --oversubscribe --bind-to none " + SWEETSPOT_PROGRAM + " " + arguments);
 }
 
+// Starts `program arguments` (a study run on one thread writing `out`) and kills it with SIGKILL
+// as soon as its journal holds some finished points, well before the end. Prints "killed 137"
+// when it was killed; a run that ended first is not waited for forever ("killed 0").
+inline ProgramRun run_and_kill(const std::string& program, const std::string& arguments, const std::string& out) {
+  return run_command("OMP_NUM_THREADS=1 " + program + " " + arguments + " & pid=$!; while kill -0 $pid 2>/dev/null && [ $(stat -c %s " +
+                     out + ".journal 2>/dev/null || echo 0) -lt 20000 ]; do sleep 0.005; done; kill -9 $pid 2>/dev/null; "
+                     "wait $pid; echo killed $?");
+}
+
 inline std::string source_path(const std::string& relative) {
   return std::string(SWEETSPOT_SOURCE_DIR) + "/" + relative;
 }

@@ -75,10 +75,7 @@ TEST_CASE("A killed run with failed points resumes to the dataset of an uninterr
   const auto study = dir.write("study.toml", faulty_study(200));  // 2000 points
   REQUIRE(run_faulty(1, "run " + study.string() + " -o " + dir / "whole.h5 --quiet").exit_code == 0);
   const std::string out = dir / "killed.h5";
-  const ProgramRun killed = run_command(
-      "OMP_NUM_THREADS=1 " + std::string(SWEETSPOT_FAULTY_PROGRAM) + " run " + study.string() + " -o " + out +
-      " --quiet & pid=$!; while [ $(stat -c %s " + out + ".journal 2>/dev/null || echo 0) -lt 20000 ]; do "
-      "sleep 0.005; done; kill -9 $pid; wait $pid; echo killed $?");
+  const ProgramRun killed = run_and_kill(std::string(SWEETSPOT_FAULTY_PROGRAM), "run " + study.string() + " -o " + out + " --quiet", out);
   INFO(killed.output);
   REQUIRE_THAT(killed.output, Catch::Contains("killed 137"));
   const ProgramRun resumed = run_faulty(2, "run " + study.string() + " -o " + out + " --resume");

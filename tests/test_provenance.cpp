@@ -42,11 +42,8 @@ void write_dense_r161(const TempDir& dir, int density = 800) {
 
 // Runs the study and kills it with SIGKILL as soon as its journal holds some finished points,
 // well before the end.
-void run_and_kill(const fs::path& study, const std::string& out) {
-  const ProgramRun killed = run_command(
-      "OMP_NUM_THREADS=1 " + std::string(SWEETSPOT_PROGRAM) + " run " + study.string() + " -o " + out +
-      " --quiet & pid=$!; while [ $(stat -c %s " + out + ".journal 2>/dev/null || echo 0) -lt 20000 ]; do "
-      "sleep 0.005; done; kill -9 $pid; wait $pid; echo killed $?");
+void kill_midway(const fs::path& study, const std::string& out) {
+  const ProgramRun killed = run_and_kill(std::string(SWEETSPOT_PROGRAM), "run " + study.string() + " -o " + out + " --quiet", out);
   INFO(killed.output);
   REQUIRE_THAT(killed.output, Catch::Contains("killed 137"));
   REQUIRE(fs::exists(out + ".journal"));
@@ -82,7 +79,7 @@ TEST_CASE("A run killed with SIGKILL and resumed says so in its dataset, with th
   write_dense_r161(dir);
   const auto study = dir.write("study.toml", provenance_study(60));
   const std::string out = dir / "out.h5";
-  run_and_kill(study, out);
+  kill_midway(study, out);
   const ProgramRun resumed = run_program("run " + study.string() + " -o " + out + " --resume --quiet");
   INFO(resumed.output);
   REQUIRE(resumed.exit_code == 0);
@@ -98,7 +95,7 @@ TEST_CASE("A bat edited between the kill and the resume is refused, and a fresh 
   write_dense_r161(dir);
   const auto study = dir.write("study.toml", provenance_study(60));
   const std::string out = dir / "out.h5";
-  run_and_kill(study, out);
+  kill_midway(study, out);
   write_dense_r161(dir, 900);  // the study's text is the same; its results are not
   const ProgramRun refused = run_program("run " + study.string() + " -o " + out + " --resume");
   INFO(refused.output);

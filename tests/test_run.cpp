@@ -72,10 +72,7 @@ TEST_CASE("A run killed with SIGKILL resumes to the file of an uninterrupted run
   REQUIRE(run_program("run " + study.string() + " -o " + dir / "whole.h5 --quiet").exit_code == 0);
   // Kill the run as soon as its journal holds some finished points, well before the end.
   const std::string out = dir / "killed.h5";
-  const ProgramRun killed = run_command(
-      "OMP_NUM_THREADS=1 " + std::string(SWEETSPOT_PROGRAM) + " run " + study.string() + " -o " + out +
-      " --quiet & pid=$!; while [ $(stat -c %s " + out + ".journal 2>/dev/null || echo 0) -lt 20000 ]; do "
-      "sleep 0.005; done; kill -9 $pid; wait $pid; echo killed $?");
+  const ProgramRun killed = run_and_kill(std::string(SWEETSPOT_PROGRAM), "run " + study.string() + " -o " + out + " --quiet", out);
   INFO(killed.output);
   REQUIRE_THAT(killed.output, Catch::Contains("killed 137"));
   CHECK_FALSE(std::filesystem::exists(out));
