@@ -1,0 +1,214 @@
+// The checks across a study's keys, before any work: what no single value shows wrong.
+#include <algorithm>
+#include <optional>
+
+#include "study_settings.hpp"
+#include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/impact/n2000_settings.hpp"
+#include "sweetspot/input_error.hpp"
+#include "toml_values.hpp"
+
+namespace sweetspot::study_detail {
+
+using detail::format_number;
+using detail::quote;
+
+namespace {
+
+constexpr double max_points = 1e9;
+
+}  // namespace
+
+// ---- Checks across keys ------------------------------------------------------------------------
+
+// The mode count a study keeps unless it says: "auto", or N2000's 18 under preset = "n2000".
+double default_mode_count(const Settings& s) { return s["preset"] ? n2000_modes : default_modes; }
+
+void check_required(const Settings& s, const Where& top, StudyKind kind) {
+  for (const KeySpec& key : scene_key_specs())
+    if ((key.required & bit(kind)) && !s[key.name])
+      reject(Where{top.file, "scene", 0}.missing(key.name), "",
+             "expected " + std::string(key.expected) + ", in [scene] or as an axis in [axes]");
+}
+
+// The wall stands still, so only a ball moving toward it (speed > 0) ever touches it.
+void check_wall_speeds(const Settings& s) {
+  const Setting& speed = *s["ball_speed"];
+  for (const double v : speed.values)
+    if (!(v > 0))
+      reject(speed.where, format_number(v), "expected a speed > 0 (m/s) toward the wall, which does not move");
+}
+
+namespace {
+
+void check_swing(const Settings& s, const Where& top) {
+  const Setting *center = s["center"], *cm_speed = s["cm_speed"], *pivot = s["pivot"];
+  if (center && cm_speed)
+    reject(center->where, format_number(center->values[0]),
+           "expected exactly one of center and cm_speed, but key '" + cm_speed->where.key + "' is also given");
+  if (!center && !cm_speed)
+    reject(Where{top.file, "scene", 0}.missing("center"), "",
+           "give the swing as center (the point at rest, m from the knob) or as cm_speed (m/s)");
+  if (cm_speed && pivot && std::ranges::count(pivot->values, 1.0))
+    reject(pivot->where, "true", "a pivoted bat is held at its rotation centre: give center, not cm_speed");
+}
+
+std::vector<Bat> load_bats(Study& study, const Setting& bat) {
+  std::vector<Bat> bats;
+  for (const std::string& label : bat.labels) {
+    study.bats.push_back((study.file.parent_path() / label).lexically_normal());
+    try {
+      bats.push_back(load_bat(study.bats.back(), study.bat_sources.emplace_back()));
+    } catch (const InputError& e) {
+      reject(bat.where, quote(label), e.what());
+    }
+    // The dataset labels the bat coordinate by name: two bats of one name could not be told apart.
+    const auto same = std::ranges::find(study.bat_names, bats.back().name);
+    if (same != study.bat_names.end())
+      reject(bat.where, quote(label),
+             "its bat is named '" + *same + "' like the bat of " + quote(bat.labels[same - study.bat_names.begin()]) +
+                 "; give each bat its own name");
+    study.bat_names.push_back(bats.back().name);
+  }
+  study.loaded_bats = bats;
+  return bats;
+}
+
+std::string bat_text(const std::vector<Bat>& bats, const Setting& bat, std::size_t b) {
+  return bats[b].name + " (" + bat.labels[b] + ")";
+}
+
+// Points on the bat (z, probes) must be on every bat.
+void check_on_bats(const Setting& points, const std::vector<Bat>& bats, const Setting& bat) {
+  for (const double x : points.values)
+    for (std::size_t b = 0; b < bats.size(); ++b)
+      if (!lies_on_bat(x, bats[b].length))
+        reject(points.where, format_number(x),
+               "must lie on every bat of the study: 0 to " + format_number(bats[b].length) + " m for " +
+                   bat_text(bats, bat, b));
+}
+
+// Vibrational modes a discretisation has (modes.cpp): Timoshenko has two degrees of freedom per
+// slice, Euler-Bernoulli two per slice boundary; two modes are rigid.
+int vibrational_modes(int slices, BeamTheory theory) {
+  return (theory == BeamTheory::timoshenko ? 2 * slices : 2 * (slices + 1)) - 2;
+}
+
+void check_mode_counts(const Settings& s, const Where& top, const std::vector<Bat>& bats, const Setting& bat) {
+  const Setting* modes = s["modes"];
+  const Where where = modes ? modes->where : Where{top.file, "scene", 0}.missing("modes");
+  for (std::size_t b = 0; b < bats.size(); ++b)
+    for (const double slices : s.values("slices", bats[b].slices()))
+      for (const double theory : s.values("theory", 0))
+        for (const double m : s.values("modes", default_mode_count(s))) {
+          const int available = vibrational_modes(static_cast<int>(slices), static_cast<BeamTheory>(theory));
+          if (m == all_modes || m == auto_modes || m <= available) continue;
+          reject(where, format_number(m) + (modes ? "" : s["preset"] ? " (the n2000 preset)" : " (the default)"),
+                 bat_text(bats, bat, b) + " in " + format_number(slices) + " slices has " + std::to_string(available) +
+                     " vibrational modes (" + to_string(static_cast<BeamTheory>(theory)) +
+                     "); expected at most that, or \"all\"");
+        }
+}
+
+void check_euler_bernoulli_slices(const Settings& s, const Where& top, const std::vector<Bat>& bats,
+                                  const Setting& bat) {
+  const Setting* slices = s["slices"];
+  const Where where = slices ? slices->where : Where{top.file, "scene", 0}.missing("slices");
+  for (std::size_t b = 0; b < bats.size(); ++b)
+    for (const double n : s.values("slices", bats[b].slices()))
+      for (const double theory : s.values("theory", 0))
+        if (static_cast<BeamTheory>(theory) == BeamTheory::euler_bernoulli && n > max_euler_bernoulli_slices)
+          reject(where, format_number(n) + (slices ? "" : " (" + bat_text(bats, bat, b) + "'s own)"),
+                 "at most " + std::to_string(max_euler_bernoulli_slices) +
+                     " slices for theory euler-bernoulli (its dense solve loses the lowest frequencies to round-off)");
+}
+
+}  // namespace
+
+void check_grid_size(const Settings& s, const Where& top) {
+  double points = 1;
+  for (const Setting& axis : s.axes) points *= static_cast<double>(axis.values.size());
+  if (points > max_points)
+    reject(Where{top.file, "axes", 0}, "{...}", "the grid has " + format_number(points) + " points; at most 1e9");
+}
+
+// Rounded as the time grid rounds (HistoryRequest::steps): 3e-3 / 3e-8 is 1e5, not 1e5 + 1e-11.
+void check_history_samples(const Settings& s) {
+  const HistoryRequest h{{}, s.values("history_window", HistoryRequest{}.window)[0],
+                         s.values("history_step", HistoryRequest{}.step)[0]};
+  if (h.steps() > max_history_samples) {
+    const Setting* at = s["history_step"] ? s["history_step"] : s["history_window"];
+    reject(at->where, format_number(at->values[0]),
+           "history_window / history_step = " + format_number(h.steps()) + " samples; at most 1e5");
+  }
+}
+
+namespace {
+
+// The fastest mode a point keeps (rad/s): the free bat's, or with `pivot_center` the held bat's,
+// whose modes the constraint makes (scene.cpp), never faster than the free ones.
+double fastest_kept_mode(const ModalBasis& basis, double modes, const double* pivot_center) {
+  if (!pivot_center) return basis.omega(modes == all_modes ? basis.count() - 1 : static_cast<int>(modes) + 1);
+  ImpactScene scene;
+  scene.vibrational_modes = static_cast<int>(modes);
+  scene.pivoted = scene.swing.about_center = true;
+  scene.swing.center = *pivot_center;
+  scene.z = basis.z.front();  // the held bat's frequencies do not depend on where it is struck
+  return scene_geometry(scene, basis).contact.omega.maxCoeff();
+}
+
+// RK4 at a fixed step is unstable once omega dt > 2.8 for a kept mode, and `impact` refuses such a
+// scene: so does the study, before any work, naming the combination of values that makes it.
+// ("auto" keeps modes per point and is left to the point; a stated accuracy keeps the step stable.)
+void check_rk4_stability(const Settings& s, const Where& top, const std::vector<Bat>& bats, const Setting& bat) {
+  const Setting* integrator = s["integrator"];
+  if (!integrator || static_cast<Method>(integrator->values[0]) != Method::rk4 || s["accuracy"]) return;
+  const std::vector<double> steps = s.values("dt", default_step(Method::rk4));
+  const double dt = *std::ranges::max_element(steps);
+  const std::vector<double> pivots = s.values("pivot", 0), centers = s.values("center", 0);
+  const bool all_pivoted = std::ranges::count(pivots, 0.0) == 0;
+  const Setting* modes_setting = s["modes"];
+  const Where where = modes_setting ? modes_setting->where : Where{top.file, "scene", 0}.missing("modes");
+  for (std::size_t b = 0; b < bats.size(); ++b)
+    for (const double slices : s.values("slices", bats[b].slices()))
+      for (const double theory : s.values("theory", 0)) {
+        std::optional<ModalBasis> basis;  // solved only when some point keeps a vibrational mode
+        for (const double m : s.values("modes", default_modes)) {
+          if (m == 0 || m == auto_modes) continue;
+          if (!basis) basis = compute_modes(resample(bats[b], static_cast<int>(slices)), static_cast<BeamTheory>(theory));
+          double omega = fastest_kept_mode(*basis, m, nullptr), center = 0;
+          if (omega * dt <= rk4_stability_limit) continue;
+          if (all_pivoted) {  // held, the fastest mode may be slow enough
+            omega = 0;
+            for (const double c : centers)
+              if (const double w = fastest_kept_mode(*basis, m, &c); w > omega) omega = w, center = c;
+            if (omega * dt <= rk4_stability_limit) continue;
+          }
+          const std::string value = m == all_modes ? "\"all\"" : format_number(m);
+          reject(where, value + (modes_setting ? "" : " (the default)"),
+                 "with integrator = \"rk4\" and dt = " + format_number(dt) + " s, " + bat_text(bats, bat, b) + " in " +
+                     format_number(slices) + " slices (" + to_string(static_cast<BeamTheory>(theory)) + ")" +
+                     (all_pivoted ? ", pivoted at center = " + format_number(center) + " m," : "") +
+                     " keeps a mode of omega = " + format_number(omega) + " rad/s: omega dt = " +
+                     format_number(omega * dt) + " > 2.8 is unstable; expected fewer modes, dt <= " +
+                     format_number(rk4_stability_limit / omega) + " s, accuracy, or integrator = \"exact\"");
+        }
+      }
+}
+
+}  // namespace
+
+// The impact kind's checks across keys: the swing, the bat files, z on every bat, mode counts.
+void check_bat_scene(Study& study, const Settings& s, const Where& top) {
+  const Setting& bat = *s["bat"];
+  check_swing(s, top);
+  const std::vector<Bat> bats = load_bats(study, bat);
+  check_on_bats(*s["z"], bats, bat);
+  if (const Setting* probes = s["probes"]) check_on_bats(*probes, bats, bat);
+  check_mode_counts(s, top, bats, bat);
+  check_euler_bernoulli_slices(s, top, bats, bat);
+  check_history_samples(s);
+  check_rk4_stability(s, top, bats, bat);
+}
+
+}  // namespace sweetspot::study_detail

@@ -1,0 +1,69 @@
+// load_study: a study file read, checked across keys and resolved into a Study.
+#include <algorithm>
+
+#include "study_settings.hpp"
+#include "sweetspot/impact/n2000_settings.hpp"
+#include "sweetspot/study/study_memory.hpp"
+#include "toml_values.hpp"
+
+namespace sweetspot {
+
+using namespace study_detail;
+using detail::describe;
+
+namespace {
+
+Axis make_axis(const Setting& s) {
+  Axis axis{std::string(s.spec->name), s.values, s.labels};
+  if (s.spec->type == Type::bat)
+    for (std::size_t i = 0; i < axis.size(); ++i) axis.values[i] = static_cast<double>(i);
+  return axis;
+}
+
+}  // namespace
+
+Study load_study(const fs::path& file) {
+  Study study;
+  study.file = file;
+  study.text = read_text(file);
+  const toml::table doc = parse_toml(file, study.text);
+  const Where top{&study.file, "", 0};
+  reject_unknown(top, doc, {"title", "kind", "scene", "axes", "output"});
+  if (const toml::node* title = doc.get("title")) {
+    if (!title->is_string()) reject(top.child("title", *title), describe(*title), "expected a string");
+    study.title = title->as_string()->get();
+  }
+  study.kind = read_kind(top, doc);
+  const Settings s{read_settings(top, doc, "scene", study.kind), read_settings(top, doc, "axes", study.kind)};
+  check_grid_size(s, top);
+  check_required(s, top, study.kind);
+  if (has_bat(study.kind)) check_bat_scene(study, s, top);
+  if (study.kind == StudyKind::wall) check_wall_speeds(s), check_history_samples(s);
+  study.outputs = read_outputs(top, doc, s, study.kind);
+
+  GridPoint base;
+  // The library's defaults (exact modal stepping, modes = auto: README, "Numerics"), or N2000's
+  // settings under preset = "n2000"; what the study gives overrides either. Each method has its
+  // own default step.
+  if (s["preset"]) base.scene = with_n2000_settings(base.scene);
+  for (const Setting& setting : s.scene)
+    for (const double x : setting.values) setting.spec->set(base, x);  // one value, or each of a list
+  if (!s["dt"]) base.scene.integrator.dt = default_step(base.scene.integrator.method);
+  // The comparisons cost time (Van Zandt records and integrates the force profile): only when asked.
+  base.scene.rigid_comparison = std::ranges::count(study.outputs, "vf_rigid") > 0;
+  base.scene.van_zandt_comparison = std::ranges::count(study.outputs, "vf_van_zandt") > 0;
+  base.scene.histories = std::ranges::any_of(study.outputs, is_history);
+  base.scene.force_response = std::ranges::count(study.outputs, "force_response") > 0;
+  base.scene.mode_response = std::ranges::count(study.outputs, "mode_response") > 0;
+  base.scene.integrator.find_collision_time = std::ranges::count(study.outputs, "collision_time") > 0;
+  base.scene.swing.about_center = s["center"] != nullptr;
+  study.base = base.scene;
+  study.omega_tau = base.omega_tau;
+  study.theory = base.theory;
+  study.slices = base.slices;
+  for (const Setting& axis : s.axes) study.axes.push_back(make_axis(axis));
+  check_study_memory(study, machine_memory_bytes());
+  return study;
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,195 @@
+#include "study_keys.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sweetspot/bat/bat.hpp"
+#include "sweetspot/impact/histories.hpp"
+#include "toml_values.hpp"
+
+namespace sweetspot {
+
+namespace study_detail {
+
+namespace {
+
+bool any(double) { return true; }
+bool finite(double x) { return std::isfinite(x); }
+bool positive(double x) { return std::isfinite(x) && x > 0; }
+bool step(double x) { return positive(x) && x >= finest_step; }  // as the commands' --dt
+bool on_bat(double x) { return std::isfinite(x) && x >= 0; }  // the bats' lengths: check_on_bats
+bool unit_interval(double x) { return x > 0 && x <= 1; }
+bool slice_count(double x) { return x >= min_slices && x <= max_slices; }  // as `impact --slices`
+bool mode_count(double x) { return x >= 0 && x <= 1e6; }    // "all" and "auto" are not checked
+
+constexpr KeySpec keys[] = {
+    {"bat", Type::bat, "a bat file path (relative to the study file)", any,
+     [](GridPoint& p, double x) { p.bat = static_cast<std::size_t>(x); }, impact, impact},
+    {"theory", Type::theory, "\"timoshenko\" or \"euler-bernoulli\"", any,
+     [](GridPoint& p, double x) { p.theory = static_cast<BeamTheory>(x); }},
+    {"slices", Type::integer, "an integer slice count from 4 to 4096", slice_count,
+     [](GridPoint& p, double x) { p.slices = static_cast<int>(x); }},
+    {"z", Type::number, "a finite number >= 0 (m from the knob)", on_bat,
+     [](GridPoint& p, double x) { p.scene.z = x; }, impact, impact},
+    // The wall takes only speeds > 0: check_wall_speeds.
+    {"ball_speed", Type::number, "a finite number (m/s)", finite,
+     [](GridPoint& p, double x) { p.scene.ball_speed = x; }, ball_kinds, ball_kinds},
+    {"e0", Type::number, "a number in (0, 1]", unit_interval, [](GridPoint& p, double x) { p.scene.ball.e0 = x; },
+     ball_kinds},
+    {"ball_mass", Type::number, "a finite number > 0 (kg)", positive,
+     [](GridPoint& p, double x) { p.scene.ball.mass = x; }, ball_kinds},
+    {"ball_radius", Type::number, "a finite number > 0 (m)", positive,
+     [](GridPoint& p, double x) { p.scene.ball.radius = x; }, ball_kinds},
+    {"k1", Type::number, "a finite number > 0 (N/m^a)", positive, [](GridPoint& p, double x) { p.scene.ball.k1 = x; },
+     ball_kinds},
+    {"a", Type::number, "a finite number > 0", positive, [](GridPoint& p, double x) { p.scene.ball.a = x; },
+     ball_kinds},
+    {"center", Type::number, "a finite number (m from the knob)", finite,
+     [](GridPoint& p, double x) {
+       p.scene.swing.center = x;
+       p.scene.swing.about_center = true;
+     }},
+    {"cm_speed", Type::number, "a finite number (m/s)", finite,
+     [](GridPoint& p, double x) {
+       p.scene.swing.cm_speed = x;
+       p.scene.swing.about_center = false;
+     }},
+    {"omega", Type::number, "a finite number (rad/s)", finite, [](GridPoint& p, double x) { p.scene.swing.omega = x; }},
+    {"pivot", Type::boolean, "true or false", any, [](GridPoint& p, double x) { p.scene.pivoted = x != 0; }},
+    {"modes", Type::modes, "a number of vibrational modes >= 0, \"all\" or \"auto\"", mode_count,
+     [](GridPoint& p, double x) { p.scene.vibrational_modes = static_cast<int>(x); }},
+    {"mode_tolerance", Type::number, "a finite number > 0 (relative vf error allowed the dropped modes)", positive,
+     [](GridPoint& p, double x) { p.scene.mode_tolerance = x; }},
+    {"accuracy", Type::number, "a finite number > 0 (relative vf error the integration may add)", positive,
+     [](GridPoint& p, double x) { p.scene.accuracy = x; }},
+    // N2000's settings (RK4 at 5 us, 18 modes) under the keys the study leaves out: load_study.
+    {"preset", Type::preset, "\"n2000\" (RK4 at 5 us with 18 vibrational modes)", any, [](GridPoint&, double) {},
+     ball_kinds, 0, false},
+    {"integrator", Type::integrator, "\"exact\", \"rk4\" or \"dopri\"", any,
+     [](GridPoint& p, double x) { p.scene.integrator.method = static_cast<Method>(x); }, ball_kinds, 0, false},
+    {"tolerance", Type::number, "a finite number > 0 (relative error per step, dopri)", positive,
+     [](GridPoint& p, double x) { p.scene.integrator.tolerance = x; }, ball_kinds},
+    {"dt", Type::number, "a finite number >= 5e-9 (s; a finer step could take over 1e7 steps per contact)", step,
+     [](GridPoint& p, double x) { p.scene.integrator.dt = x; }, ball_kinds},
+    {"window", Type::number, "a finite number > 0 (s)", positive,
+     [](GridPoint& p, double x) { p.scene.integrator.window = x; }, ball_kinds},
+    // Histories shape the dataset's dimensions (probe, time), so they are never axes.
+    {"probes", Type::numbers, "a list of points on the bat, each a finite number >= 0 (m from the knob)", on_bat,
+     [](GridPoint& p, double x) { p.scene.history.probes.push_back(x); }, impact, 0, false},
+    {"history_window", Type::number, "a finite number > 0 (s of history from first touch)", positive,
+     [](GridPoint& p, double x) { p.scene.history.window = x; }, ball_kinds, 0, false},
+    {"history_step", Type::number, "a finite number > 0 (s between history samples)", positive,
+     [](GridPoint& p, double x) { p.scene.history.step = x; }, ball_kinds, 0, false},
+    {"omega_tau", Type::number, "a finite number > 0 (omega tau of the toy model)", positive,
+     [](GridPoint& p, double x) { p.omega_tau = x; }, toy, toy},
+};
+constexpr OutputSpec outputs[] = {
+    {"vf", every_kind, every_kind},
+    {"vf_rigid", impact, 0},
+    {"vf_van_zandt", impact | toy, toy},
+    {"e_eff", ball_kinds, ball_kinds},
+    {"contact_time", ball_kinds, ball_kinds},
+    {"collision_time", ball_kinds, ball_kinds},
+    {"u_max", ball_kinds, 0},
+    {"peak_force", ball_kinds, 0},
+    {"impulse", ball_kinds, 0},
+    {"contacts", impact, 0},
+    {"energy_initial", every_kind, 0},
+    {"energy_ball", every_kind, toy},
+    {"energy_bat_translation", impact | toy, toy},
+    {"energy_bat_rotation", impact, 0},
+    {"energy_vibration", impact | toy, toy},
+    {"energy_ball_dissipated", ball_kinds, 0},
+    {"energy_residual", every_kind, 0},
+    {"mode_energy", impact, 0},
+    {"displacement", impact, 0},
+    {"velocity", impact, 0},
+    {"acceleration", impact, 0},
+    {"vibration_displacement", impact, 0},
+    {"vibration_velocity", impact, 0},
+    {"vibration_acceleration", impact, 0},
+    {"force", ball_kinds, 0},
+    {"compression", ball_kinds, 0},
+    {"ball_position", ball_kinds, 0},
+    {"force_response", impact, 0},
+    {"mode_response", impact, 0},
+    {"modes_kept", impact, 0},
+    {"modes_error", impact, 0},
+    {"status", every_kind, every_kind},
+};
+
+std::vector<std::string> output_list(StudyKind kind, KindSet OutputSpec::*member) {
+  std::vector<std::string> names;
+  for (const OutputSpec& o : outputs)
+    if (o.*member & bit(kind)) names.emplace_back(o.name);
+  return names;
+}
+
+}  // namespace
+
+std::string kind_text(StudyKind kind) { return detail::quote(to_string(kind)); }
+
+std::span<const KeySpec> scene_key_specs() { return keys; }
+
+std::span<const OutputSpec> output_specs() { return outputs; }
+
+const KeySpec* find_key(std::string_view name) {
+  const auto it = std::ranges::find(keys, name, &KeySpec::name);
+  return it == std::end(keys) ? nullptr : &*it;
+}
+
+std::string key_list(StudyKind kind, bool axes_only) {
+  std::string list;
+  for (const KeySpec& k : keys)
+    if ((k.kinds & bit(kind)) && (k.axis || !axes_only)) list += (list.empty() ? "" : ", ") + std::string(k.name);
+  return list;
+}
+
+}  // namespace study_detail
+
+using namespace study_detail;
+
+const char* to_string(StudyKind kind) {
+  switch (kind) {
+    case StudyKind::impact:
+      return "impact";
+    case StudyKind::wall:
+      return "wall";
+    case StudyKind::toy:
+      return "toy";
+  }
+  return "?";
+}
+
+
+bool is_probe_history(std::string_view name) {
+  static constexpr std::string_view names[] = {"displacement",           "velocity",           "acceleration",
+                                               "vibration_displacement", "vibration_velocity", "vibration_acceleration"};
+  return std::ranges::count(names, name) > 0;
+}
+
+bool is_history(std::string_view name) {
+  return is_probe_history(name) || name == "force" || name == "compression" || name == "ball_position";
+}
+
+std::vector<std::string> scene_keys(StudyKind kind) {
+  std::vector<std::string> names;
+  for (const KeySpec& k : keys)
+    if (k.kinds & bit(kind)) names.emplace_back(k.name);
+  return names;
+}
+
+const std::vector<std::string>& output_names(StudyKind kind) {
+  static const std::vector<std::string> names[] = {output_list(StudyKind::impact, &OutputSpec::kinds),
+                                                   output_list(StudyKind::wall, &OutputSpec::kinds),
+                                                   output_list(StudyKind::toy, &OutputSpec::kinds)};
+  return names[static_cast<std::size_t>(kind)];
+}
+
+const std::vector<std::string>& default_outputs(StudyKind kind) {
+  static const std::vector<std::string> names[] = {output_list(StudyKind::impact, &OutputSpec::by_default),
+                                                   output_list(StudyKind::wall, &OutputSpec::by_default),
+                                                   output_list(StudyKind::toy, &OutputSpec::by_default)};
+  return names[static_cast<std::size_t>(kind)];
+}
+}  // namespace sweetspot

@@ -1,0 +1,354 @@
+// Reading a study file's values: [scene] keys, axes (lists and ranges), the kind and [output].
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <utility>
+
+#include "study_settings.hpp"
+#include "sweetspot/input_error.hpp"
+#include "toml_values.hpp"
+
+namespace sweetspot::study_detail {
+
+using detail::describe;
+using detail::format_number;
+using detail::quote;
+
+void reject(const Where& at, const std::string& value, const std::string& expected) {
+  std::string text = at.file->string() + (at.line ? ":" + std::to_string(at.line) : "") + ": key '" + at.key + "'" +
+                     (value.empty() ? " is missing" : " = " + value) + ": " + expected;
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  throw InputError(text);
+}
+
+const Setting* find(const std::vector<Setting>& settings, std::string_view name) {
+  const auto it = std::ranges::find_if(settings, [&](const Setting& s) { return s.spec->name == name; });
+  return it == settings.end() ? nullptr : &*it;
+}
+
+namespace {
+
+// Bounds that keep a mistyped step (1e-9 for 1e-2) from exhausting memory before any work.
+constexpr double max_axis_values = 1e6;
+
+// ---- Reading values ----------------------------------------------------------------------------
+
+// toml++ keeps a table's keys sorted, but axis order is the order written: recover it.
+std::vector<std::pair<std::string_view, const toml::node*>> written_order(const toml::table& table) {
+  std::vector<std::pair<std::string_view, const toml::node*>> entries;
+  for (const auto& [key, node] : table) entries.emplace_back(key.str(), &node);
+  const auto position = [](const auto& e) {
+    const toml::source_position at = e.second->source().begin;
+    return std::pair(at.line, at.column);
+  };
+  std::ranges::sort(entries, {}, position);
+  return entries;
+}
+
+}  // namespace
+
+// Unknown keys are errors: a misspelt optional key would otherwise be silently ignored.
+void reject_unknown(const Where& at, const toml::table& table, std::initializer_list<std::string_view> known) {
+  std::string list;
+  for (const std::string_view k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+  for (const auto& [key, node] : written_order(table))
+    if (std::ranges::find(known, key) == known.end())
+      reject(at.child(key, *node), describe(*node), "unknown key; expected one of " + list);
+}
+
+namespace {
+
+const toml::table* subtable(const Where& at, const toml::table& parent, std::string_view name) {
+  const toml::node* node = parent.get(name);
+  if (node && !node->is_table())
+    reject(at.child(name, *node), describe(*node), "expected a table [" + at.child(name, *node).key + "]");
+  return node ? node->as_table() : nullptr;
+}
+
+// A scene value as a number (see Axis); `label` keeps the names of bat and theory values.
+struct Value {
+  double number = 0;
+  std::string label;
+};
+
+Value read_value(const Where& at, const KeySpec& spec, const toml::node& node) {
+  const auto bad = [&] { reject(at, describe(node), "expected " + std::string(spec.expected)); };
+  Value v;
+  if ((spec.type == Type::number || spec.type == Type::numbers) && node.is_number())
+    v.number = *node.value<double>();
+  else if ((spec.type == Type::integer || spec.type == Type::modes) && node.is_integer())
+    v.number = static_cast<double>(node.as_integer()->get());
+  else if (spec.type == Type::boolean && node.is_boolean())
+    v.number = node.as_boolean()->get();
+  else if (spec.type == Type::modes && node.value<std::string_view>() == "all")
+    return {all_modes, ""};
+  else if (spec.type == Type::modes && node.value<std::string_view>() == "auto")
+    return {auto_modes, ""};
+  else if ((spec.type == Type::bat || spec.type == Type::theory || spec.type == Type::integrator) && node.is_string())
+    v.label = node.as_string()->get();
+  else if (spec.type == Type::preset && node.value<std::string_view>() == "n2000")
+    return {0, "n2000"};
+  else
+    bad();
+  if (spec.type == Type::bat && v.label.empty()) bad();
+  try {
+    if (spec.type == Type::theory) v.number = static_cast<double>(parse_beam_theory(v.label));
+    if (spec.type == Type::integrator) v.number = static_cast<double>(parse_method(v.label));
+  } catch (const InputError&) {
+    bad();
+  }
+  if (!spec.valid(v.number)) bad();
+  return v;
+}
+
+void add(Setting& s, Value v) {
+  s.values.push_back(v.number);
+  if (s.spec->type == Type::bat || s.spec->type == Type::theory) s.labels.push_back(std::move(v.label));
+}
+
+// 15 significant digits: 0.305 + 3 * 0.01 becomes the 0.335 a reader expects.
+double tidy(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.15g", x);
+  return std::strtod(text, nullptr);
+}
+
+double range_bound(const Where& at, const toml::table& range, std::string_view name, bool integer) {
+  const toml::node* node = range.get(name);
+  if (!node) reject(at.missing(name), "", "a range needs start, stop and either step or count");
+  if (!(integer ? node->is_integer() : node->is_number()) || !std::isfinite(*node->value<double>()))
+    reject(at.child(name, *node), describe(*node), integer ? "expected an integer" : "expected a finite number");
+  return *node->value<double>();
+}
+
+// {start, stop, step}: stop is included when it lands within 1e-9 step of a point.
+std::vector<double> stepped_range(const Where& at, const toml::table& range, double start, double stop, bool integer) {
+  const double step = range_bound(at, range, "step", integer);
+  const Where where = at.child("step", *range.get("step"));
+  if (step == 0 || (stop - start) * step < 0)
+    reject(where, format_number(step),
+           "expected a step with the sign of stop - start = " + format_number(stop - start) + ", not 0");
+  const double n = std::floor((stop - start) / step + 1e-9) + 1;
+  if (n > max_axis_values)
+    reject(where, format_number(step), "gives " + format_number(n) + " values; an axis has at most 1e6");
+  std::vector<double> values;
+  for (int i = 0; i < n; ++i) values.push_back(tidy(start + i * step));
+  if (std::abs(values.back() - stop) <= 1e-9 * std::abs(step)) values.back() = stop;
+  return values;
+}
+
+// {start, stop, count[, spacing]}: count points, both ends included, evenly spaced in the value
+// or (spacing = "log") in its logarithm, as for omega tau over decades.
+std::vector<double> counted_range(const Where& at, const toml::table& range, double start, double stop, bool log) {
+  const toml::node& node = *range.get("count");
+  if (!node.is_integer() || node.as_integer()->get() < 1 || node.as_integer()->get() > max_axis_values)
+    reject(at.child("count", node), describe(node), "expected an integer count from 1 to 1e6");
+  for (const auto& [name, value] : {std::pair<std::string_view, double>{"start", start}, {"stop", stop}})
+    if (log && !(value > 0))
+      reject(at.child(name, *range.get(name)), format_number(value), "a log range needs start and stop > 0");
+  const auto n = node.as_integer()->get();
+  const auto interior = [&](double fraction) {
+    return tidy(log ? start * std::pow(stop / start, fraction) : start + fraction * (stop - start));
+  };
+  std::vector<double> values;
+  for (int i = 0; i < n; ++i)
+    values.push_back(n == 1 ? start : i + 1 == n ? stop : interior(static_cast<double>(i) / (n - 1)));
+  return values;
+}
+
+// spacing = "linear" (the default) or "log"; only a range with a count has a spacing.
+bool log_spacing(const Where& at, const toml::table& range) {
+  const toml::node* node = range.get("spacing");
+  if (!node) return false;
+  const Where where = at.child("spacing", *node);
+  const std::optional<std::string_view> name = node->value<std::string_view>();
+  if (!node->is_string() || (name != "linear" && name != "log"))
+    reject(where, describe(*node), "expected \"linear\" or \"log\"");
+  if (range.contains("step")) reject(where, describe(*node), "a spacing goes with count, not step");
+  return name == "log";
+}
+
+std::vector<double> read_range(const Where& at, const KeySpec& spec, const toml::table& range) {
+  reject_unknown(at, range, {"start", "stop", "step", "count", "spacing"});
+  const bool integer = spec.type != Type::number;  // slices, modes
+  const double start = range_bound(at, range, "start", integer), stop = range_bound(at, range, "stop", integer);
+  if (range.contains("step") == range.contains("count"))
+    reject(at, "{...}", "a range needs exactly one of step and count");
+  const bool log = log_spacing(at, range);
+  const std::vector<double> values = range.contains("step") ? stepped_range(at, range, start, stop, integer)
+                                                            : counted_range(at, range, start, stop, log);
+  for (const double x : values)
+    if (!spec.valid(x) || (integer && x != std::round(x)))
+      reject(at, format_number(x), "the range gives a value that is not " + std::string(spec.expected));
+  return values;
+}
+
+template <class T>
+std::optional<T> first_repeat(std::vector<T> items) {
+  std::ranges::sort(items);
+  const auto twice = std::ranges::adjacent_find(items);
+  return twice == items.end() ? std::nullopt : std::optional(*twice);
+}
+
+// Repeated values would make the axis useless as a coordinate (which point is z = 0.5?).
+void reject_duplicates(const Setting& s, const fs::path& dir) {
+  if (s.spec->type == Type::bat) {
+    std::vector<std::string> paths;
+    for (const std::string& label : s.labels) paths.push_back((dir / label).lexically_normal().string());
+    if (const auto twice = first_repeat(paths)) reject(s.where, quote(*twice), "names the same bat file twice");
+  } else if (const auto twice = first_repeat(s.values)) {
+    reject(s.where, format_number(*twice), "appears twice in the axis; its values must differ");
+  }
+}
+
+Setting read_axis(const Where& at, const KeySpec& spec, const toml::node& node, const fs::path& dir) {
+  Setting s{&spec, at, {}, {}};
+  const bool numeric = spec.type == Type::number || spec.type == Type::integer || spec.type == Type::modes;
+  if (const toml::array* list = node.as_array()) {
+    for (std::size_t i = 0; i < list->size(); ++i) add(s, read_value(at.item(i, (*list)[i]), spec, (*list)[i]));
+  } else if (numeric && node.is_table()) {
+    s.values = read_range(at, spec, *node.as_table());
+  } else {
+    reject(at, describe(node),
+           "expected a list of values, each " + std::string(spec.expected) +
+               (numeric ? ", or a range {start, stop, step} or {start, stop, count[, spacing = \"log\"]}" : ""));
+  }
+  if (s.values.empty()) reject(at, "[]", "an axis needs at least one value");
+  reject_duplicates(s, dir);
+  return s;
+}
+
+// A list-valued [scene] key (probes): one or more distinct values.
+Setting read_list(const Where& at, const KeySpec& spec, const toml::node& node) {
+  Setting s{&spec, at, {}, {}};
+  const toml::array* list = node.as_array();
+  if (!list || list->empty()) reject(at, describe(node), "expected " + std::string(spec.expected));
+  for (std::size_t i = 0; i < list->size(); ++i) add(s, read_value(at.item(i, (*list)[i]), spec, (*list)[i]));
+  if (const auto twice = first_repeat(s.values))
+    reject(at, format_number(*twice), "appears twice in the list; its values must differ");
+  return s;
+}
+
+// Why a key of the table cannot stand here, or empty when it can.
+std::string misplaced(const KeySpec* spec, StudyKind kind, bool axes) {
+  if (!spec) return "unknown key";
+  if (!(spec->kinds & bit(kind))) return "does not apply to kind " + kind_text(kind);
+  if (axes && !spec->axis) return "cannot be an axis";
+  return "";
+}
+
+}  // namespace
+
+std::vector<Setting> read_settings(const Where& top, const toml::table& doc, std::string_view section,
+                                   StudyKind kind) {
+  std::vector<Setting> settings;
+  const toml::table* table = subtable(top, doc, section);
+  if (!table) return settings;
+  const bool axes = section == "axes";
+  const Where at{top.file, std::string(section), 0};
+  for (const auto& [name, node] : written_order(*table)) {
+    const KeySpec* spec = find_key(name);
+    const Where where = at.child(name, *node);
+    if (const std::string why = misplaced(spec, kind, axes); !why.empty())
+      reject(where, describe(*node), why + "; expected one of " + key_list(kind, axes));
+    if (axes)
+      settings.push_back(read_axis(where, *spec, *node, top.file->parent_path()));
+    else if (spec->type == Type::numbers)
+      settings.push_back(read_list(where, *spec, *node));
+    else
+      add(settings.emplace_back(Setting{spec, where, {}, {}}), read_value(where, *spec, *node));
+  }
+  return settings;
+}
+
+
+// ---- The kind ----------------------------------------------------------------------------------
+
+constexpr StudyKind study_kinds[] = {StudyKind::impact, StudyKind::wall, StudyKind::toy};
+
+StudyKind read_kind(const Where& top, const toml::table& doc) {
+  const toml::node* node = doc.get("kind");
+  if (!node) return StudyKind::impact;
+  std::string names;
+  for (const StudyKind kind : study_kinds) {
+    if (node->value<std::string_view>() == to_string(kind)) return kind;
+    names += (names.empty() ? "" : ", ") + kind_text(kind);
+  }
+  reject(top.child("kind", *node), describe(*node), "expected one of " + names);
+}
+
+// ---- Outputs -----------------------------------------------------------------------------------
+
+std::string output_list_text(StudyKind kind) {
+  std::string names;
+  for (const std::string& n : output_names(kind)) names += (names.empty() ? "" : ", ") + n;
+  return names;
+}
+
+// Why an output cannot be asked of a study of this kind, or empty when it can.
+std::string unavailable(const toml::node& item, StudyKind kind) {
+  const std::span<const OutputSpec> specs = output_specs();
+  const auto spec = std::ranges::find(specs, item.value_or(std::string_view()), &OutputSpec::name);
+  if (!item.is_string() || spec == specs.end()) return "expected one of " + output_list_text(kind);
+  if (!(spec->kinds & bit(kind)))
+    return "does not apply to kind " + kind_text(kind) + "; expected one of " + output_list_text(kind);
+  return "";
+}
+
+std::vector<std::string> read_outputs(const Where& top, const toml::table& doc, const Settings& s, StudyKind kind) {
+  const toml::table* table = subtable(top, doc, "output");
+  const Where section{top.file, "output", 0};
+  if (table) reject_unknown(section, *table, {"variables"});
+  if (!table || !table->contains("variables")) return default_outputs(kind);
+  const toml::node& node = *table->get("variables");
+  const Where at = section.child("variables", node);
+  if (!node.is_array() || node.as_array()->empty())
+    reject(at, describe(node), "expected a non-empty list of output names");
+  // One mode dimension for the whole dataset: its length must not vary from point to point.
+  const bool fixed_modes = !find(s.axes, "modes") && s.values("modes", default_mode_count(s))[0] >= 1;
+  std::vector<std::string> outputs;
+  for (std::size_t i = 0; i < node.as_array()->size(); ++i) {
+    const toml::node& item = (*node.as_array())[i];
+    const std::string name = item.value_or(std::string());
+    if (const std::string why = unavailable(item, kind); !why.empty()) reject(at.item(i, item), describe(item), why);
+    if (std::ranges::count(outputs, name))
+      reject(at.item(i, item), describe(item), "appears twice; list each output once");
+    if (is_probe_history(name) && !s["probes"])
+      reject(at.item(i, item), describe(item), "needs probes = [z, ...] in [scene] (m from the knob)");
+    if ((name == "mode_energy" || name == "mode_response") && !fixed_modes)
+      reject(at.item(i, item), describe(item),
+             "needs a fixed number of modes >= 1 (modes a number in [scene], not \"all\", \"auto\" (the "
+             "default) or an axis)");
+    outputs.push_back(name);
+  }
+  return outputs;
+}
+
+// ---- The file ----------------------------------------------------------------------------------
+
+std::string read_text(const fs::path& file) {
+  std::error_code ignored;  // a status we cannot get reads as "not found"
+  if (!fs::is_regular_file(file, ignored))
+    throw InputError(file.string() + ": study file not found (or not a regular file)");
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in) throw InputError(file.string() + ": cannot read the study file");
+  return text.str();
+}
+
+toml::table parse_toml(const fs::path& file, const std::string& text) {
+  try {
+    return toml::parse(text, file.string());
+  } catch (const toml::parse_error& e) {
+    const toml::source_position at = e.source().begin;
+    throw InputError(file.string() + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) +
+                     ": TOML syntax error: " + std::string(e.description()));
+  }
+}
+
+}  // namespace sweetspot::study_detail
