@@ -13,6 +13,7 @@
 #include "temp_dir.hpp"
 #include "text_edit.hpp"
 #include "sweetspot/bat/bat.hpp"
+#include "sweetspot/bat/bat_design.hpp"
 #include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/input_error.hpp"
 
@@ -398,4 +399,87 @@ TEST_CASE("bat file: empty profile", "[bat_file]") {
     const BatDir dir(good_toml, "");
     require_input_error(dir.toml, {"profile.csv", "no header"});
   }
+}
+
+// ---- Bats of named dimensions and wood presets --------------------------------------------------
+
+namespace {
+
+// A small valid parametric bat; bad files are this with one line changed.
+constexpr std::string_view dimensions_toml =
+    "name = \"parametric\"\n"
+    "length = 0.84\n"
+    "[material]\n"
+    "preset = \"maple\"\n"
+    "[dimensions]\n"
+    "knob_diameter = 0.05\n"
+    "knob_length = 0.02\n"
+    "handle_diameter = 0.025\n"
+    "taper_start = 0.3\n"
+    "taper_end = 0.6\n"
+    "barrel_diameter = 0.064\n";
+
+void require_dimensions_error(std::string_view from, std::string_view to,
+                              std::initializer_list<std::string_view> fragments) {
+  const BatDir bat(with(dimensions_toml, from, to));
+  require_input_error(bat.toml, fragments);
+}
+
+}  // namespace
+
+TEST_CASE("bat file: named dimensions and a preset make a bat, constants overriding the preset", "[bat_file]") {
+  const BatDir dir(with(dimensions_toml, "preset = \"maple\"", "preset = \"maple\"\ndensity = 650"));
+  sweetspot::BatSource source;
+  const sweetspot::BatDesign design = sweetspot::load_bat_design(dir.toml, source);
+  CHECK(design.material_name == "maple");
+  CHECK(design.material.density == 650);
+  CHECK(design.material.youngs_modulus == Approx(1.1 * 12.6e9));  // maple's, FPL-GTR-190
+  CHECK(source.profile_file.empty());
+  CHECK(source.profile_text.empty());
+  CHECK(sweetspot::profile_path(dir.toml).empty());
+  CHECK(load_bat(dir.toml).slices() == 84);
+}
+
+TEST_CASE("bat file: bad named dimensions", "[bat_file]") {
+  SECTION("unknown dimension") {
+    require_dimensions_error("barrel_diameter", "barel_diameter",
+                             {"bat.toml", "key 'dimensions.barel_diameter'", "unknown", "0.064", "barrel_diameter"});
+  }
+  SECTION("missing dimension") {
+    require_dimensions_error("taper_end = 0.6\n", "", {"bat.toml", "key 'dimensions.taper_end'", "missing"});
+  }
+  SECTION("unknown end shape") {
+    require_dimensions_error("taper_end = 0.6", "taper_end = 0.6\nend = \"conical\"",
+                             {"bat.toml", "key 'dimensions.end'", "conical", "'flat', 'rounded' or 'cupped'"});
+  }
+  SECTION("an impossible bat") {
+    require_dimensions_error("barrel_diameter = 0.064", "barrel_diameter = 0.02",
+                             {"bat.toml", "key 'dimensions.barrel_diameter'", "barrel_diameter 0.02 m",
+                              "less than handle_diameter 0.025 m"});
+  }
+  SECTION("a negative wall") {
+    require_dimensions_error("taper_end = 0.6", "taper_end = 0.6\nwall_thickness = -0.002",
+                             {"bat.toml", "key 'dimensions.wall_thickness'", "-0.002", "at least 0"});
+  }
+  SECTION("an interpolation other than the frustums'") {
+    require_dimensions_error("length = 0.84", "length = 0.84\ninterpolation = \"pchip\"",
+                             {"bat.toml", "key 'interpolation'", "pchip", "[dimensions]"});
+  }
+}
+
+TEST_CASE("bat file: a shape given twice or not at all", "[bat_file]") {
+  SECTION("both profile and [dimensions]") {
+    require_dimensions_error("length = 0.84", "length = 0.84\nprofile = \"profile.csv\"",
+                             {"bat.toml", "key 'dimensions'", "key 'profile'", "one shape"});
+  }
+  SECTION("neither") {
+    const std::string material = "[material]\ndensity = 649\nyoungs_modulus = 1.8e10\nshear_modulus = 1.0e9\n";
+    const BatDir bat("name = \"none\"\nlength = 0.84\n" + material);
+    require_input_error(bat.toml, {"bat.toml", "key 'profile'", "missing", "[dimensions]"});
+  }
+}
+
+TEST_CASE("bat file: an unknown wood preset", "[bat_file]") {
+  require_dimensions_error("preset = \"maple\"", "preset = \"oak\"",
+                           {"bat.toml", "key 'material.preset'", "oak", "maple, ash, birch"});
 }
