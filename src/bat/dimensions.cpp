@@ -1,6 +1,7 @@
 #include "sweetspot/bat/dimensions.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -138,18 +139,14 @@ std::optional<RuleBreak> dimensions_rule_break(const Dimensions& d, double lengt
   return wall_rule_break(d);
 }
 
-const char* to_string(EndShape end) {
-  switch (end) {
-    case EndShape::flat: return "flat";
-    case EndShape::rounded: return "rounded";
-    case EndShape::cupped: return "cupped";
-  }
-  return "";
-}
+// The end shapes' names, in the enum's order.
+constexpr std::array<const char*, 3> end_names = {"flat", "rounded", "cupped"};
+
+const char* to_string(EndShape end) { return end_names[static_cast<std::size_t>(end)]; }
 
 EndShape parse_end_shape(std::string_view text) {
-  for (EndShape e : {EndShape::flat, EndShape::rounded, EndShape::cupped})
-    if (text == to_string(e)) return e;
+  for (std::size_t i = 0; i < end_names.size(); ++i)
+    if (text == end_names[i]) return static_cast<EndShape>(i);
   throw InputError("end '" + std::string(text) + "': expected 'flat', 'rounded' or 'cupped'");
 }
 
