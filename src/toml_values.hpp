@@ -23,6 +23,14 @@ inline std::string quote(std::string_view text) {
   return out + "\"";
 }
 
+// Names as a message lists them: "a, b, c".
+template <class Names>
+std::string join(const Names& names) {
+  std::string list;
+  for (const auto& name : names) list += (list.empty() ? "" : ", ") + std::string(name);
+  return list;
+}
+
 // A TOML value as written, with its type when that is not a plain number.
 inline std::string describe(const toml::node& node) {
   if (node.is_number()) return format_number(*node.value<double>());

@@ -13,6 +13,7 @@
 #include "temp_dir.hpp"
 #include "text_edit.hpp"
 #include "sweetspot/bat/bat.hpp"
+#include "sweetspot/bat/bat_design.hpp"
 #include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/input_error.hpp"
 
@@ -51,7 +52,7 @@ struct BatDir : TempDir {
 };
 
 // The program must refuse the bat with exit status 2 and the same one-line message.
-void require_program_error(const fs::path& toml, std::initializer_list<std::string_view> fragments) {
+void require_program_error(const fs::path& toml, const std::vector<std::string_view>& fragments) {
   const ProgramRun run = run_program("modes '" + toml.string() + "'");
   INFO("program output: " << run.output);
   CHECK(run.exit_code == 2);
@@ -61,7 +62,7 @@ void require_program_error(const fs::path& toml, std::initializer_list<std::stri
 
 // load_bat must throw an InputError whose single-line message contains every fragment, and the
 // program must exit with status 2 printing it.
-void require_input_error(const fs::path& toml, std::initializer_list<std::string_view> fragments) {
+void require_input_error(const fs::path& toml, const std::vector<std::string_view>& fragments) {
   require_program_error(toml, fragments);
   try {
     load_bat(toml);
@@ -398,4 +399,75 @@ TEST_CASE("bat file: empty profile", "[bat_file]") {
     const BatDir dir(good_toml, "");
     require_input_error(dir.toml, {"profile.csv", "no header"});
   }
+}
+
+// ---- Bats of named dimensions and wood presets --------------------------------------------------
+
+namespace {
+
+// A small valid parametric bat; bad files are this with one line changed.
+constexpr std::string_view dimensions_toml =
+    "name = \"parametric\"\n"
+    "length = 0.84\n"
+    "[material]\n"
+    "preset = \"maple\"\n"
+    "[dimensions]\n"
+    "knob_diameter = 0.05\n"
+    "knob_length = 0.02\n"
+    "handle_diameter = 0.025\n"
+    "taper_start = 0.3\n"
+    "taper_end = 0.6\n"
+    "barrel_diameter = 0.064\n";
+
+void require_dimensions_error(std::string_view from, std::string_view to,
+                              const std::vector<std::string_view>& fragments) {
+  const BatDir bat(with(dimensions_toml, from, to));
+  require_input_error(bat.toml, fragments);
+}
+
+}  // namespace
+
+TEST_CASE("bat file: named dimensions and a preset make a bat, constants overriding the preset", "[bat_file]") {
+  const BatDir dir(with(dimensions_toml, "preset = \"maple\"", "preset = \"maple\"\ndensity = 650"));
+  sweetspot::BatSource source;
+  const sweetspot::BatDesign design = sweetspot::load_bat_design(dir.toml, source);
+  CHECK(design.material_name == "maple");
+  CHECK(design.material.density == 650);
+  CHECK(design.material.youngs_modulus == Approx(1.1 * 12.6e9));  // maple's, FPL-GTR-190
+  CHECK(source.profile_file.empty());
+  CHECK(source.profile_text.empty());
+  CHECK(sweetspot::profile_path(dir.toml).empty());
+  CHECK(load_bat(dir.toml).slices() == 84);
+}
+
+TEST_CASE("bat file: bad named dimensions, a shape given twice or not at all", "[bat_file]") {
+  const struct {
+    const char* what;
+    std::string_view from, to;
+    std::vector<std::string_view> fragments;
+  } cases[] = {
+      {"unknown dimension", "barrel_diameter", "barel_diameter",
+       {"bat.toml", "key 'dimensions.barel_diameter'", "unknown", "0.064", "barrel_diameter"}},
+      {"missing dimension", "taper_end = 0.6\n", "", {"bat.toml", "key 'dimensions.taper_end'", "missing"}},
+      {"unknown end shape", "taper_end = 0.6", "taper_end = 0.6\nend = \"conical\"",
+       {"bat.toml", "key 'dimensions.end'", "conical", "'flat', 'rounded' or 'cupped'"}},
+      {"an impossible bat", "barrel_diameter = 0.064", "barrel_diameter = 0.02",
+       {"bat.toml", "key 'dimensions.barrel_diameter'", "barrel_diameter 0.02 m", "less than handle_diameter 0.025 m"}},
+      {"a negative wall", "taper_end = 0.6", "taper_end = 0.6\nwall_thickness = -0.002",
+       {"bat.toml", "key 'dimensions.wall_thickness'", "-0.002", "at least 0"}},
+      {"an interpolation other than the frustums'", "length = 0.84", "length = 0.84\ninterpolation = \"pchip\"",
+       {"bat.toml", "key 'interpolation'", "pchip", "[dimensions]"}},
+      {"both profile and [dimensions]", "length = 0.84", "length = 0.84\nprofile = \"profile.csv\"",
+       {"bat.toml", "key 'dimensions'", "key 'profile'", "one shape"}},
+      {"neither profile nor [dimensions]", dimensions_toml.substr(dimensions_toml.find("[dimensions]")), "",
+       {"bat.toml", "key 'profile'", "missing", "[dimensions]"}},
+  };
+  for (const auto& c : cases) {
+    DYNAMIC_SECTION(c.what) { require_dimensions_error(c.from, c.to, c.fragments); }
+  }
+}
+
+TEST_CASE("bat file: an unknown wood preset", "[bat_file]") {
+  require_dimensions_error("preset = \"maple\"", "preset = \"oak\"",
+                           {"bat.toml", "key 'material.preset'", "oak", "maple, ash, birch"});
 }

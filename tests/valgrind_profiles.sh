@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Memcheck on the paths that read a bat's profile: `sweetspot modes` and `sweetspot impact` on
+# Memcheck on the paths that read a bat's profile or dimensions: `sweetspot modes` and `sweetspot impact` on
 # good, edge-case and bad profiles, each with the exit status it must have. Any memory error
 # (valgrind's exit status 99) or another status fails the test.
 # Usage: valgrind_profiles.sh SWEETSPOT STUDIES_BATS_DIR
@@ -25,6 +25,9 @@ profile too_many 4097
 cp "$bats/r161.toml" "$bats/r161_profile.csv" "$dir/"
 printf 'z_center_m,outer_diameter_m\n0.21,0.06\n0.63,abc\n' > "$dir/not_a_number.csv"
 sed 's/"one_row.csv"/"not_a_number.csv"/' "$dir/one_row.toml" > "$dir/not_a_number.toml"
+# Named dimensions: a cupped end (repeated knots) and a bat they make impossible.
+cp "$bats/maple_271.toml" "$dir/"
+sed 's/^barrel_diameter = .*/barrel_diameter = 0.02/' "$bats/maple_271.toml" > "$dir/thin_barrel.toml"
 
 failures=0
 expect() {
@@ -48,4 +51,6 @@ expect 2 modes "$dir/one_row.toml"
 expect 2 modes "$dir/three_rows.toml"
 expect 2 modes "$dir/too_many.toml"
 expect 2 modes "$dir/not_a_number.toml"
+expect 0 modes "$dir/maple_271.toml" --count 3
+expect 2 modes "$dir/thin_barrel.toml"
 [ "$failures" -eq 0 ]

@@ -16,6 +16,8 @@
 
 #include <toml++/toml.h>
 
+#include "sweetspot/bat/bat_design.hpp"
+#include "sweetspot/bat/dimensions.hpp"
 #include "sweetspot/bat/profile.hpp"
 #include "sweetspot/input_error.hpp"
 #include "toml_values.hpp"
@@ -26,6 +28,8 @@ namespace {
 
 using detail::describe;
 using detail::format_number;
+using detail::join;
+using detail::quote;
 
 namespace fs = std::filesystem;
 
@@ -116,12 +120,10 @@ struct Section {
   }
 
   // Unknown keys are errors: a misspelt optional key would otherwise be silently ignored.
-  void reject_unknown(std::initializer_list<std::string_view> known) const {
-    std::string list;
-    for (const std::string_view k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+  void reject_unknown(const std::vector<std::string_view>& known) const {
     for (const auto& [key, node] : table) {
       if (std::find(known.begin(), known.end(), key.str()) != known.end()) continue;
-      fail(where(key.str()), "unknown key (value " + describe(node) + "); expected one of " + list);
+      fail(where(key.str()), "unknown key (value " + describe(node) + "); expected one of " + join(known));
     }
   }
 
@@ -144,6 +146,28 @@ struct Section {
          "value " + describe(node) + " must be a " + (nan_or_inf ? "finite " : "") + number);
   }
 
+  // A finite number of at least 0, 0 when the key is absent (a dimension the bat does not have).
+  double non_negative(std::string_view key, std::string_view unit) const {
+    if (!table.contains(key)) return 0;
+    const toml::node& node = *table.get(key);
+    const auto x = node.is_number() ? node.value<double>() : std::nullopt;
+    if (x && std::isfinite(*x) && *x >= 0) return *x;
+    fail(where(key), "value " + describe(node) + " must be a finite number of at least 0 (" + std::string(unit) + ")");
+  }
+
+  // A string naming one of a few choices, as `parse` reads it: its refusal ("...: expected 'a' or
+  // 'b'") says what was expected.
+  template <class Parse>
+  auto choice(std::string_view key, Parse parse) const {
+    const std::string value = text(key);
+    try {
+      return parse(value);
+    } catch (const InputError& e) {
+      const std::string refusal = e.what();
+      fail(where(key), "value '" + value + "'" + refusal.substr(refusal.find(": expected")));
+    }
+  }
+
   Section section(std::string_view key) const {
     const toml::node& node = require(key, "a table [" + prefix + std::string(key) + "]");
     if (!node.is_table()) fail(where(key), "value " + describe(node) + " must be a table");
@@ -161,14 +185,35 @@ toml::table parse_toml(const fs::path& file, const std::string& text) {
   }
 }
 
-Material read_material(const Section& s) {
-  s.reject_unknown({"density", "youngs_modulus", "shear_modulus", "shear_coefficient"});
-  Material m;
-  m.density = s.positive("density", "kg/m^3");
-  m.youngs_modulus = s.positive("youngs_modulus", "Pa");
-  m.shear_modulus = s.positive("shear_modulus", "Pa");
+// The wood's constants as given, or a preset's with any of them given overriding it.
+void read_material(const Section& s, BatDesign& design) {
+  s.reject_unknown({"preset", "density", "youngs_modulus", "shear_modulus", "shear_coefficient"});
+  if (s.table.contains("preset")) {
+    const std::string name = s.text("preset");
+    try {
+      set_material_preset(design, name);
+    } catch (const InputError&) {
+      fail(s.where("preset"), "value " + quote(name) + ": expected one of " + join(material_presets()));
+    }
+  }
+  Material& m = design.material;
+  const auto preset = [&](double value) { return design.material_name.empty() ? std::nullopt : std::optional(value); };
+  m.density = s.positive("density", "kg/m^3", preset(m.density));
+  m.youngs_modulus = s.positive("youngs_modulus", "Pa", preset(m.youngs_modulus));
+  m.shear_modulus = s.positive("shear_modulus", "Pa", preset(m.shear_modulus));
   m.shear_coefficient = s.positive("shear_coefficient", "dimensionless", 1.0);
-  return m;
+}
+
+// [dimensions] (dimensions.hpp): lengths in m; end and its depth and the wall optional.
+Dimensions read_dimension_table(const Section& s) {
+  std::vector<std::string_view> known = {"end"};
+  for (const DimensionField& f : dimension_fields) known.push_back(f.name);
+  s.reject_unknown(known);
+  Dimensions d;
+  for (const DimensionField& f : dimension_fields)
+    d.*f.value = f.optional ? s.non_negative(f.name, "m") : s.positive(f.name, "m");
+  if (s.table.contains("end")) d.end = s.choice("end", parse_end_shape);
+  return d;
 }
 
 // ---- The profile CSV -------------------------------------------------------------------------
@@ -327,14 +372,7 @@ void check_knots(const fs::path& file, const std::vector<Row>& rows, double leng
 ProfileOptions read_profile_options(const Section& top) {
   ProfileOptions o;
   o.interpolation_where = top.where("interpolation");
-  if (top.table.contains("interpolation")) {
-    const std::string text = top.text("interpolation");
-    try {
-      o.interpolation = parse_interpolation(text);
-    } catch (const InputError&) {
-      fail(o.interpolation_where, "value '" + text + "': expected 'stepped', 'linear' or 'pchip'");
-    }
-  }
+  if (top.table.contains("interpolation")) o.interpolation = top.choice("interpolation", parse_interpolation);
   if (const toml::node* node = top.table.get("slices")) {
     const auto n = node->value<int64_t>();
     if (!node->is_integer() || !n || *n < min_slices || *n > max_slices)
@@ -345,14 +383,9 @@ ProfileOptions read_profile_options(const Section& top) {
   return o;
 }
 
-// A knot profile's default slices: about 1 cm thick, as N2000's.
-int default_slices(double length) {
-  return std::clamp(static_cast<int>(std::lround(length / 0.01)), min_slices, max_slices);
-}
-
-// Reads the profile text into the bat's slices: rows that are slices (z_center_m) as they are,
-// knots (z_m) cut into slices by integrating A and I (profile.hpp).
-void read_profile(const fs::path& file, const std::string& text, const ProfileOptions& options, Bat& bat) {
+// Reads the profile text into the design's shape: rows that are slices (z_center_m) as stepped
+// knots at their centres, or knots (z_m) with the file's interpolation.
+void read_profile(const fs::path& file, const std::string& text, const ProfileOptions& options, BatDesign& design) {
   std::optional<Columns> columns;
   std::vector<Row> rows;
   int number = 0;
@@ -373,36 +406,81 @@ void read_profile(const fs::path& file, const std::string& text, const ProfileOp
   }
   if (!columns) fail(file.string(), "no header line; expected e.g. 'z_center_m,outer_diameter_m'");
   if (rows.empty()) fail(file.string(), "the profile has no rows; expected one row per slice or knot");
-  Profile profile;
+  Profile& profile = design.profile;
   for (const Row& row : rows) {
     profile.z.push_back(row.z);
     profile.outer.push_back(row.outer);
     if (columns->inner >= 0) profile.inner.push_back(row.inner);
   }
-  if (!columns->knots) {
+  design.slice_profile = !columns->knots;
+  if (design.slice_profile) {
     if (options.interpolation && *options.interpolation != Interpolation::stepped)
       fail(options.interpolation_where, std::string("value '") + to_string(*options.interpolation) + "' with " +
                                             file.string() + ", which lists one diameter per slice (z_center_m): " +
                                             "expected 'stepped', or knots in a z_m column");
-    check_slicing(file, rows, bat.length);
+    check_slicing(file, rows, design.length);
     if (rows.size() < static_cast<std::size_t>(min_slices))
       fail(file.string(), "the profile has " + std::to_string(rows.size()) + " rows; expected one row per slice, at least " +
                               std::to_string(min_slices) + " (as --slices)");
-    bat.set_slices(std::move(profile.outer), std::move(profile.inner));
-    if (options.slices) bat = resample(bat, *options.slices);
+    profile.interpolation = Interpolation::stepped;
     return;
   }
-  check_knots(file, rows, bat.length);
+  check_knots(file, rows, design.length);
   profile.interpolation = options.interpolation.value_or(Interpolation::linear);
-  cut_into_slices(profile, options.slices.value_or(default_slices(bat.length)), bat);
 }
 
-// The profile is named relative to the bat file, so a study directory can be moved whole.
+// The profile is named relative to the bat file, so a study directory can be moved whole; a bat
+// of named dimensions has none.
 fs::path profile_path(const fs::path& toml_path, const Section& top) {
+  if (!top.table.contains("profile") && top.table.contains("dimensions")) return {};
   return toml_path.parent_path() / top.text("profile");
 }
 
+// Exactly one shape: a profile CSV or a [dimensions] table.
+void require_one_shape(const Section& top) {
+  const bool profile = top.table.contains("profile"), dimensions = top.table.contains("dimensions");
+  if (profile && dimensions)
+    fail(top.where("dimensions"), "given with key 'profile'; expected one shape, a profile CSV or a [dimensions] table");
+  if (!profile && !dimensions)
+    fail(top.where("profile"), "missing; expected a profile CSV (profile = \"FILE.csv\") or a [dimensions] table");
+}
+
+// [dimensions] makes a linear profile (frustums): no other interpolation, no CSV to read.
+void read_dimensions(const Section& top, const ProfileOptions& options, BatDesign& design) {
+  if (options.interpolation && *options.interpolation != Interpolation::linear)
+    fail(options.interpolation_where, std::string("value '") + to_string(*options.interpolation) +
+                                          "' with [dimensions], whose taper is a frustum: expected 'linear' or no "
+                                          "key 'interpolation'");
+  design.dimensions = read_dimension_table(top.section("dimensions"));
+  if (const auto rule = dimensions_rule_break(*design.dimensions, design.length))
+    fail(top.where("dimensions." + rule->parameter), rule->message);
+}
+
 }  // namespace
+
+BatDesign load_bat_design(const std::filesystem::path& toml_path, BatSource& source) {
+  source = {toml_path, {}, read_text(toml_path), {}};
+  const toml::table doc = parse_toml(toml_path, source.toml_text);
+  const Section top{toml_path, doc, ""};
+  top.reject_unknown({"name", "length", "material", "profile", "dimensions", "interpolation", "slices"});
+  BatDesign design;
+  design.name = top.text("name");
+  design.length = top.positive("length", "m");
+  read_material(top.section("material"), design);
+  const ProfileOptions options = read_profile_options(top);
+  design.slices = options.slices;
+  require_one_shape(top);
+  if (top.table.contains("dimensions")) {
+    read_dimensions(top, options, design);
+    return design;
+  }
+  source.profile_file = profile_path(toml_path, top);
+  source.profile_text =
+      read_text(source.profile_file, " (the profile named by key 'profile' in " + toml_path.string() + ")");
+  require_text(source.profile_file, source.profile_text);  // TOML itself must be UTF-8 already
+  read_profile(source.profile_file, source.profile_text, options, design);
+  return design;
+}
 
 Bat load_bat(const std::filesystem::path& toml_path) {
   BatSource ignored;
@@ -410,22 +488,7 @@ Bat load_bat(const std::filesystem::path& toml_path) {
 }
 
 Bat load_bat(const std::filesystem::path& toml_path, BatSource& source) {
-  source.toml_file = toml_path;
-  source.toml_text = read_text(toml_path);
-  const toml::table doc = parse_toml(toml_path, source.toml_text);
-  const Section top{toml_path, doc, ""};
-  top.reject_unknown({"name", "length", "material", "profile", "interpolation", "slices"});
-  Bat bat;
-  bat.name = top.text("name");
-  bat.length = top.positive("length", "m");
-  bat.material = read_material(top.section("material"));
-  const ProfileOptions options = read_profile_options(top);
-  source.profile_file = profile_path(toml_path, top);
-  source.profile_text =
-      read_text(source.profile_file, " (the profile named by key 'profile' in " + toml_path.string() + ")");
-  require_text(source.profile_file, source.profile_text);  // TOML itself must be UTF-8 already
-  read_profile(source.profile_file, source.profile_text, options, bat);
-  return bat;
+  return build_bat(load_bat_design(toml_path, source));
 }
 
 std::filesystem::path profile_path(const std::filesystem::path& toml_path) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include "sweetspot/input_error.hpp"
 
@@ -84,28 +85,62 @@ constexpr std::array<double, 7> gl_w = {0.0647424830844348, 0.1398526957446384, 
                                         0.2089795918367347, 0.1909150252525595, 0.1398526957446384,
                                         0.0647424830844348};
 
-struct SliceMeans {
-  double outer = 0, inner = 0, area = 0, second_moment = 0;
-};
-
-SliceMeans slice_means(const Curve& outer, const Curve* inner, const std::vector<double>& breaks, double a,
-                       double b) {
+// Calls f(z, weight, outer, inner) at the Gauss-Legendre points of each piece of [a, b] between
+// the curves' breaks, the weights summing to b - a: every integral over the shape goes through it.
+template <class F>
+void integrate(const Curve& outer, const Curve* inner, const std::vector<double>& breaks, double a, double b,
+               F&& f) {
   std::vector<double> cuts = {a};
   for (double x : breaks)
     if (x > a && x < b) cuts.push_back(x);
   cuts.push_back(b);
-  SliceMeans s;
   for (std::size_t p = 0; p + 1 < cuts.size(); ++p) {
     const double width = cuts[p + 1] - cuts[p];
     for (std::size_t j = 0; j < gl_x.size(); ++j) {
-      const double z = cuts[p] + gl_x[j] * width, w = gl_w[j] * width / (b - a);
-      const double d = outer(z), di = inner ? (*inner)(z) : 0.0;
-      s.outer += w * d;
-      s.inner += w * di;
-      s.area += w * std::numbers::pi / 4 * (d * d - di * di);
-      s.second_moment += w * std::numbers::pi / 64 * (d * d * d * d - di * di * di * di);
+      const double z = cuts[p] + gl_x[j] * width;
+      f(z, gl_w[j] * width, outer(z), inner ? (*inner)(z) : 0.0);
     }
   }
+}
+
+// A section's area A and second moment I times a weight, in this order of operations (the
+// slices of every bat file stay the same to the last bit).
+double weighted_area(double w, double d, double di) { return w * std::numbers::pi / 4 * (d * d - di * di); }
+double weighted_second_moment(double w, double d, double di) {
+  return w * std::numbers::pi / 64 * (d * d * d * d - di * di * di * di);
+}
+
+// The outer and inner curves of a profile, which share its knots and so break at the same places.
+struct Shape {
+  Curve outer, inner;
+  bool hollow;
+  std::vector<double> breaks;
+
+  explicit Shape(const Profile& p)
+      : outer(p.interpolation, p.z, p.outer),
+        inner(p.interpolation, p.z, p.inner.empty() ? p.outer : p.inner),
+        hollow(!p.inner.empty()),
+        breaks(outer.breaks()) {}
+
+  template <class F>
+  void integrate(double a, double b, F&& f) const {
+    sweetspot::integrate(outer, hollow ? &inner : nullptr, breaks, a, b, std::forward<F>(f));
+  }
+};
+
+struct SliceMeans {
+  double outer = 0, inner = 0, area = 0, second_moment = 0;
+};
+
+SliceMeans slice_means(const Shape& shape, double a, double b) {
+  SliceMeans s;
+  shape.integrate(a, b, [&](double, double weight, double d, double di) {
+    const double w = weight / (b - a);
+    s.outer += w * d;
+    s.inner += w * di;
+    s.area += weighted_area(w, d, di);
+    s.second_moment += weighted_second_moment(w, d, di);
+  });
   return s;
 }
 
@@ -117,21 +152,35 @@ double Profile::diameter(double at, bool of_inner) const {
 }
 
 void cut_into_slices(const Profile& profile, int slices, Bat& bat) {
-  const Curve outer(profile.interpolation, profile.z, profile.outer);
-  const bool hollow = !profile.inner.empty();
-  const Curve inner(profile.interpolation, profile.z, hollow ? profile.inner : profile.outer);
-  // Both curves break at the same places: the knots are shared.
-  const std::vector<double> breaks = outer.breaks();
+  const Shape shape(profile);
   for (auto* v : {&bat.outer_diameter, &bat.inner_diameter, &bat.section_area, &bat.section_second_moment})
     v->clear();
   const double dz = bat.length / slices;
   for (int i = 0; i < slices; ++i) {
-    const SliceMeans m = slice_means(outer, hollow ? &inner : nullptr, breaks, i * dz, (i + 1) * dz);
+    const SliceMeans m = slice_means(shape, i * dz, (i + 1) * dz);
     bat.outer_diameter.push_back(m.outer);
-    if (hollow) bat.inner_diameter.push_back(m.inner);
+    if (shape.hollow) bat.inner_diameter.push_back(m.inner);
     bat.section_area.push_back(m.area);
     bat.section_second_moment.push_back(m.second_moment);
   }
+}
+
+MassProperties mass_properties(const Profile& profile, double length, double density) {
+  const Shape shape(profile);
+  MassProperties p;
+  double first_moment = 0;
+  shape.integrate(0, length, [&](double z, double w, double d, double di) {
+    const double m = density * weighted_area(w, d, di);
+    p.mass += m;
+    first_moment += m * z;
+  });
+  p.z_cm = first_moment / p.mass;
+  // A second pass about the CM itself: no cancellation between large moments about the knob.
+  shape.integrate(0, length, [&](double z, double w, double d, double di) {
+    p.moment_of_inertia_cm +=
+        density * (weighted_area(w, d, di) * (z - p.z_cm) * (z - p.z_cm) + weighted_second_moment(w, d, di));
+  });
+  return p;
 }
 
 const char* to_string(Interpolation interpolation) {

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <string>
 #include <system_error>
+#include <utility>
 
 #include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/input_error.hpp"
@@ -74,7 +75,8 @@ void check_not_an_input(const fs::path& written, const std::vector<fs::path>& in
 std::vector<fs::path> study_inputs(const Study& study) {
   std::vector<fs::path> inputs{study.file};
   inputs.insert(inputs.end(), study.bats.begin(), study.bats.end());
-  for (const fs::path& bat : study.bats) inputs.push_back(profile_path(bat));
+  for (const fs::path& bat : study.bats)
+    if (fs::path profile = profile_path(bat); !profile.empty()) inputs.push_back(std::move(profile));
   return inputs;
 }
 

@@ -1,5 +1,7 @@
 #pragma once
-// Reading a bat from its TOML file and the profile CSV it names (README: "Bat files").
+// Reading a bat from its TOML file and the profile CSV it names, or its [dimensions] (README:
+// "Bat files"). The file becomes a BatDesign (bat_design.hpp, load_bat_design), which becomes the
+// Bat: one path for every bat.
 #include <filesystem>
 #include <string>
 
@@ -12,7 +14,8 @@ namespace sweetspot {
 Bat load_bat(const std::filesystem::path& toml_path);
 
 // The files a bat was read from and their texts byte for byte, as load_bat parsed them: what a
-// dataset stores so that its bats can be told apart and rebuilt.
+// dataset stores so that its bats can be told apart and rebuilt. A bat of named dimensions reads
+// no profile: its profile file and text are empty.
 struct BatSource {
   std::filesystem::path toml_file, profile_file;
   std::string toml_text, profile_text;
@@ -20,7 +23,8 @@ struct BatSource {
 
 // The profile CSV a bat file names, resolved against the bat file's directory as load_bat does
 // (a run must know every file it reads: none may be its output, and all key its journal).
-// Throws InputError as load_bat does when the bat file or its key 'profile' is unreadable.
+// An empty path for a bat of [dimensions], which names no profile. Throws InputError as load_bat
+// does when the bat file or its key 'profile' is unreadable.
 std::filesystem::path profile_path(const std::filesystem::path& toml_path);
 
 // As load_bat, and fills `source` with the texts the bat was built from.

@@ -21,7 +21,9 @@ enum class Interpolation { stepped, linear, pchip };
 
 struct Profile {
   Interpolation interpolation = Interpolation::linear;
-  std::vector<double> z;      // knots, m from the knob, strictly increasing
+  // Knots, m from the knob, increasing. A knot repeated (linear only) is a step: the diameter
+  // jumps there, as at a knob's shoulder or a cupped end's bore (dimensions.hpp).
+  std::vector<double> z;
   std::vector<double> outer;  // m, at each knot
   std::vector<double> inner;  // m, at each knot; empty for a solid bat
 
@@ -33,6 +35,11 @@ struct Profile {
 // I and the diameters over it, integrated exactly for every interpolation (Gauss-Legendre on each
 // piece between knots, of a degree that covers D^4 of a cubic).
 void cut_into_slices(const Profile& profile, int slices, Bat& bat);
+
+// The exact mass properties of the shape over [0, length] at a uniform density, integrated as
+// cut_into_slices integrates (exact for linear pieces, for D^4 of cubic ones): mass, CM and the
+// MOI about the CM, each cross-section's own rotary inertia included.
+MassProperties mass_properties(const Profile& profile, double length, double density);
 
 const char* to_string(Interpolation interpolation);
 // Throws InputError for anything but "stepped", "linear" or "pchip".

@@ -1,0 +1,159 @@
+#include "sweetspot/bat/bat_design.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+
+#include "sweetspot/bat/material_presets.hpp"
+#include "sweetspot/input_error.hpp"
+#include "toml_values.hpp"
+
+namespace sweetspot {
+
+namespace {
+
+using detail::format_number;
+
+struct MaterialField {
+  std::string_view name, unit;
+  double Material::*value;
+};
+constexpr std::array<MaterialField, 4> material_fields = {{
+    {"density", "kg/m^3", &Material::density},
+    {"youngs_modulus", "Pa", &Material::youngs_modulus},
+    {"shear_modulus", "Pa", &Material::shear_modulus},
+    {"shear_coefficient", "", &Material::shear_coefficient},
+}};
+
+std::string with_unit(double value, std::string_view unit) {
+  std::string text = format_number(value);
+  if (!unit.empty()) text.append(" ").append(unit);
+  return text;
+}
+
+std::optional<RuleBreak> positive_rule_break(std::string_view name, double value, std::string_view unit) {
+  if (std::isfinite(value) && value > 0) return std::nullopt;
+  return RuleBreak{std::string(name), std::string(name) + " " + with_unit(value, unit) + " is not a positive, finite number"};
+}
+
+// A knot profile keeps its knots when the length changes: they must stay on the bat.
+std::optional<RuleBreak> knot_rule_break(const BatDesign& d) {
+  if (d.dimensions || d.slice_profile || d.profile.z.empty()) return std::nullopt;
+  const double last = d.profile.z.back();
+  if (last <= d.length * (1 + 1e-9)) return std::nullopt;  // a rounding's worth, as the file's check
+  return RuleBreak{"length", "knot at z_m = " + format_number(last) + " m lies beyond length " + format_number(d.length) +
+                                 " m; expected every knot on the bat (a length of at least " + format_number(last) + " m)"};
+}
+
+// A knot profile's default slices: about 1 cm thick, as N2000's.
+int default_slices(double length) {
+  return std::clamp(static_cast<int>(std::lround(length / 0.01)), min_slices, max_slices);
+}
+
+// The parameter's place in the design (const or not), or nullptr.
+template <class Design>
+auto find_parameter(Design& d, std::string_view name) -> decltype(&d.length) {
+  if (name == "length") return &d.length;
+  for (const MaterialField& f : material_fields)
+    if (name == f.name) return &(d.material.*f.value);
+  if (d.dimensions)
+    for (const DimensionField& f : dimension_fields)
+      if (name == f.name) return &(*d.dimensions.*f.value);
+  return nullptr;
+}
+
+// The parameter the design lacks: unknown, or a dimension of a bat given by a profile CSV.
+[[noreturn]] void no_parameter(const BatDesign& d, std::string_view name, const std::string& value) {
+  const bool dimension = std::ranges::find(dimension_fields, name, &DimensionField::name) != dimension_fields.end();
+  throw InputError("bat parameter '" + std::string(name) + "'" + value + ": " +
+                   (dimension ? "bat '" + d.name + "' is given by a profile CSV, not [dimensions]"
+                              : std::string("no such parameter")) +
+                   "; expected one of " + detail::join(design_parameters(d)));
+}
+
+}  // namespace
+
+Bat build_bat(const BatDesign& design) {
+  if (const auto rule = broken_rule(design)) throw InputError(*rule);
+  Bat bat;
+  bat.name = design.name;
+  bat.length = design.length;
+  bat.material = design.material;
+  if (design.slice_profile) {
+    bat.set_slices(design.profile.outer, design.profile.inner);
+    if (design.slices) bat = resample(bat, *design.slices);
+    return bat;
+  }
+  cut_into_slices(design_profile(design), design.slices.value_or(default_slices(design.length)), bat);
+  return bat;
+}
+
+std::vector<std::string> design_parameters(const BatDesign& design) {
+  std::vector<std::string> names = {"length"};
+  for (const MaterialField& f : material_fields) names.emplace_back(f.name);
+  if (design.dimensions)
+    for (const DimensionField& f : dimension_fields) names.emplace_back(f.name);
+  return names;
+}
+
+void set_design_parameter(BatDesign& design, std::string_view name, double value) {
+  double* parameter = find_parameter(design, name);
+  if (!parameter) no_parameter(design, name, " = " + format_number(value));
+  // One diameter per slice fixes the slices' thickness and so the length.
+  if (name == "length" && design.slice_profile && value != design.length)
+    throw InputError("bat parameter 'length' = " + format_number(value) + ": bat '" + design.name +
+                     "' lists one diameter per slice (z_center_m), which fixes its length at " +
+                     format_number(design.length) + " m; expected " + format_number(design.length) +
+                     ", or a bat of knots (z_m) or [dimensions] to vary the length");
+  *parameter = value;
+}
+
+double design_parameter(const BatDesign& design, std::string_view name) {
+  const double* parameter = find_parameter(design, name);
+  if (!parameter) no_parameter(design, name, "");
+  return *parameter;
+}
+
+const std::vector<std::string>& material_presets() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    for (const MaterialPreset& p : material_preset_list()) out.push_back(p.name);
+    return out;
+  }();
+  return names;
+}
+
+void set_material_preset(BatDesign& design, std::string_view name) {
+  const MaterialPreset* preset = find_material_preset(name);
+  if (!preset)
+    throw InputError("material preset '" + std::string(name) + "': expected one of " + detail::join(material_presets()));
+  // The shear coefficient is the beam's, not the wood's: it stays as the design has it.
+  const double shear_coefficient = design.material.shear_coefficient;
+  design.material = preset->material;
+  design.material.shear_coefficient = shear_coefficient;
+  design.material_name = preset->name;
+}
+
+std::optional<RuleBreak> rule_break(const BatDesign& design) {
+  if (auto rule = positive_rule_break("length", design.length, "m")) return rule;
+  for (const MaterialField& f : material_fields)
+    if (auto rule = positive_rule_break(f.name, design.material.*f.value, f.unit)) return rule;
+  if (design.dimensions) return dimensions_rule_break(*design.dimensions, design.length);
+  return knot_rule_break(design);
+}
+
+std::optional<std::string> broken_rule(const BatDesign& design) {
+  const auto rule = rule_break(design);
+  return rule ? std::optional(rule->message) : std::nullopt;
+}
+
+Profile design_profile(const BatDesign& design) {
+  return design.dimensions ? dimensions_profile(*design.dimensions, design.length) : design.profile;
+}
+
+MassProperties design_mass_properties(const BatDesign& design) {
+  return mass_properties(design_profile(design), design.length, design.material.density);
+}
+
+}  // namespace sweetspot
