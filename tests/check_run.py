@@ -25,5 +25,12 @@ with xr.open_dataset(path, engine="h5netcdf") as ds:
     got = float(ds.vf.sel(bat=bat).sel(z=z, ball_speed=speed, method="nearest"))
     assert got == vf, (got, vf)
     provenance = {"bat_file", "bat_toml", "bat_profile_file", "bat_profile", "bat_slices"}  # check_provenance.py
-    assert set(ds.data_vars) == {"vf", "e_eff", "contact_time", "collision_time", "status", "frequency"} | provenance
+    # what a designer checks of each bat (tests/check_design_dataset.py)
+    designer = {"bat_mass", "bat_length", "drop", "balance_point", "moi_knob", "moi_pivot", "moi_cm", "frequency",
+                "node_position"}
+    assert set(ds.data_vars) == {"vf", "e_eff", "contact_time", "collision_time", "status"} | designer | provenance
+    # R161's of physics.md §2: M = 0.869 kg, z_cm = 0.561 m; its first mode's nodes near 17 and 68 cm
+    assert abs(float(ds.bat_mass.sel(bat="R161")) - 0.869) < 1e-3 and abs(float(ds.balance_point.sel(bat="R161")) - 0.561) < 1e-3
+    nodes = ds.node_position.sel(bat="R161", node_mode=1).values
+    assert abs(nodes[0] - 0.17) < 0.01 and abs(nodes[1] - 0.68) < 0.01 and np.isnan(nodes[2:]).all(), nodes
 print("dataset ok")

@@ -83,7 +83,7 @@ void run(const ConvergenceCommandOptions& o) {
   if (!study.axes.empty())
     spdlog::info("{} has {} grid points: using grid point 0 ({})", o.study, study.points(),
                  describe_point(study, point));
-  Bat bat = load_bat(study.bats[point.bat]);
+  Bat bat = study.designs[point.design];  // as the study read and checked it
   if (point.slices > 0) bat = resample(bat, point.slices);
   const ModalBasis basis = compute_modes(bat, point.theory);
 

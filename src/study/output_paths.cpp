@@ -74,9 +74,10 @@ void check_not_an_input(const fs::path& written, const std::vector<fs::path>& in
 
 std::vector<fs::path> study_inputs(const Study& study) {
   std::vector<fs::path> inputs{study.file};
-  inputs.insert(inputs.end(), study.bats.begin(), study.bats.end());
-  for (const fs::path& bat : study.bats)
-    if (fs::path profile = profile_path(bat); !profile.empty()) inputs.push_back(std::move(profile));
+  for (const BatSource& bat : study.bat_sources) {
+    inputs.push_back(bat.toml_file);
+    if (!bat.profile_file.empty()) inputs.push_back(bat.profile_file);  // none for a bat given by dimensions
+  }
   return inputs;
 }
 

@@ -111,7 +111,7 @@ void log_rank_cores(int rank) {
                  rank, threads, cores.size(), core_list(cores));
 }
 
-// The modal bases this rank has computed, one per (bat, slices, theory).
+// The modal bases this rank has computed, one per (design, slices, theory).
 class ModalCache {
  public:
   explicit ModalCache(const Study& study) : study_(study) {}
@@ -120,11 +120,11 @@ class ModalCache {
   // changed since the study was checked, say); a failure is kept too, not retried per point.
   const ModalBasis* get(const GridPoint& p, std::string& error) {
     const bool rigid_only = p.scene.vibrational_modes == 0;
-    const Key key = std::make_tuple(p.bat, p.slices, p.theory, rigid_only);
+    const Key key = std::make_tuple(p.design, p.slices, p.theory, rigid_only);
     if (const auto it = cache_.find(key); it != cache_.end()) return &it->second;
     if (const auto it = errors_.find(key); it != errors_.end()) return error = it->second, nullptr;
     try {
-      Bat bat = study_.loaded_bats[p.bat];
+      Bat bat = study_.designs[p.design];
       if (p.slices > 0) bat = resample(bat, p.slices);
       if (!rigid_only) ++solves_;
       return &cache_.emplace(key, compute_modes(bat, p.theory, rigid_only)).first->second;
@@ -135,6 +135,12 @@ class ModalCache {
     }
   }
   int solves() const { return solves_; }
+  // Before a chunk: forgets every basis once more than cached_models are kept.
+  void make_room() {
+    if (cache_.size() + errors_.size() <= cached_models) return;
+    cache_.clear();
+    errors_.clear();
+  }
 
  private:
   using Key = std::tuple<std::size_t, int, BeamTheory, bool>;
@@ -151,6 +157,7 @@ std::vector<double> compute_chunk(const Study& study, const OutputLayout& layout
   std::vector<GridPoint> grid(points.size());
   std::vector<const ModalBasis*> bases(points.size(), nullptr);  // none for the wall and the toy
   std::vector<std::string> reasons(points.size());  // why a point failed: first its modes', then its own
+  cache.make_room();
   for (std::size_t i = 0; i < points.size(); ++i) {  // modes first, serially: the cache is not shared
     grid[i] = grid_point(study, points[i]);
     if (has_bat(grid[i].kind)) bases[i] = cache.get(grid[i], reasons[i]);
@@ -388,18 +395,6 @@ void work(const Study& study, const OutputLayout& layout, int rank) {
   log_rank_summary(rank, cache.solves(), tally, start);
 }
 
-// The vibrational frequencies (Hz) of each bat; none for the kinds without a bat, nor for
-// studies of rigid bats alone.
-std::vector<std::vector<double>> bat_frequencies(const Study& study) {
-  std::vector<std::vector<double>> f;
-  if (!keeps_vibrations(study)) return f;
-  for (Bat bat : study.loaded_bats) {
-    if (study.slices > 0) bat = resample(bat, study.slices);
-    f.push_back(compute_modes(bat, study.theory).vibrational_frequencies_hz());
-  }
-  return f;
-}
-
 }  // namespace
 
 void run_study(const Study& study, const RunOptions& options) {
@@ -420,7 +415,9 @@ void run_study(const Study& study, const RunOptions& options) {
   coordinator.run();
   const RunInfo info{ranks, omp_get_max_threads(), seconds_since(start), coordinator.resumed_points(),
                      Journal::path_for(options.output)};
-  write_dataset(options.output, make_dataset(study, layout, coordinator.rows(), bat_frequencies(study), info));
+  // Each bat's lowest modes, for the dataset: none for a study that keeps no vibrational mode.
+  const DesignModes modes = keeps_vibrations(study) ? design_modes(study, dataset_mode_count(study)) : DesignModes{};
+  write_dataset(options.output, make_dataset(study, layout, coordinator.rows(), modes, info));
   claim->journal.remove();  // the lock goes with the claim, after the journal
   coordinator.log_summary(start);
   spdlog::info("wrote {}: {} points in {:.3f} s, {:.0f} points/s", options.output.string(), study.points(),

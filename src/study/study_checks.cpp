@@ -53,72 +53,136 @@ void check_swing(const Settings& s, const Where& top) {
     reject(pivot->where, "true", "a pivoted bat is held at its rotation centre: give center, not cm_speed");
 }
 
-std::vector<Bat> load_bats(Study& study, const Setting& bat) {
-  std::vector<Bat> bats;
+// The bat files, each read once into its design.
+void load_bat_files(Study& study, const Setting& bat) {
   for (const std::string& label : bat.labels) {
     study.bats.push_back((study.file.parent_path() / label).lexically_normal());
     try {
-      bats.push_back(load_bat(study.bats.back(), study.bat_sources.emplace_back()));
+      study.bat_designs.push_back(load_bat_design(study.bats.back(), study.bat_sources.emplace_back()));
     } catch (const InputError& e) {
       reject(bat.where, quote(label), e.what());
     }
     // The dataset labels the bat coordinate by name: two bats of one name could not be told apart.
-    const auto same = std::ranges::find(study.bat_names, bats.back().name);
+    const std::string& name = study.bat_designs.back().name;
+    const auto same = std::ranges::find(study.bat_names, name);
     if (same != study.bat_names.end())
       reject(bat.where, quote(label),
              "its bat is named '" + *same + "' like the bat of " + quote(bat.labels[same - study.bat_names.begin()]) +
                  "; give each bat its own name");
-    study.bat_names.push_back(bats.back().name);
+    study.bat_names.push_back(name);
   }
-  study.loaded_bats = bats;
-  return bats;
 }
 
-std::string bat_text(const std::vector<Bat>& bats, const Setting& bat, std::size_t b) {
-  return bats[b].name + " (" + bat.labels[b] + ")";
+// A bat parameter's value as written: a number, or a preset's name.
+std::string parameter_value(const Setting& setting, std::size_t i) {
+  return setting.labels.empty() ? format_number(setting.values[i]) : quote(setting.labels[i]);
+}
+
+void set_parameter(BatDesign& design, const Setting& setting, std::size_t i, const std::string& bat) {
+  try {
+    if (setting.spec->type == Type::material)
+      set_material_preset(design, setting.labels[i]);
+    else
+      set_design_parameter(design, std::string_view(setting.name).substr(bat_parameter_prefix.size()),
+                           setting.values[i]);
+  } catch (const InputError& e) {
+    reject(setting.where, parameter_value(setting, i), std::string(e.what()) + " (bat " + bat + ")");
+  }
+}
+
+// A study builds and checks every bat before any work, and each rank keeps them all.
+constexpr double max_designs = 1e5;
+
+// Refuses a design that breaks a rule of a possible bat, at the setting of the parameter the
+// rule is about (or, when that parameter is not set by the study, the last bat-parameter axis or
+// the bat file).
+void check_possible(const BatDesign& design, const Settings& s, const std::vector<const Setting*>& axes,
+                    const std::vector<std::size_t>& at, const Setting& bat, std::size_t file,
+                    const std::string& label) {
+  const std::optional<RuleBreak> broken = rule_break(design);
+  if (!broken) return;
+  const Setting* blamed = s[std::string(bat_parameter_prefix) + broken->parameter];
+  if (!blamed) blamed = axes.empty() ? &bat : axes.back();
+  const auto k = static_cast<std::size_t>(std::ranges::find(axes, blamed) - axes.begin());
+  const std::string value = k < axes.size() ? parameter_value(*blamed, at[k])
+                            : blamed == &bat ? quote(bat.labels[file])
+                                             : parameter_value(*blamed, 0);
+  reject(blamed->where, value, "makes an impossible bat: " + broken->message + " (" + label + ")");
+}
+
+// Every design: each bat file with [scene]'s bat parameters, then each combination of the
+// bat-parameter axes (row-major, in the order written), checked against the rules of a possible
+// bat and built. Returns a label per design for messages:
+// "R161 (bats/r161.toml) with bat.density = 700".
+std::vector<std::string> build_designs(Study& study, const Settings& s, const Setting& bat) {
+  std::vector<const Setting*> axes;
+  double count = 1;
+  for (const Setting& axis : s.axes)
+    if (is_bat_parameter(axis.name)) axes.push_back(&axis), count *= static_cast<double>(axis.values.size());
+  if (count * static_cast<double>(study.bat_designs.size()) > max_designs)
+    reject(axes.back()->where, "[...]",
+           "the bat axes give " + format_number(count * static_cast<double>(study.bat_designs.size())) +
+               " bats; at most 1e5");
+  std::vector<std::string> labels;
+  for (std::size_t f = 0; f < study.bat_designs.size(); ++f) {
+    const std::string file = study.bat_names[f] + " (" + bat.labels[f] + ")";
+    BatDesign& base = study.bat_designs[f];
+    for (const Setting& setting : s.scene)
+      if (is_bat_parameter(setting.name)) set_parameter(base, setting, 0, file);
+    std::vector<std::size_t> at(axes.size(), 0);
+    for (std::size_t d = 0; d < static_cast<std::size_t>(count); ++d) {
+      BatDesign design = base;
+      std::string label = file;
+      for (std::size_t k = 0; k < axes.size(); ++k) {
+        set_parameter(design, *axes[k], at[k], file);
+        label += (k ? ", " : " with ") + axes[k]->name + " = " + parameter_value(*axes[k], at[k]);
+      }
+      check_possible(design, s, axes, at, bat, f, label);
+      study.designs.push_back(build_bat(design));
+      study.design_mass.push_back(design_mass_properties(design));
+      labels.push_back(std::move(label));
+      for (std::size_t k = axes.size(); k-- > 0 && ++at[k] == axes[k]->values.size();) at[k] = 0;
+    }
+  }
+  return labels;
 }
 
 // Points on the bat (z, probes) must be on every bat.
-void check_on_bats(const Setting& points, const std::vector<Bat>& bats, const Setting& bat) {
+void check_on_bats(const Setting& points, const std::vector<Bat>& bats, const std::vector<std::string>& labels) {
   for (const double x : points.values)
     for (std::size_t b = 0; b < bats.size(); ++b)
       if (!lies_on_bat(x, bats[b].length))
         reject(points.where, format_number(x),
                "must lie on every bat of the study: 0 to " + format_number(bats[b].length) + " m for " +
-                   bat_text(bats, bat, b));
+                   labels[b]);
 }
 
-// Vibrational modes a discretisation has (modes.cpp): Timoshenko has two degrees of freedom per
-// slice, Euler-Bernoulli two per slice boundary; two modes are rigid.
-int vibrational_modes(int slices, BeamTheory theory) {
-  return (theory == BeamTheory::timoshenko ? 2 * slices : 2 * (slices + 1)) - 2;
-}
-
-void check_mode_counts(const Settings& s, const Where& top, const std::vector<Bat>& bats, const Setting& bat) {
+void check_mode_counts(const Settings& s, const Where& top, const std::vector<Bat>& bats,
+                       const std::vector<std::string>& labels) {
   const Setting* modes = s["modes"];
   const Where where = modes ? modes->where : Where{top.file, "scene", 0}.missing("modes");
   for (std::size_t b = 0; b < bats.size(); ++b)
     for (const double slices : s.values("slices", bats[b].slices()))
       for (const double theory : s.values("theory", 0))
         for (const double m : s.values("modes", default_mode_count(s))) {
-          const int available = vibrational_modes(static_cast<int>(slices), static_cast<BeamTheory>(theory));
+          const int available = vibrational_mode_count(static_cast<int>(slices), static_cast<BeamTheory>(theory));
           if (m == all_modes || m == auto_modes || m <= available) continue;
           reject(where, format_number(m) + (modes ? "" : s["preset"] ? " (the n2000 preset)" : " (the default)"),
-                 bat_text(bats, bat, b) + " in " + format_number(slices) + " slices has " + std::to_string(available) +
+                 labels[b] + " in " + format_number(slices) + " slices has " + std::to_string(available) +
                      " vibrational modes (" + to_string(static_cast<BeamTheory>(theory)) +
                      "); expected at most that, or \"all\"");
         }
 }
 
 void check_euler_bernoulli_slices(const Settings& s, const Where& top, const std::vector<Bat>& bats,
-                                  const Setting& bat) {
+                                  const std::vector<std::string>& labels) {
   const Setting* slices = s["slices"];
   const Where where = slices ? slices->where : Where{top.file, "scene", 0}.missing("slices");
   for (std::size_t b = 0; b < bats.size(); ++b)
     for (const double n : s.values("slices", bats[b].slices()))
       for (const double theory : s.values("theory", 0))
         if (static_cast<BeamTheory>(theory) == BeamTheory::euler_bernoulli && n > max_euler_bernoulli_slices)
-          reject(where, format_number(n) + (slices ? "" : " (" + bat_text(bats, bat, b) + "'s own)"),
+          reject(where, format_number(n) + (slices ? "" : " (" + labels[b] + "'s own)"),
                  "at most " + std::to_string(max_euler_bernoulli_slices) +
                      " slices for theory euler-bernoulli (its dense solve loses the lowest frequencies to round-off)");
 }
@@ -160,7 +224,8 @@ double fastest_kept_mode(const ModalBasis& basis, double modes, const double* pi
 // RK4 at a fixed step is unstable once omega dt > 2.8 for a kept mode, and `impact` refuses such a
 // scene: so does the study, before any work, naming the combination of values that makes it.
 // ("auto" keeps modes per point and is left to the point; a stated accuracy keeps the step stable.)
-void check_rk4_stability(const Settings& s, const Where& top, const std::vector<Bat>& bats, const Setting& bat) {
+void check_rk4_stability(const Settings& s, const Where& top, const std::vector<Bat>& bats,
+                         const std::vector<std::string>& labels) {
   const Setting* integrator = s["integrator"];
   if (!integrator || static_cast<Method>(integrator->values[0]) != Method::rk4 || s["accuracy"]) return;
   const std::vector<double> steps = s.values("dt", default_step(Method::rk4));
@@ -186,7 +251,7 @@ void check_rk4_stability(const Settings& s, const Where& top, const std::vector<
           }
           const std::string value = m == all_modes ? "\"all\"" : format_number(m);
           reject(where, value + (modes_setting ? "" : " (the default)"),
-                 "with integrator = \"rk4\" and dt = " + format_number(dt) + " s, " + bat_text(bats, bat, b) + " in " +
+                 "with integrator = \"rk4\" and dt = " + format_number(dt) + " s, " + labels[b] + " in " +
                      format_number(slices) + " slices (" + to_string(static_cast<BeamTheory>(theory)) + ")" +
                      (all_pivoted ? ", pivoted at center = " + format_number(center) + " m," : "") +
                      " keeps a mode of omega = " + format_number(omega) + " rad/s: omega dt = " +
@@ -202,13 +267,15 @@ void check_rk4_stability(const Settings& s, const Where& top, const std::vector<
 void check_bat_scene(Study& study, const Settings& s, const Where& top) {
   const Setting& bat = *s["bat"];
   check_swing(s, top);
-  const std::vector<Bat> bats = load_bats(study, bat);
-  check_on_bats(*s["z"], bats, bat);
-  if (const Setting* probes = s["probes"]) check_on_bats(*probes, bats, bat);
-  check_mode_counts(s, top, bats, bat);
-  check_euler_bernoulli_slices(s, top, bats, bat);
+  load_bat_files(study, bat);
+  const std::vector<std::string> labels = build_designs(study, s, bat);
+  const std::vector<Bat>& bats = study.designs;
+  check_on_bats(*s["z"], bats, labels);
+  if (const Setting* probes = s["probes"]) check_on_bats(*probes, bats, labels);
+  check_mode_counts(s, top, bats, labels);
+  check_euler_bernoulli_slices(s, top, bats, labels);
   check_history_samples(s);
-  check_rk4_stability(s, top, bats, bat);
+  check_rk4_stability(s, top, bats, labels);
 }
 
 }  // namespace sweetspot::study_detail

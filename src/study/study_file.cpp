@@ -14,7 +14,7 @@ using detail::describe;
 namespace {
 
 Axis make_axis(const Setting& s) {
-  Axis axis{std::string(s.spec->name), s.values, s.labels};
+  Axis axis{s.name, s.values, s.labels};
   if (s.spec->type == Type::bat)
     for (std::size_t i = 0; i < axis.size(); ++i) axis.values[i] = static_cast<double>(i);
   return axis;
@@ -40,6 +40,7 @@ Study load_study(const fs::path& file) {
   if (has_bat(study.kind)) check_bat_scene(study, s, top);
   if (study.kind == StudyKind::wall) check_wall_speeds(s), check_history_samples(s);
   study.outputs = read_outputs(top, doc, s, study.kind);
+  study.sweet_spot_fraction = read_sweet_spot_fraction(top, doc);
 
   GridPoint base;
   // The library's defaults (exact modal stepping, modes = auto: README, "Numerics"), or N2000's

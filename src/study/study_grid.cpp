@@ -14,6 +14,24 @@ std::size_t Study::points() const {
   return n;
 }
 
+int vibrational_mode_count(int slices, BeamTheory theory) {
+  return (theory == BeamTheory::timoshenko ? 2 * slices : 2 * (slices + 1)) - 2;
+}
+
+std::vector<std::size_t> design_axes(const Study& study) {
+  std::vector<std::size_t> axes;
+  for (std::size_t k = 0; k < study.axes.size(); ++k)
+    if (study.axes[k].name == "bat") axes.insert(axes.begin(), k);
+    else if (is_bat_parameter(study.axes[k].name)) axes.push_back(k);
+  return axes;
+}
+
+std::size_t design_index(const Study& study, const std::vector<std::size_t>& coords) {
+  std::size_t index = 0;
+  for (const std::size_t k : design_axes(study)) index = index * study.axes[k].size() + coords[k];
+  return index;
+}
+
 GridPoint grid_point(const Study& study, std::size_t index) {
   if (index >= study.points())
     throw std::out_of_range("grid_point: index " + std::to_string(index) + " >= " + std::to_string(study.points()) +
@@ -33,11 +51,14 @@ GridPoint grid_point(const Study& study, std::size_t index) {
     index /= axis.size();
     spec->set(p, axis.values[p.coords[k]]);
   }
+  p.design = design_index(study, p.coords);
   return p;
 }
 
 namespace {
-bool model_axis(const Axis& axis) { return axis.name == "bat" || axis.name == "slices" || axis.name == "theory"; }
+bool model_axis(const Axis& axis) {
+  return axis.name == "bat" || axis.name == "slices" || axis.name == "theory" || is_bat_parameter(axis.name);
+}
 }  // namespace
 
 std::size_t models(const Study& study) {

@@ -102,6 +102,9 @@ constexpr OutputSpec outputs[] = {
     {"energy_ball_dissipated", ball_kinds, 0},
     {"energy_residual", every_kind, 0},
     {"mode_energy", impact, 0},
+    {"sweet_spot_z", impact, 0},
+    {"sweet_spot_vf", impact, 0},
+    {"sweet_spot_width", impact, 0},
     {"displacement", impact, 0},
     {"velocity", impact, 0},
     {"acceleration", impact, 0},
@@ -125,6 +128,13 @@ std::vector<std::string> output_list(StudyKind kind, KindSet OutputSpec::*member
   return names;
 }
 
+// A bat's own parameters set the point's design (design_index), not its scene.
+constexpr KeySpec bat_parameter{"bat.", Type::bat_parameter,
+                                "a finite number, the bat parameter in SI units (m, kg/m^3, Pa)", finite,
+                                [](GridPoint&, double) {}};
+constexpr KeySpec bat_material{"bat.material", Type::material, "the name of a wood preset", any,
+                               [](GridPoint&, double) {}};
+
 }  // namespace
 
 std::string kind_text(StudyKind kind) { return detail::quote(to_string(kind)); }
@@ -134,6 +144,8 @@ std::span<const KeySpec> scene_key_specs() { return keys; }
 std::span<const OutputSpec> output_specs() { return outputs; }
 
 const KeySpec* find_key(std::string_view name) {
+  if (name == bat_material.name) return &bat_material;
+  if (is_bat_parameter(name)) return &bat_parameter;
   const auto it = std::ranges::find(keys, name, &KeySpec::name);
   return it == std::end(keys) ? nullptr : &*it;
 }
@@ -148,6 +160,10 @@ std::string key_list(StudyKind kind, bool axes_only) {
 }  // namespace study_detail
 
 using namespace study_detail;
+
+bool is_bat_parameter(std::string_view axis_name) {
+  return axis_name.starts_with(bat_parameter_prefix) && axis_name.size() > bat_parameter_prefix.size();
+}
 
 const char* to_string(StudyKind kind) {
   switch (kind) {

@@ -22,7 +22,8 @@ constexpr KindSet every_kind = impact | wall | toy;
 std::string kind_text(StudyKind kind);
 
 // `numbers`: a list of numbers in [scene] (probes), never an axis; `set` takes each in turn.
-enum class Type { number, integer, boolean, bat, theory, modes, integrator, preset, numbers };
+// `material`: a wood preset's name (bat.material); `bat_parameter`: any other bat parameter.
+enum class Type { number, integer, boolean, bat, theory, modes, integrator, preset, numbers, material, bat_parameter };
 
 // One key of [scene]: how its value is read, the rule validate() in scene.cpp applies to it, how
 // it sets a grid point, and the kinds of study it belongs to and must be given in. Every value
@@ -40,7 +41,8 @@ struct KeySpec {
 
 // Every [scene] key, in the order of the table of keys.
 std::span<const KeySpec> scene_key_specs();
-// The key of that name, or nullptr.
+// The key of that name, or nullptr. Every "bat.NAME" finds the one spec of bat parameters (or of
+// bat.material): which parameters a bat has is for its design to say (study_checks.cpp).
 const KeySpec* find_key(std::string_view name);
 // The keys of a kind (only those that may be axes, with axes_only), comma-separated for messages.
 std::string key_list(StudyKind kind, bool axes_only);

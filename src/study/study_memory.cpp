@@ -6,7 +6,10 @@
 #include <cstdio>
 #include <string>
 
-#include "sweetspot/bat/bat_file.hpp"
+#include <cmath>
+#include <functional>
+
+#include "sweetspot/study/parallel.hpp"
 #include "sweetspot/input_error.hpp"
 #include "sweetspot/study/study_results.hpp"
 
@@ -26,18 +29,23 @@ std::string gigabytes(double bytes) {
   return text;
 }
 
-// The slice count of every (bat, slices, theory) a study's points use.
+// The slice counts of the (design, slices, theory) models a rank may hold at once, largest
+// first: its cache (cached_models) and the models of a chunk in flight.
 std::vector<double> model_slices(const Study& study) {
   const auto axis = [&](const char* name) { return std::ranges::find(study.axes, name, &Axis::name); };
   const std::size_t theories = axis("theory") == study.axes.end() ? 1 : axis("theory")->size();
   std::vector<double> models;
-  for (const auto& file : study.bats) {
+  for (const Bat& bat : study.designs) {
     const std::vector<double> slices =
         axis("slices") != study.axes.end()
             ? axis("slices")->values
-            : std::vector<double>{static_cast<double>(study.slices > 0 ? study.slices : load_bat(file).slices())};
+            : std::vector<double>{static_cast<double>(study.slices > 0 ? study.slices : bat.slices())};
     for (std::size_t t = 0; t < theories; ++t) models.insert(models.end(), slices.begin(), slices.end());
   }
+  const double points_per_model = static_cast<double>(study.points()) / std::max<double>(1, models.size());
+  const double held = cached_models + std::ceil(largest_chunk / points_per_model) + 1;
+  std::ranges::sort(models, std::greater<>());
+  models.resize(std::min(models.size(), static_cast<std::size_t>(held)));
   return models;
 }
 

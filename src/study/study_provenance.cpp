@@ -89,7 +89,9 @@ void add_bats(const Study& study, Dataset& d) {
     tomls.push_back(source.toml_text);
     profile_files.push_back(source.profile_file.string());
     profiles.push_back(source.profile_text);
-    slices.push_back(study.slices > 0 ? study.slices : study.loaded_bats[b].slices());
+    // The file's first design: bat parameters do not change how a profile is cut.
+    const Bat& first = study.designs[b * (study.designs.size() / study.bat_sources.size())];
+    slices.push_back(study.slices > 0 ? study.slices : first.slices());
   }
   d.variables.push_back(bat_texts("bat_file", "bat file, as the run read it", std::move(files)));
   d.variables.push_back(bat_texts("bat_toml", "text of the bat file", std::move(tomls)));

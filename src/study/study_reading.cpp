@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "study_settings.hpp"
+#include "sweetspot/bat/material_presets.hpp"
 #include "sweetspot/input_error.hpp"
 #include "toml_values.hpp"
 
@@ -26,11 +27,21 @@ void reject(const Where& at, const std::string& value, const std::string& expect
 }
 
 const Setting* find(const std::vector<Setting>& settings, std::string_view name) {
-  const auto it = std::ranges::find_if(settings, [&](const Setting& s) { return s.spec->name == name; });
+  const auto it = std::ranges::find_if(settings, [&](const Setting& s) { return s.name == name; });
   return it == settings.end() ? nullptr : &*it;
 }
 
 namespace {
+
+// A wood preset's place in material_preset_list().
+double material_preset_index(const Where& at, const std::string& name) {
+  const std::vector<MaterialPreset>& presets = material_preset_list();
+  const auto it = std::ranges::find(presets, name, &MaterialPreset::name);
+  if (it != presets.end()) return static_cast<double>(it - presets.begin());
+  std::string names;
+  for (const MaterialPreset& p : presets) names += (names.empty() ? "" : ", ") + quote(p.name);
+  reject(at, quote(name), "expected a wood preset: one of " + names);
+}
 
 // Bounds that keep a mistyped step (1e-9 for 1e-2) from exhausting memory before any work.
 constexpr double max_axis_values = 1e6;
@@ -78,7 +89,8 @@ struct Value {
 Value read_value(const Where& at, const KeySpec& spec, const toml::node& node) {
   const auto bad = [&] { reject(at, describe(node), "expected " + std::string(spec.expected)); };
   Value v;
-  if ((spec.type == Type::number || spec.type == Type::numbers) && node.is_number())
+  const bool numeric = spec.type == Type::number || spec.type == Type::numbers || spec.type == Type::bat_parameter;
+  if (numeric && node.is_number())
     v.number = *node.value<double>();
   else if ((spec.type == Type::integer || spec.type == Type::modes) && node.is_integer())
     v.number = static_cast<double>(node.as_integer()->get());
@@ -88,7 +100,9 @@ Value read_value(const Where& at, const KeySpec& spec, const toml::node& node) {
     return {all_modes, ""};
   else if (spec.type == Type::modes && node.value<std::string_view>() == "auto")
     return {auto_modes, ""};
-  else if ((spec.type == Type::bat || spec.type == Type::theory || spec.type == Type::integrator) && node.is_string())
+  else if ((spec.type == Type::bat || spec.type == Type::theory || spec.type == Type::integrator ||
+            spec.type == Type::material) &&
+           node.is_string())
     v.label = node.as_string()->get();
   else if (spec.type == Type::preset && node.value<std::string_view>() == "n2000")
     return {0, "n2000"};
@@ -101,13 +115,15 @@ Value read_value(const Where& at, const KeySpec& spec, const toml::node& node) {
   } catch (const InputError&) {
     bad();
   }
+  if (spec.type == Type::material) v.number = material_preset_index(at, v.label);
   if (!spec.valid(v.number)) bad();
   return v;
 }
 
 void add(Setting& s, Value v) {
   s.values.push_back(v.number);
-  if (s.spec->type == Type::bat || s.spec->type == Type::theory) s.labels.push_back(std::move(v.label));
+  if (s.spec->type == Type::bat || s.spec->type == Type::theory || s.spec->type == Type::material)
+    s.labels.push_back(std::move(v.label));
 }
 
 // 15 significant digits: 0.305 + 3 * 0.01 becomes the 0.335 a reader expects.
@@ -174,7 +190,7 @@ bool log_spacing(const Where& at, const toml::table& range) {
 
 std::vector<double> read_range(const Where& at, const KeySpec& spec, const toml::table& range) {
   reject_unknown(at, range, {"start", "stop", "step", "count", "spacing"});
-  const bool integer = spec.type != Type::number;  // slices, modes
+  const bool integer = spec.type == Type::integer || spec.type == Type::modes;  // slices, modes
   const double start = range_bound(at, range, "start", integer), stop = range_bound(at, range, "stop", integer);
   if (range.contains("step") == range.contains("count"))
     reject(at, "{...}", "a range needs exactly one of step and count");
@@ -207,7 +223,8 @@ void reject_duplicates(const Setting& s, const fs::path& dir) {
 
 Setting read_axis(const Where& at, const KeySpec& spec, const toml::node& node, const fs::path& dir) {
   Setting s{&spec, at, {}, {}};
-  const bool numeric = spec.type == Type::number || spec.type == Type::integer || spec.type == Type::modes;
+  const bool numeric = spec.type == Type::number || spec.type == Type::integer || spec.type == Type::modes ||
+                       spec.type == Type::bat_parameter;
   if (const toml::array* list = node.as_array()) {
     for (std::size_t i = 0; i < list->size(); ++i) add(s, read_value(at.item(i, (*list)[i]), spec, (*list)[i]));
   } else if (numeric && node.is_table()) {
@@ -254,13 +271,18 @@ std::vector<Setting> read_settings(const Where& top, const toml::table& doc, std
     const KeySpec* spec = find_key(name);
     const Where where = at.child(name, *node);
     if (const std::string why = misplaced(spec, kind, axes); !why.empty())
-      reject(where, describe(*node), why + "; expected one of " + key_list(kind, axes));
+      reject(where, describe(*node), why + "; expected one of " + key_list(kind, axes) +
+                                         (kind == StudyKind::impact ? ", or \"bat.PARAMETER\"" : ""));
+    // TOML reads bat.density = ... unquoted as a table bat = {density = ...}.
+    if (spec->type == Type::bat && node->is_table())
+      reject(where, describe(*node), "a bat parameter is a quoted key: \"bat.density\" = ..., not bat.density = ...");
     if (axes)
       settings.push_back(read_axis(where, *spec, *node, top.file->parent_path()));
     else if (spec->type == Type::numbers)
       settings.push_back(read_list(where, *spec, *node));
     else
       add(settings.emplace_back(Setting{spec, where, {}, {}}), read_value(where, *spec, *node));
+    settings.back().name = std::string(name);
   }
   return settings;
 }
@@ -302,7 +324,7 @@ std::string unavailable(const toml::node& item, StudyKind kind) {
 std::vector<std::string> read_outputs(const Where& top, const toml::table& doc, const Settings& s, StudyKind kind) {
   const toml::table* table = subtable(top, doc, "output");
   const Where section{top.file, "output", 0};
-  if (table) reject_unknown(section, *table, {"variables"});
+  if (table) reject_unknown(section, *table, {"variables", "sweet_spot_fraction"});
   if (!table || !table->contains("variables")) return default_outputs(kind);
   const toml::node& node = *table->get("variables");
   const Where at = section.child("variables", node);
@@ -323,9 +345,27 @@ std::vector<std::string> read_outputs(const Where& top, const toml::table& doc, 
       reject(at.item(i, item), describe(item),
              "needs a fixed number of modes >= 1 (modes a number in [scene], not \"all\", \"auto\" (the "
              "default) or an axis)");
+    const Setting* z = find(s.axes, "z");
+    if (name.starts_with("sweet_spot_") && (!z || z->values.size() < 3))
+      reject(at.item(i, item), describe(item), "needs a z axis of at least 3 points, to reduce v_f along it");
     outputs.push_back(name);
   }
+  // The sweet spot is found from v_f along z, which is then stored too.
+  if (std::ranges::any_of(outputs, [](const std::string& o) { return o.starts_with("sweet_spot_"); }) &&
+      !std::ranges::count(outputs, "vf"))
+    outputs.insert(outputs.begin(), "vf");
   return outputs;
+}
+
+double read_sweet_spot_fraction(const Where& top, const toml::table& doc) {
+  const toml::table* output = doc.get_as<toml::table>("output");
+  const toml::node* node = output ? output->get("sweet_spot_fraction") : nullptr;
+  if (!node) return Study{}.sweet_spot_fraction;
+  const std::optional<double> x = node->value<double>();
+  if (!node->is_number() || !(*x > 0 && *x < 1))
+    reject(Where{top.file, "output", 0}.child("sweet_spot_fraction", *node), describe(*node),
+           "expected a number in (0, 1): the fraction of the largest v_f that bounds the sweet spot");
+  return *x;
 }
 
 // ---- The file ----------------------------------------------------------------------------------

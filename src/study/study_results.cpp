@@ -6,6 +6,9 @@
 #include <map>
 #include <sstream>
 
+#include "sweetspot/study/bat_properties.hpp"
+#include "sweetspot/study/sweet_spot.hpp"
+
 namespace sweetspot {
 
 namespace {
@@ -74,11 +77,26 @@ const std::map<std::string, Description>& descriptions() {
       {"theory", {"", "beam theory"}},
       {"mode", {"1", "vibrational mode number"}},
       {"frequency", {"Hz", "frequency of each vibrational mode of each bat"}},
+      {"sweet_spot_z", {"m", "impact location of the largest vf along z, located between grid points"}},
+      {"sweet_spot_vf", {"m/s", "largest vf along z, at sweet_spot_z"}},
+      {"sweet_spot_width", {"m", "length along z where vf is within sweet_spot_fraction of its largest value"}},
   };
   return d;
 }
 
+// A bat parameter's units follow from what it is (bat_design.hpp): moduli in Pa, the density in
+// kg/m^3, the shear coefficient a ratio, a preset's name none, every dimension a length.
+Description bat_parameter_description(const std::string& name) {
+  static const std::string long_name = "bat parameter";
+  if (name.ends_with("material")) return {"", "wood preset of the bat"};
+  if (name.ends_with("modulus")) return {"Pa", long_name.c_str()};
+  if (name.ends_with("density")) return {"kg m-3", long_name.c_str()};
+  if (name.ends_with("shear_coefficient")) return {"1", long_name.c_str()};
+  return {"m", long_name.c_str()};
+}
+
 Description describe(const std::string& name) {
+  if (is_bat_parameter(name)) return bat_parameter_description(name);
   const auto it = descriptions().find(name);
   return it == descriptions().end() ? Description{"1", ""} : it->second;
 }
@@ -122,7 +140,7 @@ Coordinate axis_coordinate(const Study& study, const Axis& axis) {
   Coordinate c{axis.name, d.units, d.long_name, {}, {}};
   if (axis.name == "bat") {
     for (double index : axis.values) c.labels.push_back(study.bat_names[static_cast<std::size_t>(index)]);
-  } else if (axis.name == "theory") {
+  } else if (axis.name == "theory" || !axis.labels.empty()) {
     c.labels = axis.labels;
   } else if (axis.name == "slices") {
     c.integers = integers(axis.values);
@@ -166,6 +184,8 @@ Variable output_variable(const std::string& name, std::vector<std::string> dims,
   }
   return v;
 }
+
+bool is_sweet_spot(const std::string& name) { return name.starts_with("sweet_spot_"); }
 
 bool is_scalar(const std::string& name) {
   return !(name == "mode_energy" || name == "mode_response" || name == "force_response" || is_history(name));
@@ -214,22 +234,22 @@ std::vector<double> array_value(const ImpactResult& r, const std::string& name) 
 
 }  // namespace
 
-int dataset_mode_count(const Study& study, const std::vector<std::vector<double>>& bat_frequencies_hz) {
+int dataset_mode_count(const Study& study) {
   const auto axis = std::ranges::find(study.axes, "modes", &Axis::name);
   const std::vector<double> counts = axis == study.axes.end() ? std::vector<double>{static_cast<double>(study.base.vibrational_modes)}
                                                               : axis->values;
-  // "all" or "auto" somewhere: as many as a bat has (auto may keep any of them).
-  std::size_t most = 0;
-  if (std::ranges::any_of(counts, [](double n) { return n < 0; })) {
-    for (const std::vector<double>& f : bat_frequencies_hz) most = std::max(most, f.size());
-    return static_cast<int>(most);
-  }
-  return static_cast<int>(std::ranges::max(counts));
+  const int fixed = static_cast<int>(std::ranges::max(counts));
+  int available = 0;  // as many as the bat with the most has
+  for (const Bat& bat : study.designs)
+    available = std::max(available, vibrational_mode_count(study.slices > 0 ? study.slices : bat.slices(), study.theory));
+  if (std::ranges::count(counts, all_modes)) return available;
+  if (std::ranges::count(counts, auto_modes)) return std::max(fixed, std::min(available, auto_frequency_modes));
+  return fixed;
 }
 
 OutputLayout::OutputLayout(const Study& study) : names(study.outputs) {
   for (const std::string& name : names) {
-    std::size_t values = 1;
+    std::size_t values = is_sweet_spot(name) ? 0 : 1;  // a reduction over z, not a point's value
     for (const std::string& dim : extra_dims(study, name)) values *= dim_size(study, dim);
     offsets.push_back(width);
     widths.push_back(static_cast<int>(values));
@@ -239,6 +259,7 @@ OutputLayout::OutputLayout(const Study& study) : names(study.outputs) {
 
 void OutputLayout::extract(const ImpactResult& result, double* row) const {
   for (std::size_t i = 0; i < names.size(); ++i) {
+    if (widths[i] == 0) continue;
     if (is_scalar(names[i])) {
       row[offsets[i]] = scalar_value(result, names[i]);
       continue;
@@ -253,12 +274,12 @@ void OutputLayout::extract(const ImpactResult& result, double* row) const {
 namespace {
 
 // The bat's own dimensions: `bat` when no axis sweeps it, and `mode` (frequencies, mode_energy).
-void add_bat_coordinates(const Study& study, const std::vector<std::vector<double>>& bat_frequencies_hz, Dataset& d) {
+void add_bat_coordinates(const Study& study, Dataset& d) {
   if (std::ranges::none_of(study.axes, [](const Axis& axis) { return axis.name == "bat"; }))
     d.coordinates.push_back({"bat", "", "bat", {}, {study.bat_names.front()}});
   if (!keeps_vibrations(study)) return;
   Coordinate mode{"mode", "1", describe("mode").long_name, {}, {}};
-  for (int n = 1; n <= dataset_mode_count(study, bat_frequencies_hz); ++n) mode.integers.push_back(n);
+  for (int n = 1; n <= dataset_mode_count(study); ++n) mode.integers.push_back(n);
   d.coordinates.push_back(mode);
 }
 
@@ -292,6 +313,7 @@ void add_outputs(const Study& study, const OutputLayout& layout, const std::vect
                  const std::vector<std::string>& dims, Dataset& d) {
   const std::size_t points = study.points();
   for (std::size_t i = 0; i < layout.names.size(); ++i) {
+    if (layout.widths[i] == 0) continue;  // reductions: add_sweet_spots
     std::vector<double> values(points * layout.widths[i]);
     for (std::size_t p = 0; p < points; ++p)
       std::copy_n(rows.begin() + p * layout.width + layout.offsets[i], layout.widths[i],
@@ -306,12 +328,29 @@ void add_outputs(const Study& study, const OutputLayout& layout, const std::vect
   }
 }
 
-Variable frequency_variable(const Study& study, const std::vector<std::vector<double>>& bat_frequencies_hz) {
-  const int modes = dataset_mode_count(study, bat_frequencies_hz);
-  std::vector<double> frequencies;
-  for (const auto& f : bat_frequencies_hz)
-    for (int n = 0; n < modes; ++n) frequencies.push_back(n < static_cast<int>(f.size()) ? f[n] : missing);
-  return output_variable("frequency", {"bat", "mode"}, std::move(frequencies));
+// The sweet spot of every line of vf along z: the outputs over the other axes.
+void add_sweet_spots(const Study& study, const OutputLayout& layout, const std::vector<double>& rows, Dataset& d) {
+  const auto asked = [&](const char* name) { return std::ranges::count(study.outputs, name) > 0; };
+  if (!asked("sweet_spot_z") && !asked("sweet_spot_vf") && !asked("sweet_spot_width")) return;
+  const std::size_t zk = static_cast<std::size_t>(std::ranges::find(study.axes, "z", &Axis::name) - study.axes.begin());
+  const Axis& z = study.axes[zk];
+  const int vf = layout.offsets[std::ranges::find(layout.names, "vf") - layout.names.begin()];
+  std::size_t inner = 1;  // points between neighbours along z: the axes after it
+  for (std::size_t k = zk + 1; k < study.axes.size(); ++k) inner *= study.axes[k].size();
+  const std::size_t lines = study.points() / z.size();
+  std::vector<double> at(lines), peak(lines), width(lines), line(z.size());
+  for (std::size_t l = 0; l < lines; ++l) {
+    const std::size_t first = (l / inner) * inner * z.size() + l % inner;
+    for (std::size_t j = 0; j < z.size(); ++j) line[j] = rows[(first + j * inner) * layout.width + vf];
+    const SweetSpot spot = sweet_spot(z.values, line, study.sweet_spot_fraction);
+    at[l] = spot.z, peak[l] = spot.vf, width[l] = spot.width;
+  }
+  std::vector<std::string> dims;
+  for (const Axis& axis : study.axes)
+    if (axis.name != "z") dims.push_back(axis.name);
+  for (auto [name, values] : {std::pair{"sweet_spot_z", &at}, {"sweet_spot_vf", &peak}, {"sweet_spot_width", &width}})
+    if (asked(name)) d.variables.push_back(output_variable(name, dims, std::move(*values)));
+  d.variables.back().text_attributes.push_back({"sweet_spot_fraction", std::to_string(study.sweet_spot_fraction)});
 }
 
 }  // namespace
@@ -323,7 +362,7 @@ bool keeps_vibrations(const Study& study) {
 }
 
 Dataset make_dataset(const Study& study, const OutputLayout& layout, const std::vector<double>& rows,
-                     const std::vector<std::vector<double>>& bat_frequencies_hz, const RunInfo& info) {
+                     const DesignModes& modes, const RunInfo& info) {
   Dataset d;
   std::vector<std::string> dims;
   for (const Axis& axis : study.axes) {
@@ -332,10 +371,11 @@ Dataset make_dataset(const Study& study, const OutputLayout& layout, const std::
   }
   // Wall and toy studies have no bat: no bat or mode dimension and no frequencies; a study of
   // rigid bats alone computed no modes, so it stores no frequencies either.
-  if (has_bat(study.kind)) add_bat_coordinates(study, bat_frequencies_hz, d);
+  if (has_bat(study.kind)) add_bat_coordinates(study, d);
   add_history_coordinates(study, d);
   add_outputs(study, layout, rows, dims, d);
-  if (!bat_frequencies_hz.empty()) d.variables.push_back(frequency_variable(study, bat_frequencies_hz));
+  add_sweet_spots(study, layout, rows, d);
+  if (has_bat(study.kind)) add_design_variables(study, modes, dataset_mode_count(study), d);
 
   add_provenance(study, info, d);
   return d;

@@ -45,7 +45,8 @@ struct Setting {
   const KeySpec* spec;
   Where where;
   std::vector<double> values;
-  std::vector<std::string> labels;  // bat and theory only
+  std::vector<std::string> labels;  // bat, theory and bat.material only
+  std::string name = std::string(spec->name);  // the key as written ("z", "bat.barrel_diameter")
 };
 
 const Setting* find(const std::vector<Setting>& settings, std::string_view name);
@@ -75,6 +76,7 @@ StudyKind read_kind(const Where& top, const toml::table& doc);
 // The keys of [scene] or [axes] (`section`), in the order written.
 std::vector<Setting> read_settings(const Where& top, const toml::table& doc, std::string_view section, StudyKind kind);
 std::vector<std::string> read_outputs(const Where& top, const toml::table& doc, const Settings& s, StudyKind kind);
+double read_sweet_spot_fraction(const Where& top, const toml::table& doc);
 
 // ---- Checks across keys (study_checks.cpp) ----
 void check_grid_size(const Settings& s, const Where& top);

@@ -1,7 +1,8 @@
 #pragma once
 // Runs a study over MPI ranks and OpenMP threads (design.md). Rank 0 coordinates: it hands out
 // chunks of points in model-major order, so a chunk reuses one modal basis, and computes chunks
-// itself between requests. Every rank caches the modes of each (bat, slices, theory) it meets.
+// itself between requests. Every rank caches the modes of each (design, slices, theory) it meets,
+// up to cached_models of them between chunks.
 // Each point is computed alone and stored by its grid index, so the dataset is bitwise the same
 // for any number of ranks and threads.
 #include <filesystem>
@@ -12,6 +13,11 @@
 namespace sweetspot {
 
 enum class Verbosity { quiet, normal, verbose };
+
+// Tasks run model-major, so a rank meets few models again: once it keeps more than this many
+// modal bases, it forgets them all before its next chunk, which bounds memory over thousands of
+// bats (a model met again is solved again, to the same bits).
+inline constexpr std::size_t cached_models = 16;
 
 struct RunOptions {
   std::filesystem::path output;  // the dataset; OUT.journal and OUT.lock beside it while running

@@ -58,6 +58,7 @@
 #include <string_view>
 #include <vector>
 
+#include "sweetspot/bat/bat_design.hpp"
 #include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/bat/modes.hpp"
 #include "sweetspot/impact/scene.hpp"
@@ -94,10 +95,15 @@ struct Study {
   // empty for the kinds without a bat.
   std::vector<std::filesystem::path> bats;
   std::vector<std::string> bat_names;
-  // Each bat as read when the study was loaded, and the texts it was read from: every rank
-  // computes with these, and the dataset stores the texts, so the two cannot differ.
-  std::vector<Bat> loaded_bats;
+  // Each bat file's design as read when the study was loaded, with [scene]'s bat parameters set,
+  // and the texts it was read from: the dataset stores the texts.
+  std::vector<BatDesign> bat_designs;
   std::vector<BatSource> bat_sources;
+  // Every bat the points strike, built and checked when the study was loaded: one per
+  // combination of the bat dimensions (design_axes), row-major over them, so every rank computes
+  // with these. Without bat-parameter axes, one per bat file.
+  std::vector<Bat> designs;
+  std::vector<MassProperties> design_mass;  // the exact mass properties of each design
   // The [scene] values over the defaults; axes set their own keys per grid point.
   BeamTheory theory = BeamTheory::timoshenko;
   int slices = 0;  // 0: the profile's own slice count
@@ -105,6 +111,7 @@ struct Study {
   double omega_tau = 0;              // toy
   std::vector<Axis> axes;            // in the order written
   std::vector<std::string> outputs;  // in the order written
+  double sweet_spot_fraction = 0.01;  // [output]: the sweet spot's zone is within this of the peak vf
 
   // Number of grid points: the product of the axis sizes (1 without axes).
   std::size_t points() const;
@@ -121,18 +128,36 @@ struct GridPoint {
   StudyKind kind = StudyKind::impact;
   ImpactScene scene;
   double omega_tau = 0;
-  std::size_t bat = 0;  // index into Study::bats
+  std::size_t bat = 0;     // index into Study::bats
+  std::size_t design = 0;  // index into Study::designs
   int slices = 0;       // 0: the profile's own
   BeamTheory theory = BeamTheory::timoshenko;
   std::vector<std::size_t> coords;  // one per axis
 };
+
+// Bat-parameter axes are named "bat." followed by the parameter ("bat.barrel_diameter",
+// "bat.density"; "bat.material" takes preset names): bat_design.hpp.
+inline constexpr std::string_view bat_parameter_prefix = "bat.";
+bool is_bat_parameter(std::string_view axis_name);
+
+// The dimensions over which bats differ, as indices into Study::axes: the bat axis (if any)
+// first, then every bat-parameter axis in the order written. Study::designs is row-major over
+// them; the dataset stores what a designer checks of each bat (mass, balance, MOI, frequencies)
+// over them.
+std::vector<std::size_t> design_axes(const Study& study);
+// The design of a point with these coordinates (one per axis).
+std::size_t design_index(const Study& study, const std::vector<std::size_t>& coords);
+
+// Vibrational modes a discretisation has (modes.cpp): Timoshenko has two degrees of freedom per
+// slice, Euler-Bernoulli two per slice boundary; two modes are rigid.
+int vibrational_mode_count(int slices, BeamTheory theory);
 
 // Grid point `index` in row-major order over the axes (last axis fastest); throws
 // std::out_of_range for index >= points().
 GridPoint grid_point(const Study& study, std::size_t index);
 
 // The order to compute points in. A point's modal basis depends only on its model, the triple
-// (bat, slices, theory), so tasks run model-major: all points of one model in one contiguous
+// (design, slices, theory), so tasks run model-major: all points of one model in one contiguous
 // run of points() / models() tasks, models in row-major order of their axes; within a model,
 // row-major over the other axes. A worker's modal cache then meets each model once.
 std::size_t models(const Study& study);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "sweetspot/impact/impact.hpp"
+#include "sweetspot/study/bat_properties.hpp"
 #include "sweetspot/study/dataset.hpp"
 #include "sweetspot/study/study.hpp"
 #include "sweetspot/study/study_provenance.hpp"
@@ -25,16 +26,21 @@ struct OutputLayout {
   void extract(const ImpactResult& result, double* row) const;
 };
 
-// Rows of every point (row-major over the axes) and the vibrational frequencies (Hz) of each bat
-// (none for the kinds without a bat), with the provenance of study_provenance.hpp.
+// Rows of every point (row-major over the axes), the sweet spots along z when asked, what a
+// designer checks of each bat (bat_properties.hpp; `modes` empty for the kinds without a bat or a
+// study of rigid bats), with the provenance of study_provenance.hpp.
 Dataset make_dataset(const Study& study, const OutputLayout& layout, const std::vector<double>& rows,
-                     const std::vector<std::vector<double>>& bat_frequencies_hz, const RunInfo& info);
+                     const DesignModes& modes, const RunInfo& info);
 
 // Whether any point of the study keeps a vibrational mode (else no modes are computed at all).
 bool keeps_vibrations(const Study& study);
 
-// How many modes the dataset's `mode` dimension has: the largest count the study keeps, or with
-// "all" or "auto" anywhere, as many as the bat with the most has.
-int dataset_mode_count(const Study& study, const std::vector<std::vector<double>>& bat_frequencies_hz);
+// With modes = "auto", `frequency` holds each bat's lowest this many modes (`sweetspot modes`
+// lists them all): auto keeps a point's modes as its pulse needs, rarely more than these.
+inline constexpr int auto_frequency_modes = 10;
+
+// How many modes the dataset's `mode` dimension has: the largest count the study keeps; with
+// "all" anywhere, as many as the bat with the most has; with "auto", auto_frequency_modes.
+int dataset_mode_count(const Study& study);
 
 }  // namespace sweetspot

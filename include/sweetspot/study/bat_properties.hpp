@@ -1,0 +1,39 @@
+#pragma once
+// What a bat designer checks of every bat of a study, stored over the study's bat dimensions (the
+// bat axis and the bat-parameter axes, design_axes): mass, length, drop, balance point, moments of
+// inertia about the knob, the 6-in pivot and the centre of mass (exact, from the design's shape),
+// and the lowest vibrational frequencies and their nodes (from the bat's modes as the study cuts it).
+#include <vector>
+
+#include "sweetspot/study/dataset.hpp"
+#include "sweetspot/study/study.hpp"
+
+namespace sweetspot {
+
+// The pivot of the swing-weight (MOI) measurement and of the bat-test rig, 6 in from the knob
+// (ASTM F2398; NCAA).
+inline constexpr double swing_weight_pivot = 0.1524;  // m
+
+// The rules' "drop": length in inches minus weight in ounces.
+double bat_drop(double length_m, double mass_kg);
+
+// Frequencies (Hz) of each design's vibrational modes, the first `modes`, and the nodes (m from
+// the knob) of its first three; empty for a study that keeps no vibrational mode (no eigen-solve).
+struct DesignModes {
+  std::vector<std::vector<double>> frequencies_hz;
+  std::vector<std::vector<std::vector<double>>> nodes;  // [design][mode 1..3][node]
+};
+
+// Solves each design's modes (as the study's base slices and theory cut it), spread over the
+// OpenMP threads.
+DesignModes design_modes(const Study& study, int modes);
+
+// The dimensions the designer's variables run over: "bat", then each bat-parameter axis.
+std::vector<std::string> design_dims(const Study& study);
+
+// Adds bat_mass, bat_length, drop, balance_point, moi_knob, moi_pivot, moi_cm over design_dims,
+// and (with modes) frequency over design_dims + mode and node_position over design_dims +
+// node_mode + node, with the coordinates node_mode and node.
+void add_design_variables(const Study& study, const DesignModes& modes, int mode_count, Dataset& d);
+
+}  // namespace sweetspot
