@@ -42,10 +42,12 @@ def at(ds, da):
         if d in (x_dim, y_dim):
             continue
         values = ds[d].values
-        if d in held:
-            value = held[d] if values.dtype.kind in "US" else float(held[d])
-            chosen[d] = values[np.argmin([v != value for v in values])] if values.dtype.kind in "US" else \
-                values[np.argmin(np.abs(values - value))]
+        if d in held and values.dtype.kind in "USO":  # names (bat.material): as given
+            if held[d] not in list(values):
+                sys.exit(f"{d}={held[d]}: expected one of {', '.join(map(str, values))}")
+            chosen[d] = held[d]
+        elif d in held:  # numbers: the nearest value of the axis
+            chosen[d] = values[np.argmin(np.abs(values - float(held[d])))]
         else:
             chosen[d] = values[len(values) // 2]
     return da.sel(chosen).transpose(y_dim, x_dim), chosen

@@ -20,9 +20,11 @@
 //            wall: ball_speed (> 0), e0, ball_mass, ball_radius, k1, a, integrator, dt, tolerance,
 //            window, preset, history_window, history_step
 //            toy: omega_tau (> 0)
+//            impact also: "bat.PARAMETER" (quoted), a parameter of every bat (bat_design.hpp)
 //   [axes]   any [scene] key of the kind but integrator, preset and the histories' keys, as a
 //            list of values (bat: paths; theory: names; pivot: booleans; modes: counts, "all" or
-//            "auto"), or for numbers as a range table
+//            "auto"; "bat.material": wood presets; "bat.PARAMETER": numbers, one bat per
+//            combination), or for numbers as a range table
 //            { start, stop, step } (stop included when it lands within 1e-9 step) or
 //            { start, stop, count } (count points, both ends included), the latter with
 //            spacing = "log" for points spaced evenly in the logarithm (start, stop > 0). An axis
@@ -37,6 +39,10 @@
 //            histories force, compression and ball_position; toy: vf
 //            (v_f / v_i), vf_van_zandt, status and the energies initial, ball,
 //            bat_translation, vibration, residual (model units, m = k = v_i = 1).
+//            sweet_spot_z, sweet_spot_vf, sweet_spot_width: v_f reduced along a z axis of at least
+//            3 points (sweet_spot.hpp), over the other axes; vf is then stored too.
+//            sweet_spot_fraction (default 0.01): how near the peak v_f the sweet spot's zone is.
+//            Always, over the bat dimensions: what a designer checks of each bat (bat_properties.hpp).
 //            "mode_energy" adds a mode dimension of length base.vibrational_modes, so it needs
 //            one mode count >= 1 for the whole study: modes a number in [scene] (or 18 under
 //            preset = "n2000"), not "all", not "auto" and not an axis; so does "mode_response" (R_n per kept vibrational
