@@ -416,8 +416,12 @@ void run_study(const Study& study, const RunOptions& options) {
   const RunInfo info{ranks, omp_get_max_threads(), seconds_since(start), coordinator.resumed_points(),
                      Journal::path_for(options.output)};
   // Each bat's lowest modes, for the dataset: none for a study that keeps no vibrational mode.
+  const auto output_start = Clock::now();
   const DesignModes modes = keeps_vibrations(study) ? design_modes(study, dataset_mode_count(study)) : DesignModes{};
+  const double modes_seconds = seconds_since(output_start);
   write_dataset(options.output, make_dataset(study, layout, coordinator.rows(), modes, info));
+  spdlog::info("rank 0: the bats' modes for the dataset in {:.3f} s, the dataset in {:.3f} s", modes_seconds,
+               seconds_since(output_start) - modes_seconds);
   claim->journal.remove();  // the lock goes with the claim, after the journal
   coordinator.log_summary(start);
   spdlog::info("wrote {}: {} points in {:.3f} s, {:.0f} points/s", options.output.string(), study.points(),
