@@ -4,6 +4,10 @@
 #include <numbers>
 #include <string>
 
+#include <Eigen/SparseCore>
+
+#include "bat/banded_eigensolver.hpp"
+#include "bat/beam_flexibility.hpp"
 #include "bat/beam_system.hpp"
 #include "sweetspot/input_error.hpp"
 
@@ -32,21 +36,24 @@ void solve(const BeamSystem& s, bool diagonal_mass, VectorXd& omega_squared, Mat
 
 // Replaces the two near-zero modes by the exact rigid ones and makes every vibrational mode
 // exactly M-orthogonal to them, so that rigid motion stays in the rigid modes to round-off.
-void set_rigid_modes(const BeamSystem& s, ModalBasis& basis, VectorXd& omega_squared, MatrixXd& x) {
+// `mass` is s.mass (the dense solve, as it always was) or its sparse copy (a partial solve, where
+// a dense product per mode would cost more than the solve).
+template <class Mass>
+void set_rigid_modes(const BeamSystem& s, const Mass& mass, ModalBasis& basis, VectorXd& omega_squared, MatrixXd& x) {
   const VectorXd& t = s.translation;
-  basis.mass = t.dot(s.mass * t);
-  basis.z_cm = t.dot(s.mass * s.rotation_knob) / basis.mass;
+  basis.mass = t.dot(mass * t);
+  basis.z_cm = t.dot(mass * s.rotation_knob) / basis.mass;
   const VectorXd r = s.rotation_knob - basis.z_cm * t;
-  basis.moment_of_inertia_cm = r.dot(s.mass * r);
+  basis.moment_of_inertia_cm = r.dot(mass * r);
   x.col(0) = t / std::sqrt(basis.mass);
   x.col(1) = r / std::sqrt(basis.moment_of_inertia_cm);
   omega_squared(0) = omega_squared(1) = 0;
   for (int n = 2; n < x.cols(); ++n) {
-    for (int rigid = 0; rigid < 2; ++rigid) x.col(n) -= x.col(rigid).dot(s.mass * x.col(n)) * x.col(rigid);
-    x.col(n) /= std::sqrt(x.col(n).dot(s.mass * x.col(n)));
+    for (int rigid = 0; rigid < 2; ++rigid) x.col(n) -= x.col(rigid).dot(mass * x.col(n)) * x.col(rigid);
+    x.col(n) /= std::sqrt(x.col(n).dot(mass * x.col(n)));
   }
-  basis.translation = x.transpose() * (s.mass * t);
-  basis.rotation = x.transpose() * (s.mass * r);
+  basis.translation = x.transpose() * (mass * t);
+  basis.rotation = x.transpose() * (mass * r);
   basis.translation.tail(x.cols() - 2).setZero();  // vibrational modes start at rest
   basis.rotation.tail(x.cols() - 2).setZero();
   basis.translation(1) = 0;
@@ -67,29 +74,63 @@ Eigen::MatrixXd beam_mass_matrix(const Bat& bat, BeamTheory theory) {
   return theory == BeamTheory::timoshenko ? timoshenko_system(bat).mass : euler_bernoulli_system(bat).mass;
 }
 
-ModalBasis compute_modes(const Bat& bat, BeamTheory theory, bool rigid_only) {
+ModalBasis compute_modes(const Bat& bat, BeamTheory theory, ModeRequest request) {
   const bool timoshenko = theory == BeamTheory::timoshenko;
   if (!timoshenko && bat.slices() > max_euler_bernoulli_slices)
     throw InputError("slices = " + std::to_string(bat.slices()) + ": at most " +
                      std::to_string(max_euler_bernoulli_slices) +
                      " for theory euler-bernoulli (its dense solve loses the lowest frequencies to round-off)");
   const BeamSystem s = timoshenko ? timoshenko_system(bat) : euler_bernoulli_system(bat);
-  VectorXd omega_squared = VectorXd::Zero(2);
-  MatrixXd x(s.mass.rows(), 2);
-  if (!rigid_only) solve(s, timoshenko, omega_squared, x);
-
+  const int dofs = static_cast<int>(s.mass.rows());
+  if (request.vibrational + 2 >= dofs) request = ModeRequest::all();
+  bool partial = !request.is_all() && !request.is_rigid_only();
   ModalBasis basis;
   basis.theory = theory;
   basis.layout = beam_layout(bat, theory);
   for (int i = 0; i < bat.slices(); ++i) basis.z.push_back(bat.slice_center(i));
-  set_rigid_modes(s, basis, omega_squared, x);
+  VectorXd omega_squared = VectorXd::Zero(2);
+  MatrixXd x(dofs, 2);
+  const Eigen::SparseMatrix<double> sparse_mass = partial ? Eigen::SparseMatrix<double>(s.mass.sparseView())
+                                                          : Eigen::SparseMatrix<double>();
+  const BandedRequest banded{request.vibrational > 0 ? request.vibrational + 2 : -1,
+                             request.below_omega * request.below_omega, timoshenko};
+  if (partial && !solve_lowest(s, sparse_mass, banded, omega_squared, x)) partial = false, request = ModeRequest::all();
+  if (partial) {
+    set_rigid_modes(s, sparse_mass, basis, omega_squared, x);
+  } else {
+    if (request.is_all()) solve(s, timoshenko, omega_squared, x);
+    set_rigid_modes(s, s.mass, basis, omega_squared, x);
+  }
   basis.omega = omega_squared.cwiseMax(0.0).cwiseSqrt();
   // A fixed sign (barrel end moving +y) makes mode shapes reproducible across solvers.
   for (int n = 2; n < x.cols(); ++n)
     if (s.slice_displacement.row(bat.slices() - 1).dot(x.col(n)) < 0) x.col(n) *= -1;
-  basis.psi = s.slice_displacement * x;
+  if (!partial) basis.psi = s.slice_displacement * x;
+  else basis.psi = s.slice_displacement.sparseView() * x;
   basis.vectors = std::move(x);
+  if (!basis.complete() && !request.is_rigid_only())
+    basis.solved_below = request.vibrational > 0 ? basis.omega(basis.count() - 1) : request.below_omega;
+  if (!request.is_rigid_only()) basis.flexibility = vibrational_flexibility_band(s, basis.vectors.leftCols(2));
   return basis;
+}
+
+double ModalBasis::vibrational_compliance_at(double z) const {
+  if (flexibility.size() == 0) return 0;
+  const PointLoad p = layout.point(z);
+  double sum = 0;
+  for (int k = 0; k < 4; ++k)
+    for (int l = 0; l < 4; ++l)
+      if (p.weight[k] != 0 && p.weight[l] != 0)
+        sum += p.weight[k] * p.weight[l] * flexibility(std::min(p.dof[k], p.dof[l]), std::abs(p.dof[k] - p.dof[l]));
+  return sum;
+}
+
+double ModalBasis::unsolved_compliance_at(double z) const {
+  if (complete()) return 0;
+  const Eigen::VectorXd shapes = shapes_at(z);
+  double solved = 0;
+  for (int n = 2; n < count(); ++n) solved += shapes(n) * shapes(n) / (omega(n) * omega(n));
+  return std::max(0.0, vibrational_compliance_at(z) - solved);
 }
 
 std::vector<double> ModalBasis::vibrational_frequencies_hz() const {

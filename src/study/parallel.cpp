@@ -127,7 +127,7 @@ class ModalCache {
       Bat bat = study_.loaded_bats[p.bat];
       if (p.slices > 0) bat = resample(bat, p.slices);
       if (!rigid_only) ++solves_;
-      return &cache_.emplace(key, compute_modes(bat, p.theory, rigid_only)).first->second;
+      return &cache_.emplace(key, compute_modes(bat, p.theory, rigid_only ? ModeRequest::rigid_only() : ModeRequest::all())).first->second;
     } catch (const std::exception& e) {
       error = "the modes of " + study_.bats[p.bat].string() + ": " + e.what();
       errors_.emplace(key, error);
