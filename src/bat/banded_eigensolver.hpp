@@ -21,9 +21,9 @@ struct BandedRequest {
   bool diagonal_mass = false;  // Timoshenko's lumped M
 };
 
-// Beyond this share of all modes each eigenvector's inverse iteration, and the bisection, cost
-// more than the dense solve's O(n^3) saves (R161 at N = 84: even at 60 of 168 modes).
-inline constexpr double max_banded_share = 0.25;
+// Beyond this share of all modes the bisection and each eigenvector's inverse iteration cost
+// about what the dense solve's O(n^3) does (R161 at N = 84: 60 of 168 modes as long as all 168).
+inline constexpr double max_banded_share = 0.3;
 
 // Ascending eigenvalues and M-normalised eigenvectors (columns) of the request. The two rigid
 // modes come out as round-off; the caller replaces them by the exact ones. False, with nothing
