@@ -139,6 +139,11 @@ class ModalCache {
 
  private:
   const ModalBasis* basis(const GridPoint& p, ModeRequest request, std::string& error) {
+    // A frequency at or above one that already took every mode takes every mode too: the same
+    // dense solve, so reusing its basis changes nothing.
+    const Model model = std::make_tuple(p.bat, p.slices, p.theory);
+    if (const auto it = complete_from_.find(model); it != complete_from_.end() && request.below_omega >= it->second.first)
+      return it->second.second;
     const Key key = std::make_tuple(p.bat, p.slices, p.theory, request.vibrational, request.below_omega);
     if (const auto it = cache_.find(key); it != cache_.end()) return &it->second;
     if (const auto it = errors_.find(key); it != errors_.end()) return error = it->second, nullptr;
@@ -148,7 +153,12 @@ class ModalCache {
       const auto start = Clock::now();
       ModalBasis solved = compute_modes(bat, p.theory, request);
       if (!request.is_rigid_only()) ++solves_, solve_seconds_ += seconds_since(start);
-      return &cache_.emplace(key, std::move(solved)).first->second;
+      const ModalBasis* kept = &cache_.emplace(key, std::move(solved)).first->second;
+      if (request.below_omega > 0 && kept->complete()) {
+        auto& lowest = complete_from_.try_emplace(model, request.below_omega, kept).first->second;
+        if (request.below_omega < lowest.first) lowest = {request.below_omega, kept};
+      }
+      return kept;
     } catch (const std::exception& e) {
       error = "the modes of " + study_.bats[p.bat].string() + ": " + e.what();
       errors_.emplace(key, error);
@@ -157,10 +167,12 @@ class ModalCache {
   }
 
   using Key = std::tuple<std::size_t, int, BeamTheory, int, double>;
+  using Model = std::tuple<std::size_t, int, BeamTheory>;
   const Study& study_;
   int largest_count_ = 0;
   std::map<Key, ModalBasis> cache_;
   std::map<Key, std::string> errors_;
+  std::map<Model, std::pair<double, const ModalBasis*>> complete_from_;  // lowest "below" that took all
   int solves_ = 0;
   double solve_seconds_ = 0;
 };
