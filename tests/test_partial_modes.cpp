@@ -37,7 +37,19 @@ std::vector<Case> cases() {
   return all;
 }
 
-Bat bat_of(const Case& c) { return resample(load_bat(source_path("studies/bats/" + c.bat + ".toml")), c.slices); }
+// A case's bat with its full basis and the lowest 18 vibrational modes.
+struct Solved {
+  Bat bat;
+  ModalBasis full, part;
+};
+
+Solved solve(const Case& c) {
+  Solved s;
+  s.bat = resample(load_bat(source_path("studies/bats/" + c.bat + ".toml")), c.slices);
+  s.full = compute_modes(s.bat, c.theory);
+  s.part = compute_modes(s.bat, c.theory, ModeRequest::lowest(18));
+  return s;
+}
 
 // The round-off every solve of K x = w^2 M x carries in w_n^2, relative: eps w_max^2 / w_n^2
 // (the reduction works on the whole spectrum). Euler-Bernoulli's w_max grows as N^2, and its
@@ -52,9 +64,7 @@ double roundoff(const ModalBasis& full, int n) {
 
 TEST_CASE("The lowest modes of a partial solve are the dense solve's", "[partial_modes]") {
   for (const Case& c : cases()) {
-    const Bat bat = bat_of(c);
-    const ModalBasis full = compute_modes(bat, c.theory);
-    const ModalBasis part = compute_modes(bat, c.theory, ModeRequest::lowest(18));
+    const auto [bat, full, part] = solve(c);
     INFO(c.bat << ", " << to_string(c.theory) << ", N = " << c.slices);
     REQUIRE(part.count() == 20);
     CHECK_FALSE(part.complete());
@@ -76,9 +86,7 @@ TEST_CASE("The lowest modes of a partial solve are the dense solve's", "[partial
 
 TEST_CASE("A partial basis is mass-orthonormal and its rigid modes are exact", "[partial_modes]") {
   for (const Case& c : cases()) {
-    const Bat bat = bat_of(c);
-    const ModalBasis full = compute_modes(bat, c.theory);
-    const ModalBasis part = compute_modes(bat, c.theory, ModeRequest::lowest(18));
+    const auto [bat, full, part] = solve(c);
     INFO(c.bat << ", " << to_string(c.theory) << ", N = " << c.slices);
     const Eigen::MatrixXd m = beam_mass_matrix(bat, c.theory);
     const Eigen::MatrixXd gram = part.vectors.transpose() * m * part.vectors;
@@ -100,9 +108,7 @@ TEST_CASE("A partial basis is mass-orthonormal and its rigid modes are exact", "
 
 TEST_CASE("The flexibility is the sum of psi^2 / omega^2 over every vibrational mode", "[partial_modes]") {
   for (const Case& c : cases()) {
-    const Bat bat = bat_of(c);
-    const ModalBasis full = compute_modes(bat, c.theory);
-    const ModalBasis part = compute_modes(bat, c.theory, ModeRequest::lowest(18));
+    const auto [bat, full, part] = solve(c);
     INFO(c.bat << ", " << to_string(c.theory) << ", N = " << c.slices);
     CHECK(full.unsolved_compliance_at(0.7) == 0);  // a complete basis leaves nothing unsolved
     for (double z = 0; z <= bat.length; z += bat.length / 97) {  // centres, between them, both ends
