@@ -60,6 +60,18 @@ void set_rigid_modes(const BeamSystem& s, const Mass& mass, ModalBasis& basis, V
   basis.rotation(0) = 0;
 }
 
+// The banded solve of a partial request, with the rigid modes set from the sparse M; false, with
+// nothing done, when the request reaches past max_banded_share and the dense solve is cheaper.
+bool solve_partial(const BeamSystem& s, bool timoshenko, ModeRequest request, ModalBasis& basis,
+                   VectorXd& omega_squared, MatrixXd& x) {
+  const Eigen::SparseMatrix<double> mass = s.mass.sparseView();
+  const BandedRequest banded{request.vibrational > 0 ? request.vibrational + 2 : -1,
+                             request.below_omega * request.below_omega, timoshenko};
+  if (!solve_lowest(s, mass, banded, omega_squared, x)) return false;
+  set_rigid_modes(s, mass, basis, omega_squared, x);
+  return true;
+}
+
 }  // namespace
 
 Eigen::VectorXd ModalBasis::shapes_at(double z) const {
@@ -90,25 +102,20 @@ ModalBasis compute_modes(const Bat& bat, BeamTheory theory, ModeRequest request)
   for (int i = 0; i < bat.slices(); ++i) basis.z.push_back(bat.slice_center(i));
   VectorXd omega_squared = VectorXd::Zero(2);
   MatrixXd x(dofs, 2);
-  const Eigen::SparseMatrix<double> sparse_mass = partial ? Eigen::SparseMatrix<double>(s.mass.sparseView())
-                                                          : Eigen::SparseMatrix<double>();
-  const BandedRequest banded{request.vibrational > 0 ? request.vibrational + 2 : -1,
-                             request.below_omega * request.below_omega, timoshenko};
-  if (partial && !solve_lowest(s, sparse_mass, banded, omega_squared, x)) partial = false, request = ModeRequest::all();
-  if (partial) {
-    set_rigid_modes(s, sparse_mass, basis, omega_squared, x);
-  } else {
-    if (request.is_all()) solve(s, timoshenko, omega_squared, x);
+  if (partial) partial = solve_partial(s, timoshenko, request, basis, omega_squared, x);
+  if (!partial) {
+    if (!request.is_rigid_only()) solve(s, timoshenko, omega_squared, x);
     set_rigid_modes(s, s.mass, basis, omega_squared, x);
   }
   basis.omega = omega_squared.cwiseMax(0.0).cwiseSqrt();
   // A fixed sign (barrel end moving +y) makes mode shapes reproducible across solvers.
   for (int n = 2; n < x.cols(); ++n)
     if (s.slice_displacement.row(bat.slices() - 1).dot(x.col(n)) < 0) x.col(n) *= -1;
+  // A partial basis maps with the sparse map (the dense product would cost more than its solve).
   if (!partial) basis.psi = s.slice_displacement * x;
   else basis.psi = s.slice_displacement.sparseView() * x;
   basis.vectors = std::move(x);
-  if (!basis.complete() && !request.is_rigid_only())
+  if (partial && !basis.complete())
     basis.solved_below = request.vibrational > 0 ? basis.omega(basis.count() - 1) : request.below_omega;
   if (!request.is_rigid_only()) basis.flexibility = vibrational_flexibility_band(s, basis.vectors.leftCols(2));
   return basis;
