@@ -2,6 +2,7 @@
 
 #include <lapacke.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -160,7 +161,8 @@ bool solve_lowest(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass, 
                   VectorXd& omega_squared, MatrixXd& vectors) {
   const Tridiagonal t = tridiagonal(s, request.diagonal_mass);
   const int dofs = static_cast<int>(s.mass.rows());
-  const int count = request.count >= 0 ? request.count : count_below(t, request.upper);
+  // The two rigid modes always (they lie at 0 however low the frequency asked).
+  const int count = std::max(2, request.count >= 0 ? request.count : count_below(t, request.upper));
   if (count > dofs * max_banded_share) return false;
   omega_squared = lowest_eigenvalues(t, count);
   vectors = MatrixXd::Zero(dofs, count);

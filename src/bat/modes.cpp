@@ -94,7 +94,8 @@ ModalBasis compute_modes(const Bat& bat, BeamTheory theory, ModeRequest request)
                      " for theory euler-bernoulli (its dense solve loses the lowest frequencies to round-off)");
   const BeamSystem s = timoshenko ? timoshenko_system(bat) : euler_bernoulli_system(bat);
   const int dofs = static_cast<int>(s.mass.rows());
-  if (request.vibrational + 2 >= dofs) request = ModeRequest::all();
+  if (request.vibrational + 2 >= dofs || (request.vibrational == -2 && !(request.below_omega < 1e300)))
+    request = ModeRequest::all();
   bool partial = !request.is_all() && !request.is_rigid_only();
   ModalBasis basis;
   basis.theory = theory;
