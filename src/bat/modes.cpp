@@ -4,6 +4,11 @@
 #include <numbers>
 #include <string>
 
+#include <Eigen/SparseCore>
+
+#include "bat/banded_eigensolver.hpp"
+#include "bat/beam_flexibility.hpp"
+#include "bat/beam_system.hpp"
 #include "sweetspot/input_error.hpp"
 
 namespace sweetspot {
@@ -12,105 +17,6 @@ namespace {
 
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
-
-// A discretised free-free beam: K x = omega^2 M x, plus the degree-of-freedom vectors of the two
-// rigid motions and the map from degrees of freedom to displacements at the slice centres.
-struct BeamSystem {
-  MatrixXd stiffness;
-  MatrixXd mass;
-  VectorXd translation;     // y = 1 everywhere
-  VectorXd rotation_knob;   // y = z, cross-sections turned with it (rotation about the knob)
-  MatrixXd slice_displacement;  // rows: slice centres; maps x to y(z_i)
-};
-
-// Each slice's rigidities, and the length: what a point load needs of the beam (beam_layout.hpp).
-BeamLayout beam_layout(const Bat& bat, BeamTheory theory) {
-  BeamLayout layout;
-  layout.theory = theory;
-  layout.length = bat.length;
-  const Material& mat = bat.material;
-  for (int i = 0; i < bat.slices(); ++i) {
-    layout.bending.push_back(mat.youngs_modulus * bat.second_moment(i));
-    layout.shear.push_back(mat.shear_coefficient * mat.shear_modulus * bat.area(i));
-  }
-  return layout;
-}
-
-// Timoshenko (physics.md §2): dofs (y_i, phi_i) per slice; lumped slice masses and rotary
-// inertias; bending and shear energy on the N-1 joints. A joint spans half of each slice, and the
-// halves act in series: its rigidities are the harmonic means of the slices' (joint_rigidity).
-// For a stepped profile that is exact, and the frequencies converge at second order; the
-// arithmetic mean overstates the stiffness across every step (first order; tests/test_modes.cpp).
-BeamSystem timoshenko_system(const Bat& bat) {
-  const int n = bat.slices();
-  const double dz = bat.slice_thickness();
-  const BeamLayout beam = beam_layout(bat, BeamTheory::timoshenko);
-  BeamSystem s;
-  s.stiffness = MatrixXd::Zero(2 * n, 2 * n);
-  s.mass = MatrixXd::Zero(2 * n, 2 * n);
-  s.translation = VectorXd::Zero(2 * n);
-  s.rotation_knob = VectorXd::Zero(2 * n);
-  s.slice_displacement = MatrixXd::Zero(n, 2 * n);
-  for (int i = 0; i < n; ++i) {
-    s.mass(2 * i, 2 * i) = bat.slice_mass(i);
-    s.mass(2 * i + 1, 2 * i + 1) = bat.slice_rotary_inertia(i);
-    s.translation(2 * i) = 1;
-    s.rotation_knob(2 * i) = bat.slice_center(i);
-    s.rotation_knob(2 * i + 1) = -1;  // shear-free rotation: dy/dz + phi = 0
-    s.slice_displacement(i, 2 * i) = 1;
-  }
-  for (int j = 0; j + 1 < n; ++j) {
-    const int y0 = 2 * j, p0 = 2 * j + 1, y1 = 2 * j + 2, p1 = 2 * j + 3;
-    const double bending = joint_rigidity(beam.bending[j], beam.bending[j + 1]) / dz;
-    s.stiffness(p0, p0) += bending;
-    s.stiffness(p1, p1) += bending;
-    s.stiffness(p0, p1) -= bending;
-    s.stiffness(p1, p0) -= bending;
-    // Shear strain gamma = (y1 - y0)/dz + (phi0 + phi1)/2 = g . x
-    const double shear = joint_rigidity(beam.shear[j], beam.shear[j + 1]) * dz;
-    const int dof[4] = {y0, p0, y1, p1};
-    const double g[4] = {-1 / dz, 0.5, 1 / dz, 0.5};
-    for (int a = 0; a < 4; ++a)
-      for (int b = 0; b < 4; ++b) s.stiffness(dof[a], dof[b]) += shear * g[a] * g[b];
-  }
-  return s;
-}
-
-// Euler-Bernoulli: one cubic Hermite element per slice, dofs (w_j, w'_j) at the N+1 slice
-// boundaries, consistent mass. Rayleigh-Ritz, so frequencies converge from above as h^4.
-BeamSystem euler_bernoulli_system(const Bat& bat) {
-  const int n = bat.slices();
-  const int dofs = 2 * (n + 1);
-  const double h = bat.slice_thickness();
-  BeamSystem s;
-  s.stiffness = MatrixXd::Zero(dofs, dofs);
-  s.mass = MatrixXd::Zero(dofs, dofs);
-  s.translation = VectorXd::Zero(dofs);
-  s.rotation_knob = VectorXd::Zero(dofs);
-  s.slice_displacement = MatrixXd::Zero(n, dofs);
-  Eigen::Matrix4d k_unit, m_unit;
-  k_unit << 12, 6 * h, -12, 6 * h, 6 * h, 4 * h * h, -6 * h, 2 * h * h, -12, -6 * h, 12, -6 * h,
-      6 * h, 2 * h * h, -6 * h, 4 * h * h;
-  m_unit << 156, 22 * h, 54, -13 * h, 22 * h, 4 * h * h, 13 * h, -3 * h * h, 54, 13 * h, 156, -22 * h,
-      -13 * h, -3 * h * h, -22 * h, 4 * h * h;
-  for (int e = 0; e < n; ++e) {
-    const double ei = bat.material.youngs_modulus * bat.second_moment(e);
-    const double rho_a = bat.material.density * bat.area(e);
-    s.stiffness.block<4, 4>(2 * e, 2 * e) += ei / (h * h * h) * k_unit;
-    s.mass.block<4, 4>(2 * e, 2 * e) += rho_a * h / 420 * m_unit;
-    // Hermite shape functions at the element midpoint: 1/2, h/8, 1/2, -h/8.
-    s.slice_displacement(e, 2 * e) = 0.5;
-    s.slice_displacement(e, 2 * e + 1) = h / 8;
-    s.slice_displacement(e, 2 * e + 2) = 0.5;
-    s.slice_displacement(e, 2 * e + 3) = -h / 8;
-  }
-  for (int j = 0; j <= n; ++j) {
-    s.translation(2 * j) = 1;
-    s.rotation_knob(2 * j) = j * h;
-    s.rotation_knob(2 * j + 1) = 1;
-  }
-  return s;
-}
 
 // Solves K x = w^2 M x for mass-orthonormal x, ascending w^2.
 void solve(const BeamSystem& s, bool diagonal_mass, VectorXd& omega_squared, MatrixXd& vectors) {
@@ -130,25 +36,40 @@ void solve(const BeamSystem& s, bool diagonal_mass, VectorXd& omega_squared, Mat
 
 // Replaces the two near-zero modes by the exact rigid ones and makes every vibrational mode
 // exactly M-orthogonal to them, so that rigid motion stays in the rigid modes to round-off.
-void set_rigid_modes(const BeamSystem& s, ModalBasis& basis, VectorXd& omega_squared, MatrixXd& x) {
+// `mass` is s.mass (the dense solve, as it always was) or its sparse copy (a partial solve, where
+// a dense product per mode would cost more than the solve).
+template <class Mass>
+void set_rigid_modes(const BeamSystem& s, const Mass& mass, ModalBasis& basis, VectorXd& omega_squared, MatrixXd& x) {
   const VectorXd& t = s.translation;
-  basis.mass = t.dot(s.mass * t);
-  basis.z_cm = t.dot(s.mass * s.rotation_knob) / basis.mass;
+  basis.mass = t.dot(mass * t);
+  basis.z_cm = t.dot(mass * s.rotation_knob) / basis.mass;
   const VectorXd r = s.rotation_knob - basis.z_cm * t;
-  basis.moment_of_inertia_cm = r.dot(s.mass * r);
+  basis.moment_of_inertia_cm = r.dot(mass * r);
   x.col(0) = t / std::sqrt(basis.mass);
   x.col(1) = r / std::sqrt(basis.moment_of_inertia_cm);
   omega_squared(0) = omega_squared(1) = 0;
   for (int n = 2; n < x.cols(); ++n) {
-    for (int rigid = 0; rigid < 2; ++rigid) x.col(n) -= x.col(rigid).dot(s.mass * x.col(n)) * x.col(rigid);
-    x.col(n) /= std::sqrt(x.col(n).dot(s.mass * x.col(n)));
+    for (int rigid = 0; rigid < 2; ++rigid) x.col(n) -= x.col(rigid).dot(mass * x.col(n)) * x.col(rigid);
+    x.col(n) /= std::sqrt(x.col(n).dot(mass * x.col(n)));
   }
-  basis.translation = x.transpose() * (s.mass * t);
-  basis.rotation = x.transpose() * (s.mass * r);
+  basis.translation = x.transpose() * (mass * t);
+  basis.rotation = x.transpose() * (mass * r);
   basis.translation.tail(x.cols() - 2).setZero();  // vibrational modes start at rest
   basis.rotation.tail(x.cols() - 2).setZero();
   basis.translation(1) = 0;
   basis.rotation(0) = 0;
+}
+
+// The banded solve of a partial request, with the rigid modes set from the sparse M; false, with
+// nothing done, when the request reaches past max_banded_share and the dense solve is cheaper.
+bool solve_partial(const BeamSystem& s, bool timoshenko, ModeRequest request, ModalBasis& basis,
+                   VectorXd& omega_squared, MatrixXd& x) {
+  const Eigen::SparseMatrix<double> mass = s.mass.sparseView();
+  const BandedRequest banded{request.vibrational > 0 ? request.vibrational + 2 : -1,
+                             request.below_omega * request.below_omega, timoshenko};
+  if (!solve_lowest(s, mass, banded, omega_squared, x)) return false;
+  set_rigid_modes(s, mass, basis, omega_squared, x);
+  return true;
 }
 
 }  // namespace
@@ -165,29 +86,59 @@ Eigen::MatrixXd beam_mass_matrix(const Bat& bat, BeamTheory theory) {
   return theory == BeamTheory::timoshenko ? timoshenko_system(bat).mass : euler_bernoulli_system(bat).mass;
 }
 
-ModalBasis compute_modes(const Bat& bat, BeamTheory theory, bool rigid_only) {
+ModalBasis compute_modes(const Bat& bat, BeamTheory theory, ModeRequest request) {
   const bool timoshenko = theory == BeamTheory::timoshenko;
   if (!timoshenko && bat.slices() > max_euler_bernoulli_slices)
     throw InputError("slices = " + std::to_string(bat.slices()) + ": at most " +
                      std::to_string(max_euler_bernoulli_slices) +
                      " for theory euler-bernoulli (its dense solve loses the lowest frequencies to round-off)");
   const BeamSystem s = timoshenko ? timoshenko_system(bat) : euler_bernoulli_system(bat);
-  VectorXd omega_squared = VectorXd::Zero(2);
-  MatrixXd x(s.mass.rows(), 2);
-  if (!rigid_only) solve(s, timoshenko, omega_squared, x);
-
+  const int dofs = static_cast<int>(s.mass.rows());
+  if (request.vibrational + 2 >= dofs || (request.vibrational == -2 && !(request.below_omega < 1e300)))
+    request = ModeRequest::all();
+  bool partial = !request.is_all() && !request.is_rigid_only();
   ModalBasis basis;
   basis.theory = theory;
   basis.layout = beam_layout(bat, theory);
   for (int i = 0; i < bat.slices(); ++i) basis.z.push_back(bat.slice_center(i));
-  set_rigid_modes(s, basis, omega_squared, x);
+  VectorXd omega_squared = VectorXd::Zero(2);
+  MatrixXd x(dofs, 2);
+  if (partial) partial = solve_partial(s, timoshenko, request, basis, omega_squared, x);
+  if (!partial) {
+    if (!request.is_rigid_only()) solve(s, timoshenko, omega_squared, x);
+    set_rigid_modes(s, s.mass, basis, omega_squared, x);
+  }
   basis.omega = omega_squared.cwiseMax(0.0).cwiseSqrt();
   // A fixed sign (barrel end moving +y) makes mode shapes reproducible across solvers.
   for (int n = 2; n < x.cols(); ++n)
     if (s.slice_displacement.row(bat.slices() - 1).dot(x.col(n)) < 0) x.col(n) *= -1;
-  basis.psi = s.slice_displacement * x;
+  // A partial basis maps with the sparse map (the dense product would cost more than its solve).
+  if (!partial) basis.psi = s.slice_displacement * x;
+  else basis.psi = s.slice_displacement.sparseView() * x;
   basis.vectors = std::move(x);
+  if (partial && !basis.complete())
+    basis.solved_below = request.vibrational > 0 ? basis.omega(basis.count() - 1) : request.below_omega;
+  if (!request.is_rigid_only()) basis.flexibility = vibrational_flexibility_band(s, basis.vectors.leftCols(2));
   return basis;
+}
+
+double ModalBasis::vibrational_compliance_at(double z) const {
+  if (flexibility.size() == 0) return 0;
+  const PointLoad p = layout.point(z);
+  double sum = 0;
+  for (int k = 0; k < 4; ++k)
+    for (int l = 0; l < 4; ++l)
+      if (p.weight[k] != 0 && p.weight[l] != 0)
+        sum += p.weight[k] * p.weight[l] * flexibility(std::min(p.dof[k], p.dof[l]), std::abs(p.dof[k] - p.dof[l]));
+  return sum;
+}
+
+double ModalBasis::unsolved_compliance_at(double z) const {
+  if (complete()) return 0;
+  const Eigen::VectorXd shapes = shapes_at(z);
+  double solved = 0;
+  for (int n = 2; n < count(); ++n) solved += shapes(n) * shapes(n) / (omega(n) * omega(n));
+  return std::max(0.0, vibrational_compliance_at(z) - solved);
 }
 
 std::vector<double> ModalBasis::vibrational_frequencies_hz() const {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <numeric>
 
@@ -38,7 +39,8 @@ double pulse_duration(const Ball& ball, double approach_speed, double recoil) {
 }
 
 ModeSelection select_modes(const Eigen::VectorXd& omega, const Eigen::VectorXd& psi, const Ball& ball,
-                           double ball_speed, double bat_speed, double recoil, double tolerance) {
+                           double ball_speed, double bat_speed, double recoil, double tolerance,
+                           const UnsolvedModes& unsolved) {
   ModeSelection s;
   const double approach = ball_speed + bat_speed;
   s.pulse_duration = pulse_duration(ball, approach, recoil);
@@ -68,6 +70,13 @@ ModeSelection select_modes(const Eigen::VectorXd& omega, const Eigen::VectorXd& 
   // compliance stays. (The sums are plain locals, and the first loop calls nothing: otherwise
   // they would go through memory at every mode.)
   double dropped_cost = 0, dropped_compliance = 0;
+  if (unsolved.compliance > 0) {  // a complete basis adds nothing: the sums start at 0 as before
+    const double w2 = unsolved.omega * unsolved.omega, x2 = w2 * duration2;
+    const double per_compliance = recoil_sensitivity * ball.mass * w2 * response_bound(x2) +
+                                  compliance_sensitivity * std::min(1.0, pulse_omega2 / w2);
+    dropped_cost = x2 > 4 ? unsolved.compliance * per_compliance : std::numeric_limits<double>::infinity();
+    dropped_compliance = unsolved.compliance;
+  }
   std::vector<Take> take(n);
   for (int i = 2; i < n; ++i) {
     const double w2 = omega(i) * omega(i), inverse_w2 = 1 / w2, psi2 = psi(i) * psi(i);

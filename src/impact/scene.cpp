@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 
 #include "sweetspot/input_error.hpp"
@@ -30,9 +31,12 @@ void require_positive(const std::string& key, double value) {
 std::vector<int> kept_modes(const ImpactScene& scene, const ModalBasis& basis, SceneGeometry& g) {
   std::vector<int> kept = {0, 1};
   if (scene.vibrational_modes == auto_modes) {
+    // A partial basis: the modes it did not solve are dropped, their compliance counted exactly.
+    const UnsolvedModes unsolved =
+        basis.complete() ? UnsolvedModes{} : UnsolvedModes{basis.unsolved_compliance_at(g.z), basis.solved_below};
     const ModeSelection selection =
         select_modes(basis.omega, basis.shapes_at(g.z), scene.ball, scene.ball_speed, g.bat_speed, g.recoil,
-                     scene.mode_tolerance);
+                     scene.mode_tolerance, unsolved);
     kept.insert(kept.end(), selection.kept.begin(), selection.kept.end());
     g.contact.residual_compliance = selection.residual_compliance;
     g.modes_error = selection.error_estimate;
@@ -106,7 +110,10 @@ void validate(const ImpactScene& scene, const ModalBasis& basis) {
            "must be 'all' or between 0 and " + std::to_string(basis.count() - 2) + " at this slice count");
 }
 
-SceneGeometry scene_geometry(const ImpactScene& scene, const ModalBasis& basis) {
+namespace {
+
+// The rigid bat's part of the geometry: speeds and recoil, from the mass properties alone.
+SceneGeometry rigid_geometry(const ImpactScene& scene, const ModalBasis& basis) {
   SceneGeometry g;
   g.z = std::clamp(scene.z, 0.0, basis.length());
   const Swing& swing = scene.swing;
@@ -121,7 +128,23 @@ SceneGeometry scene_geometry(const ImpactScene& scene, const ModalBasis& basis) 
   } else {
     g.recoil = m * (1 / basis.mass + arm * arm / basis.moment_of_inertia_cm);
   }
+  return g;
+}
 
+}  // namespace
+
+ModeRequest auto_mode_request(const ImpactScene& scene, const ModalBasis& basis) {
+  const SceneGeometry g = rigid_geometry(scene, basis);
+  const double pulse = pulse_duration(scene.ball, scene.ball_speed + g.bat_speed, g.recoil);
+  const double omega = auto_solve_factor * 4 * std::numbers::pi / pulse;
+  if (!std::isfinite(omega) || !(omega > 0)) return ModeRequest::all();  // a scene validation will refuse
+  // Half-octaves of 1000 rad/s: nearby pulses share one basis.
+  return ModeRequest::below(1000 * std::exp2(std::ceil(2 * std::log2(std::max(omega, 1000.0) / 1000)) / 2));
+}
+
+SceneGeometry scene_geometry(const ImpactScene& scene, const ModalBasis& basis) {
+  SceneGeometry g = rigid_geometry(scene, basis);
+  const Swing& swing = scene.swing;
   g.kept = kept_modes(scene, basis, g);
   const std::vector<int>& kept = g.kept;
   ModalContact free;

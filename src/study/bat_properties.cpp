@@ -100,7 +100,9 @@ DesignModes design_modes(const Study& study, int modes) {
 #pragma omp parallel for schedule(dynamic)
   for (long b = 0; b < designs; ++b) {
     const Bat& bat = study.designs[b];
-    const ModalBasis basis = compute_modes(study.slices > 0 ? resample(bat, study.slices) : bat, study.theory);
+    // The lowest modes alone (a partial solve), enough for the nodes of the first three.
+    const ModalBasis basis = compute_modes(study.slices > 0 ? resample(bat, study.slices) : bat, study.theory,
+                                           ModeRequest::lowest(std::max(modes, node_modes)));
     std::vector<double> f = basis.vibrational_frequencies_hz();
     f.resize(std::min<std::size_t>(f.size(), static_cast<std::size_t>(modes)));
     out.frequencies_hz[b] = std::move(f);

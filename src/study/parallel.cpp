@@ -46,10 +46,10 @@ struct RankTally {
 // every point fails cannot flood the log.
 constexpr std::size_t failures_logged = 20;
 
-void log_rank_summary(int rank, int solves, const RankTally& tally, Clock::time_point start) {
+void log_rank_summary(int rank, int solves, double solve_seconds, const RankTally& tally, Clock::time_point start) {
   const double total = seconds_since(start);
-  spdlog::info("rank {}: {} eigen-solves; {:.3f} s of {:.3f} s in impacts ({:.1f} % elsewhere)", rank, solves,
-               tally.impact_seconds, total, 100 * (1 - tally.impact_seconds / total));
+  spdlog::info("rank {}: {} eigen-solves in {:.3f} s; {:.3f} s of {:.3f} s in impacts ({:.1f} % elsewhere)", rank,
+               solves, solve_seconds, tally.impact_seconds, total, 100 * (1 - tally.impact_seconds / total));
   if (tally.past_radius > 0)
     spdlog::warn("rank {}: {} points compressed the ball past its radius (u_max > radius): the force law is not "
                  "meant for that",
@@ -111,43 +111,77 @@ void log_rank_cores(int rank) {
                  rank, threads, cores.size(), core_list(cores));
 }
 
-// The modal bases this rank has computed, one per (design, slices, theory).
+// The modal bases this rank has computed, one per (design, slices, theory, modes solved). A point
+// gets what it needs solved (ModeRequest): the rigid modes alone when it keeps no vibrational
+// mode (no eigen-solve), the study's largest fixed count, every mode for "all", and for "auto"
+// the modes below its pulse's reach (auto_mode_request, from the rigid basis). A basis depends on
+// the point alone, never on which points came first: any ranks give the same results.
 class ModalCache {
  public:
-  explicit ModalCache(const Study& study) : study_(study) {}
-  // A point that keeps no vibrational mode gets the rigid modes alone: no eigen-solve.
+  explicit ModalCache(const Study& study) : study_(study) {
+    for (const Axis& axis : study.axes)
+      if (axis.name == "modes")
+        for (const double m : axis.values) largest_count_ = std::max(largest_count_, static_cast<int>(m));
+  }
   // The point's basis, or nullptr with `error` saying why it could not be had (the bat file
   // changed since the study was checked, say); a failure is kept too, not retried per point.
   const ModalBasis* get(const GridPoint& p, std::string& error) {
-    const bool rigid_only = p.scene.vibrational_modes == 0;
-    const Key key = std::make_tuple(p.design, p.slices, p.theory, rigid_only);
+    const int modes = p.scene.vibrational_modes;
+    if (modes != auto_modes) return basis(p, modes == 0           ? ModeRequest::rigid_only()
+                                             : modes == all_modes ? ModeRequest::all()
+                                                                  : ModeRequest::lowest(std::max(modes, largest_count_)),
+                                          error);
+    const ModalBasis* rigid = basis(p, ModeRequest::rigid_only(), error);
+    return rigid ? basis(p, auto_mode_request(p.scene, *rigid), error) : nullptr;
+  }
+  int solves() const { return solves_; }
+  double solve_seconds() const { return solve_seconds_; }
+  // Before a chunk: forgets every basis once more than cached_models are kept.
+  void make_room() {
+    if (cache_.size() + errors_.size() <= cached_models) return;
+    cache_.clear();
+    errors_.clear();
+    complete_from_.clear();
+  }
+
+ private:
+  const ModalBasis* basis(const GridPoint& p, ModeRequest request, std::string& error) {
+    // A frequency at or above one that already took every mode takes every mode too: the same
+    // dense solve, so reusing its basis changes nothing.
+    const Model model = std::make_tuple(p.design, p.slices, p.theory);
+    if (const auto it = complete_from_.find(model); it != complete_from_.end() && request.below_omega >= it->second.first)
+      return it->second.second;
+    const Key key = std::make_tuple(p.design, p.slices, p.theory, request.vibrational, request.below_omega);
     if (const auto it = cache_.find(key); it != cache_.end()) return &it->second;
     if (const auto it = errors_.find(key); it != errors_.end()) return error = it->second, nullptr;
     try {
       Bat bat = study_.designs[p.design];
       if (p.slices > 0) bat = resample(bat, p.slices);
-      if (!rigid_only) ++solves_;
-      return &cache_.emplace(key, compute_modes(bat, p.theory, rigid_only)).first->second;
+      const auto start = Clock::now();
+      ModalBasis solved = compute_modes(bat, p.theory, request);
+      if (!request.is_rigid_only()) ++solves_, solve_seconds_ += seconds_since(start);
+      const ModalBasis* kept = &cache_.emplace(key, std::move(solved)).first->second;
+      if (request.below_omega > 0 && kept->complete()) {
+        auto& lowest = complete_from_.try_emplace(model, request.below_omega, kept).first->second;
+        if (request.below_omega < lowest.first) lowest = {request.below_omega, kept};
+      }
+      return kept;
     } catch (const std::exception& e) {
       error = "the modes of " + study_.bats[p.bat].string() + ": " + e.what();
       errors_.emplace(key, error);
       return nullptr;
     }
   }
-  int solves() const { return solves_; }
-  // Before a chunk: forgets every basis once more than cached_models are kept.
-  void make_room() {
-    if (cache_.size() + errors_.size() <= cached_models) return;
-    cache_.clear();
-    errors_.clear();
-  }
 
- private:
-  using Key = std::tuple<std::size_t, int, BeamTheory, bool>;
+  using Key = std::tuple<std::size_t, int, BeamTheory, int, double>;
+  using Model = std::tuple<std::size_t, int, BeamTheory>;
   const Study& study_;
+  int largest_count_ = 0;
   std::map<Key, ModalBasis> cache_;
   std::map<Key, std::string> errors_;
+  std::map<Model, std::pair<double, const ModalBasis*>> complete_from_;  // lowest "below" that took all
   int solves_ = 0;
+  double solve_seconds_ = 0;
 };
 
 // Computes a chunk of points with the OpenMP threads; rows in the order of `points`. Adds the
@@ -306,7 +340,7 @@ class Coordinator {
     }
   }
 
-  void log_summary(Clock::time_point start) const { log_rank_summary(0, cache_.solves(), tally_, start); }
+  void log_summary(Clock::time_point start) const { log_rank_summary(0, cache_.solves(), cache_.solve_seconds(), tally_, start); }
 
   const std::vector<double>& rows() const { return rows_; }
   std::size_t resumed_points() const { return journal_.recovered_points().size(); }
@@ -392,7 +426,7 @@ void work(const Study& study, const OutputLayout& layout, int rank) {
     message.assign(chunk.begin(), chunk.end());
     message.insert(message.end(), rows.begin(), rows.end());
   }
-  log_rank_summary(rank, cache.solves(), tally, start);
+  log_rank_summary(rank, cache.solves(), cache.solve_seconds(), tally, start);
 }
 
 }  // namespace

@@ -87,12 +87,11 @@ const std::map<std::string, Description>& descriptions() {
 // A bat parameter's units follow from what it is (bat_design.hpp): moduli in Pa, the density in
 // kg/m^3, the shear coefficient a ratio, a preset's name none, every dimension a length.
 Description bat_parameter_description(const std::string& name) {
-  static const std::string long_name = "bat parameter";
   if (name.ends_with("material")) return {"", "wood preset of the bat"};
-  if (name.ends_with("modulus")) return {"Pa", long_name.c_str()};
-  if (name.ends_with("density")) return {"kg m-3", long_name.c_str()};
-  if (name.ends_with("shear_coefficient")) return {"1", long_name.c_str()};
-  return {"m", long_name.c_str()};
+  if (name.ends_with("modulus")) return {"Pa", "bat parameter (a modulus of its material)"};
+  if (name.ends_with("density")) return {"kg m-3", "bat parameter (the density of its material)"};
+  if (name.ends_with("shear_coefficient")) return {"1", "bat parameter (Timoshenko's shear coefficient)"};
+  return {"m", "bat parameter (a dimension)"};
 }
 
 Description describe(const std::string& name) {
@@ -350,7 +349,9 @@ void add_sweet_spots(const Study& study, const OutputLayout& layout, const std::
     if (axis.name != "z") dims.push_back(axis.name);
   for (auto [name, values] : {std::pair{"sweet_spot_z", &at}, {"sweet_spot_vf", &peak}, {"sweet_spot_width", &width}})
     if (asked(name)) d.variables.push_back(output_variable(name, dims, std::move(*values)));
-  d.variables.back().text_attributes.push_back({"sweet_spot_fraction", std::to_string(study.sweet_spot_fraction)});
+  std::ostringstream fraction;
+  fraction << study.sweet_spot_fraction;
+  d.variables.back().text_attributes.push_back({"sweet_spot_fraction", fraction.str()});
 }
 
 }  // namespace

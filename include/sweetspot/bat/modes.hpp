@@ -3,6 +3,7 @@
 // the slices) or Euler-Bernoulli (Hermite beam elements). Modes are mass-orthonormal; modes 0 and
 // 1 are the exact rigid modes (translation, rotation about the centre of mass) with omega = 0.
 #include <Eigen/Dense>
+#include <limits>
 #include <vector>
 
 #include "sweetspot/bat/bat.hpp"
@@ -28,12 +29,27 @@ struct ModalBasis {
   double moment_of_inertia_cm = 0;
   // Where the degrees of freedom sit and how stiff each slice is: how a point load reads them.
   BeamLayout layout;
+  // A partial solve (ModeRequest) leaves the modes above this angular frequency unsolved (every
+  // unsolved mode has omega >= solved_below); infinity when the basis is complete.
+  double solved_below = std::numeric_limits<double>::infinity();
+  // The vibrational flexibility sum_n x_n x_n^T / omega_n^2 over ALL vibrational modes, solved or
+  // not, near its diagonal: flexibility(i, d) = G(i, i + d), d = 0..3 (beam_flexibility.hpp).
+  // Empty for a rigid-only basis.
+  Eigen::MatrixXd flexibility;
 
   int count() const { return static_cast<int>(omega.size()); }
+  // Every mode of the discretisation solved (rigid-only bases are not).
+  bool complete() const { return count() == vectors.rows(); }
   int slices() const { return static_cast<int>(z.size()); }
   double length() const { return layout.length; }
   // Every mode's displacement at any point z of the bat (layout.point's weights, not snapped).
   Eigen::VectorXd shapes_at(double z) const;
+  // Static compliance sum psi_n(z)^2 / omega_n^2 of every vibrational mode at z, m/N, from the
+  // flexibility: exact whether or not the modes were all solved.
+  double vibrational_compliance_at(double z) const;
+  // The part of it that the unsolved modes carry (0 for a complete basis): the total minus the
+  // solved modes' psi^2 / omega^2, never below 0.
+  double unsolved_compliance_at(double z) const;
   // Vibrational frequencies in Hz (modes 2, 3, ...), ascending.
   std::vector<double> vibrational_frequencies_hz() const;
   // Zeros of psi_n between slice centres, found by linear interpolation, m from the knob.
@@ -45,10 +61,25 @@ struct ModalBasis {
 // to 336. More slices than this are refused for that theory.
 inline constexpr int max_euler_bernoulli_slices = 400;
 
-// With rigid_only, just the two rigid modes, from the mass matrix alone: no eigen-decomposition,
-// for scenes that keep no vibrational mode.
+// Which modes compute_modes solves for. all(): every mode, by the dense solve. rigid_only(): the
+// two rigid modes alone, from the mass matrix (no eigen-decomposition), for scenes that keep no
+// vibrational mode. lowest(k): the k lowest vibrational modes; below(omega): every vibrational
+// mode below omega (rad/s). Those two use the banded solver (banded_eigensolver.hpp) and leave a
+// partial basis; a request that covers every mode takes the dense solve.
+struct ModeRequest {
+  int vibrational = -1;  // -1: all; otherwise the count (lowest) or -2 for below
+  double below_omega = 0;
+
+  static ModeRequest all() { return {}; }
+  static ModeRequest rigid_only() { return {0, 0}; }
+  static ModeRequest lowest(int count) { return {count, 0}; }
+  static ModeRequest below(double omega) { return {-2, omega}; }
+  bool is_all() const { return vibrational == -1; }
+  bool is_rigid_only() const { return vibrational == 0; }
+};
+
 // Throws InputError for an Euler-Bernoulli bat of more than max_euler_bernoulli_slices slices.
-ModalBasis compute_modes(const Bat& bat, BeamTheory theory, bool rigid_only = false);
+ModalBasis compute_modes(const Bat& bat, BeamTheory theory, ModeRequest request = ModeRequest::all());
 
 // The discretisation's mass matrix M (diagonal for Timoshenko, consistent for Euler-Bernoulli).
 Eigen::MatrixXd beam_mass_matrix(const Bat& bat, BeamTheory theory);

@@ -6,6 +6,7 @@
 // estimate of what the dropped modes take is an upper bound; they are kept as a static
 // (residual) compliance sum psi_n^2 / omega_n^2, which removes most of even that.
 #include <Eigen/Dense>
+#include <limits>
 #include <vector>
 
 #include "sweetspot/contact/ball.hpp"
@@ -23,9 +24,28 @@ struct ModeSelection {
 // approach speed v: compression and expansion of the power-law spring in closed form.
 double pulse_duration(const Ball& ball, double approach_speed, double recoil);
 
-// omega and psi over all modes (0 and 1 rigid); keeps the fewest modes whose dropped part stays
-// within `tolerance` of the exit speed.
+// What a partial basis (ModalBasis::complete() false) leaves unsolved at the impact point: the
+// unsolved modes' total static compliance sum psi^2 / omega^2 (exact from the flexibility,
+// ModalBasis::unsolved_compliance_at) and a frequency none of them lies below (solved_below).
+struct UnsolvedModes {
+  double compliance = 0;
+  double omega = std::numeric_limits<double>::infinity();
+};
+
+// omega and psi over the solved modes (0 and 1 rigid; all of them unless `unsolved` says what
+// is missing); keeps the fewest modes whose dropped part stays within `tolerance` of the exit
+// speed. The unsolved modes are dropped first, at a cost bounded from their compliance alone:
+// both terms of a mode's cost are its psi^2 / omega^2 times a factor that falls with omega
+// (omega^2 g(omega) and the lag), so their sum is at most that factor at `unsolved.omega` times
+// their compliance (infinite, i.e. every solved mode kept and the error unknown, when the pulse
+// could still ring them: unsolved.omega below 2 pi / T).
 ModeSelection select_modes(const Eigen::VectorXd& omega, const Eigen::VectorXd& psi, const Ball& ball,
-                           double ball_speed, double bat_speed, double recoil, double tolerance);
+                           double ball_speed, double bat_speed, double recoil, double tolerance,
+                           const UnsolvedModes& unsolved = {});
+
+// Modes faster than this multiple of the pulse's reach 4 pi / T are what a study solves for
+// `auto` (scene.hpp, auto_mode_request): their compliance-weighted cost stays far enough below the
+// tolerance that auto keeps the modes it keeps with every mode solved (tests/test_partial_modes.cpp).
+inline constexpr double auto_solve_factor = 48;
 
 }  // namespace sweetspot

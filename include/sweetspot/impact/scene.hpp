@@ -97,6 +97,14 @@ struct SceneGeometry {
   Eigen::VectorXd shapes_at(const ModalBasis& basis, double z) const;
 };
 
+// `basis` may be partial (ModeRequest): auto then counts the unsolved modes' compliance exactly
+// and bounds what dropping them costs (mode_selection.hpp); fixed counts and "all" read the
+// solved modes, so a study's cache solves at least as many as they ask.
 SceneGeometry scene_geometry(const ImpactScene& scene, const ModalBasis& basis);
+
+// The modes modes = "auto" needs solved at this scene: every one below auto_solve_factor times
+// the rigid-bat pulse's reach 4 pi / T, rounded up to a half-octave of 1000 rad/s. `basis` gives
+// the mass properties only (a rigid-only basis will do).
+ModeRequest auto_mode_request(const ImpactScene& scene, const ModalBasis& basis);
 
 }  // namespace sweetspot

@@ -1,0 +1,35 @@
+#pragma once
+// The lowest modes of the banded pencil K x = w^2 M x without the dense solve's O(n^3) (README,
+// "Numerics"): LAPACK reduces the pencil to tridiagonal form without forming the transformation
+// and bisects for the eigenvalues wanted (dsbgvx, eigenvalues only); each eigenvector then comes
+// from inverse iteration on the banded K - w^2 M itself (dgbtrf/dgbtrs, O(n) per step). Both
+// theories' matrices couple degrees of freedom at most beam_bandwidth apart.
+#include <Eigen/Dense>
+#include <Eigen/SparseCore>
+
+#include "bat/beam_system.hpp"
+
+namespace sweetspot {
+
+inline constexpr int beam_bandwidth = 3;
+
+// Which eigenpairs: the lowest `count` (rigid ones included), or (count < 0) every one with
+// w^2 <= upper.
+struct BandedRequest {
+  int count = -1;
+  double upper = 0;
+  bool diagonal_mass = false;  // Timoshenko's lumped M
+};
+
+// Beyond this share of all modes the bisection and each eigenvector's inverse iteration cost
+// about what the dense solve's O(n^3) does (R161 at N = 84: 60 of 168 modes as long as all 168).
+inline constexpr double max_banded_share = 0.3;
+
+// Ascending eigenvalues and M-normalised eigenvectors (columns) of the request. The two rigid
+// modes come out as round-off; the caller replaces them by the exact ones. False, with nothing
+// solved, when the request covers more than max_banded_share of the modes: the dense solve is
+// then the cheaper.
+bool solve_lowest(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass, BandedRequest request,
+                  Eigen::VectorXd& omega_squared, Eigen::MatrixXd& vectors);
+
+}  // namespace sweetspot
