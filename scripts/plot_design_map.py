@@ -2,7 +2,8 @@
 """Draws a design map from a study over bat parameters (README, "Bats as design spaces"): the
 sweet spot's width and its peak exit speed against two bat dimensions, the other axes at a value
 you choose (default: their middle one), with the designs that break a rule marked: a barrel over
-2.61 in (MLB rule 3.02(a)) or a drop under -3 (lighter than the length in inches less 3 ounces,
+2.61 in (MLB rule 3.02(a)) or a bat lighter than "drop -3"
+(drop = length in inches - weight in ounces over 3,
 the NCAA/BBCOR limit). Run it with Debian's interpreter, which has xarray, h5netcdf and matplotlib.
 
 Usage: /usr/bin/python3 scripts/plot_design_map.py RESULT.h5 [OUT.png] [--x DIM] [--y DIM] [DIM=VALUE ...]
@@ -72,7 +73,7 @@ with xr.open_dataset(path, engine="h5netcdf") as ds:
         fig.colorbar(mesh, ax=ax, label=label.format(fraction))
         # Designs that break a rule: crossed out.
         barrel = ds["bat.barrel_diameter"].values if "bat.barrel_diameter" in ds else None
-        illegal = np.asarray(drop) < -3
+        illegal = np.asarray(drop) > 3  # drop = length - weight: "-3" bats are the lightest allowed
         if x_dim == "bat.barrel_diameter":
             illegal = illegal | (ds[x_dim].values[None, :] > 2.61 * INCH)
         yy, xx = np.meshgrid(y, x, indexing="ij")
@@ -83,7 +84,8 @@ with xr.open_dataset(path, engine="h5netcdf") as ds:
     axes[0].set_ylabel(f"{y_dim} / {yu}")
     axes[1].legend(loc="lower right", fontsize=8, framealpha=0.8)
     held_text = ", ".join(f"{k} = {v if isinstance(v, str) else f'{float(v):g}'}" for k, v in chosen.items())
-    fig.suptitle(f"{ds.attrs.get('title', '')}\n{held_text}; x: barrel > 2.61 in (MLB) or drop < -3 (NCAA)",
+    swing = "equal effort" if ds.attrs.get("scene_swing") == "equal_effort" else "the same swing for every bat"
+    fig.suptitle(f"{ds.attrs.get('title', '')} ({swing})\n{held_text}; x: barrel > 2.61 in (MLB) or lighter than drop -3 (NCAA)",
                  fontsize=9)
     fig.tight_layout()
     fig.savefig(out, dpi=120)

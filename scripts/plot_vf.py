@@ -26,7 +26,10 @@ with xr.open_dataset(path, engine="h5netcdf") as ds:
         ax.plot(100 * curve.z, curve, marker="o", markersize=3, label=bat or str(ds.bat.values[0]))
     ax.set_xlabel("impact point z / cm from the knob")
     ax.set_ylabel("exit speed $v_f$ / (m/s)")
-    ax.set_title(", ".join(f"{k} = {float(v):g}" for k, v in fixed.items()) or ds.attrs.get("title", ""))
+    title = ", ".join(f"{k} = {float(v):g}" for k, v in fixed.items()) or ds.attrs.get("title", "")
+    if ds.attrs.get("scene_swing") == "equal_effort":  # say how the bats were swung
+        title += f"\nswung with equal effort (reference {ds.attrs['scene_reference_bat']})"
+    ax.set_title(title)
     ax.grid(alpha=0.3)
     ax.legend(title="bat")
     fig.tight_layout()

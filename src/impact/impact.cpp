@@ -7,6 +7,7 @@
 #include <string>
 #include <utility>
 
+#include "sweetspot/impact/batted_ball.hpp"
 #include "sweetspot/impact/formulas.hpp"
 #include "sweetspot/impact/step_selection.hpp"
 
@@ -94,6 +95,7 @@ const char* first_non_finite(const ImpactResult& r, const AskedValues& asked) {
       {"impulse", r.impulse},
       {"vf_rigid", asked.vf_rigid ? r.vf_rigid : 0.0},
       {"vf_van_zandt", asked.vf_van_zandt ? r.vf_van_zandt : 0.0},
+      {"bbs_linear", asked.bbs_linear ? r.bbs_linear : 0.0},
       {"energy", e.initial + e.ball + e.bat_translation + e.bat_rotation + e.vibration + e.ball_dissipated + e.residual},
   };
   for (const auto& [name, value] : scalars)
@@ -171,6 +173,7 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& given) 
   ImpactResult r = collision_result(c);
   if (!scene.integrator.record_force) r.force.clear();  // recorded for this function's use alone
   r.z = g.z;
+  r.bat_speed = g.bat_speed;
   r.modes_kept = g.modes_kept;
   r.modes_error = g.modes_error;
   if (c.status == CollisionStatus::refused_step) return r;
@@ -180,6 +183,9 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& given) 
     return r;
   }
   if (scene.rigid_comparison) r.vf_rigid = rigid_exit_speed(scene.ball.e0, g.recoil, scene.ball_speed, g.bat_speed);
+  if (scene.linear_batted_ball)
+    r.bbs_linear = linear_batted_ball_speed(collision_efficiency(basis, scene, scene.e_a_speed), scene.ball_speed,
+                                            g.bat_speed);
   r.e_eff = effective_cor(r.vf, g.recoil, scene.ball_speed, g.bat_speed);
   // Only a whole force profile can drive the modes (the toy model does the same).
   if (scene.van_zandt_comparison && c.status == CollisionStatus::ok)
@@ -191,7 +197,8 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& given) 
   e.ball = 0.5 * scene.ball.mass * r.vf * r.vf;
   bat_energies(scene, g, basis, c, r);
   close_balance(r);
-  require_finite(r, {options.find_collision_time, scene.rigid_comparison, scene.van_zandt_comparison});
+  require_finite(r, {options.find_collision_time, scene.rigid_comparison, scene.van_zandt_comparison,
+                     scene.linear_batted_ball});
   return r;
 }
 

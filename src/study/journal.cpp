@@ -71,6 +71,7 @@ JournalKey journal_key(const Study& study, std::uint64_t width) {
   // since is no part of this run.
   Checksum inputs;
   for (const BatSource& source : study.bat_sources) inputs.add(source.toml_text).add(source.profile_text);
+  inputs.add(study.reference_source.toml_text).add(study.reference_source.profile_text);
   return {Checksum().add(study.text).value, inputs.value,
           Checksum().add(std::string(version) + " (" + git_commit + ")").value, study.points(), width};
 }

@@ -74,7 +74,9 @@ void check_not_an_input(const fs::path& written, const std::vector<fs::path>& in
 
 std::vector<fs::path> study_inputs(const Study& study) {
   std::vector<fs::path> inputs{study.file};
-  for (const BatSource& bat : study.bat_sources) {
+  std::vector<BatSource> bats = study.bat_sources;
+  if (study.equal_effort) bats.push_back(study.reference_source);
+  for (const BatSource& bat : bats) {
     inputs.push_back(bat.toml_file);
     if (!bat.profile_file.empty()) inputs.push_back(bat.profile_file);  // none for a bat given by dimensions
   }

@@ -90,6 +90,28 @@ void set_parameter(BatDesign& design, const Setting& setting, std::size_t i, con
   }
 }
 
+// swing = "equal_effort" needs the bat the player's swing was measured with, whose MOI about the
+// knob every bat's swing is scaled from; its keys mean nothing for a swing as given.
+void read_equal_effort(Study& study, const Settings& s, const Where& top) {
+  const Setting *swing = s["swing"], *reference = s["reference_bat"], *exponent = s["swing_exponent"];
+  study.equal_effort = swing && swing->values[0] == 1;
+  if (!study.equal_effort) {
+    for (const Setting* key : {reference, exponent})
+      if (key) reject(key->where, parameter_value(*key, 0), "applies only with swing = \"equal_effort\"");
+    return;
+  }
+  if (!reference)
+    reject(Where{top.file, "scene", 0}.missing("reference_bat"), "",
+           "swing = \"equal_effort\" needs the bat file the given swing was measured with");
+  const fs::path file = (study.file.parent_path() / reference->labels[0]).lexically_normal();
+  try {
+    study.reference_moi =
+        design_mass_properties(load_bat_design(file, study.reference_source)).moment_of_inertia_about(0);
+  } catch (const InputError& e) {
+    reject(reference->where, quote(reference->labels[0]), e.what());
+  }
+}
+
 // A study builds and checks every bat before any work, and each rank keeps them all.
 constexpr double max_designs = 1e5;
 
@@ -267,6 +289,7 @@ void check_rk4_stability(const Settings& s, const Where& top, const std::vector<
 void check_bat_scene(Study& study, const Settings& s, const Where& top) {
   const Setting& bat = *s["bat"];
   check_swing(s, top);
+  read_equal_effort(study, s, top);
   load_bat_files(study, bat);
   const std::vector<std::string> labels = build_designs(study, s, bat);
   const std::vector<Bat>& bats = study.designs;

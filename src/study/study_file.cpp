@@ -53,6 +53,7 @@ Study load_study(const fs::path& file) {
   // The comparisons cost time (Van Zandt records and integrates the force profile): only when asked.
   base.scene.rigid_comparison = std::ranges::count(study.outputs, "vf_rigid") > 0;
   base.scene.van_zandt_comparison = std::ranges::count(study.outputs, "vf_van_zandt") > 0;
+  base.scene.linear_batted_ball = std::ranges::count(study.outputs, "bbs_linear") > 0;
   base.scene.histories = std::ranges::any_of(study.outputs, is_history);
   base.scene.force_response = std::ranges::count(study.outputs, "force_response") > 0;
   base.scene.mode_response = std::ranges::count(study.outputs, "mode_response") > 0;
@@ -60,6 +61,7 @@ Study load_study(const fs::path& file) {
   base.scene.swing.about_center = s["center"] != nullptr;
   study.base = base.scene;
   study.omega_tau = base.omega_tau;
+  study.swing_exponent = base.swing_exponent;
   study.theory = base.theory;
   study.slices = base.slices;
   for (const Setting& axis : s.axes) study.axes.push_back(make_axis(axis));

@@ -40,6 +40,7 @@ GridPoint grid_point(const Study& study, std::size_t index) {
   p.kind = study.kind;
   p.scene = study.base;
   p.omega_tau = study.omega_tau;
+  p.swing_exponent = study.swing_exponent;
   p.slices = study.slices;
   p.theory = study.theory;
   p.coords.resize(study.axes.size());
@@ -52,6 +53,9 @@ GridPoint grid_point(const Study& study, std::size_t index) {
     spec->set(p, axis.values[p.coords[k]]);
   }
   p.design = design_index(study, p.coords);
+  if (study.equal_effort)
+    p.scene.swing = equal_effort_swing(p.scene.swing, study.reference_moi,
+                                       study.design_mass[p.design].moment_of_inertia_about(0), p.swing_exponent);
   return p;
 }
 

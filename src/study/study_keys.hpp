@@ -23,7 +23,10 @@ std::string kind_text(StudyKind kind);
 
 // `numbers`: a list of numbers in [scene] (probes), never an axis; `set` takes each in turn.
 // `material`: a wood preset's name (bat.material); `bat_parameter`: any other bat parameter.
-enum class Type { number, integer, boolean, bat, theory, modes, integrator, preset, numbers, material, bat_parameter };
+// `swing`: "given" or "equal_effort"; `reference`: the equal-effort swing's reference bat file.
+enum class Type {
+  number, integer, boolean, bat, theory, modes, integrator, preset, numbers, material, bat_parameter, swing, reference
+};
 
 // One key of [scene]: how its value is read, the rule validate() in scene.cpp applies to it, how
 // it sets a grid point, and the kinds of study it belongs to and must be given in. Every value

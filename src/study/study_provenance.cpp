@@ -51,6 +51,12 @@ void add_scene_key(const Study& study, const std::string& key, SceneAttributes& 
   if (key == "cm_speed") return s.swing.about_center ? void() : out.number(key, s.swing.cm_speed);
   if (key == "omega") return out.number(key, s.swing.omega);
   if (key == "pivot") return out.integer(key, s.pivoted ? 1 : 0);
+  if (key == "swing") return out.text(key, study.equal_effort ? "equal_effort" : "given");
+  // The swing's reference: its file (its text is reference_bat_toml) and the exponent, with equal effort.
+  if (key == "reference_bat")
+    return study.equal_effort ? out.text(key, study.reference_source.toml_file.string()) : void();
+  if (key == "swing_exponent") return study.equal_effort ? out.number(key, study.swing_exponent) : void();
+  if (key == "e_a_speed") return out.number(key, s.e_a_speed);
   if (key == "modes") return add_modes(out, s.vibrational_modes);
   if (key == "mode_tolerance") return out.number(key, s.mode_tolerance);
   if (key == "accuracy") return out.number(key, s.accuracy);  // 0: the step as given (dt)

@@ -101,14 +101,17 @@ Value read_value(const Where& at, const KeySpec& spec, const toml::node& node) {
   else if (spec.type == Type::modes && node.value<std::string_view>() == "auto")
     return {auto_modes, ""};
   else if ((spec.type == Type::bat || spec.type == Type::theory || spec.type == Type::integrator ||
-            spec.type == Type::material) &&
+            spec.type == Type::material || spec.type == Type::reference) &&
            node.is_string())
     v.label = node.as_string()->get();
+  else if (spec.type == Type::swing && (node.value<std::string_view>() == "given" ||
+                                        node.value<std::string_view>() == "equal_effort"))
+    return {node.value<std::string_view>() == "equal_effort" ? 1.0 : 0.0, std::string(*node.value<std::string_view>())};
   else if (spec.type == Type::preset && node.value<std::string_view>() == "n2000")
     return {0, "n2000"};
   else
     bad();
-  if (spec.type == Type::bat && v.label.empty()) bad();
+  if ((spec.type == Type::bat || spec.type == Type::reference) && v.label.empty()) bad();
   try {
     if (spec.type == Type::theory) v.number = static_cast<double>(parse_beam_theory(v.label));
     if (spec.type == Type::integrator) v.number = static_cast<double>(parse_method(v.label));
@@ -122,7 +125,8 @@ Value read_value(const Where& at, const KeySpec& spec, const toml::node& node) {
 
 void add(Setting& s, Value v) {
   s.values.push_back(v.number);
-  if (s.spec->type == Type::bat || s.spec->type == Type::theory || s.spec->type == Type::material)
+  if (s.spec->type == Type::bat || s.spec->type == Type::theory || s.spec->type == Type::material ||
+      s.spec->type == Type::reference)
     s.labels.push_back(std::move(v.label));
 }
 

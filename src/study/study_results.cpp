@@ -25,6 +25,11 @@ const std::map<std::string, Description>& descriptions() {
       {"vf", {"m/s", "exit speed of the ball, positive away from the bat"}},
       {"vf_rigid", {"m/s", "exit speed of the ball off a rigid bat at the same point (free or pivoted)"}},
       {"vf_van_zandt", {"m/s", "exit speed of the ball by Van Zandt's prescription (N2000 App. A)"}},
+      {"bat_speed", {"m/s", "speed of the struck point of the bat toward the ball at first touch"}},
+      {"bbs", {"m/s", "batted-ball speed: vf, the full flexible model's"}},
+      {"bbs_linear", {"m/s", "batted-ball speed by the linear rule e_A v_pitch + (1 + e_A) v_bat, e_A at e_a_speed"}},
+      {"swing_exponent", {"1", "exponent n of the equal-effort swing, speed ~ MOI^-n"}},
+      {"e_a_speed", {"m/s", "ball speed at which e_A is taken for bbs_linear"}},
       {"e_eff", {"1", "effective coefficient of restitution"}},
       {"contact_time", {"s", "time the ball is in contact with the bat, summed over contacts"}},
       {"collision_time", {"s", "time from first touch until 99 % of the impulse is delivered"}},
@@ -113,7 +118,9 @@ double energy_value(const ImpactEnergy& e, const std::string& name) {
 double scalar_value(const ImpactResult& r, const std::string& name) {
   if (name == "status") return static_cast<double>(r.status);
   if (r.status != CollisionStatus::ok) return missing;
-  if (name == "vf") return r.vf;
+  if (name == "vf" || name == "bbs") return r.vf;  // the ball's exit speed is the batted-ball speed
+  if (name == "bat_speed") return r.bat_speed;
+  if (name == "bbs_linear") return r.bbs_linear;
   if (name == "vf_rigid") return r.vf_rigid;
   if (name == "vf_van_zandt") return r.vf_van_zandt;
   if (name == "e_eff") return r.e_eff;

@@ -36,6 +36,9 @@ struct ImpactResult {
   double u_max = 0;           // m
   double peak_force = 0;      // N
   double impulse = 0;         // N s
+  double bat_speed = 0;       // m/s: the struck point's speed toward the ball at first touch
+  // The rules' linear estimate of vf (batted_ball.hpp), NaN unless the scene asks for it.
+  double bbs_linear = std::numeric_limits<double>::quiet_NaN();
   // Exit speeds to compare with vf (physics.md §5), NaN unless the scene asks for them: the rigid
   // bat's at the same point (free or pivoted), and Van Zandt's prescription for the same
   // collision (the toy model always gives it).
@@ -65,6 +68,7 @@ struct AskedValues {
   bool collision_time = true;
   bool vf_rigid = false;
   bool vf_van_zandt = false;
+  bool bbs_linear = false;
 };
 
 // No NaN or infinite output comes with status ok: an ok result with one (a degenerate pulse, an

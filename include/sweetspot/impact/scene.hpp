@@ -50,6 +50,10 @@ struct HistoryRequest {
   std::size_t samples() const { return static_cast<std::size_t>(steps()) + 1; }
 };
 
+// The speed at which the rules measure the collision efficiency e_A (batted_ball.hpp): the BBCOR
+// and BESR rig's 136 mph (70 mph pitch plus 66 mph bat; NCAA, ASTM F2219).
+inline constexpr double lab_e_a_speed = 136 * 0.44704;  // m/s
+
 struct ImpactScene {
   double z = 0.7;             // impact location, m from the knob (anywhere on the bat)
   Ball ball;
@@ -67,6 +71,10 @@ struct ImpactScene {
   // (vf_rigid) and Van Zandt's prescription (vf_van_zandt), which records the force profile.
   bool rigid_comparison = false;
   bool van_zandt_comparison = false;
+  // The rules' linear estimate of the batted-ball speed (batted_ball.hpp), with e_A taken at
+  // e_a_speed: another collision, so only when asked.
+  bool linear_batted_ball = false;
+  double e_a_speed = lab_e_a_speed;
   // Also only when asked, and each records the force profile: the time histories of `history`,
   // the force response g(omega tau) on force_response_grid() (impact.hpp) and R_n per kept
   // vibrational mode (physics.md §5).

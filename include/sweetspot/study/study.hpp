@@ -67,6 +67,7 @@
 #include "sweetspot/bat/bat_design.hpp"
 #include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/bat/modes.hpp"
+#include "sweetspot/impact/equal_effort.hpp"
 #include "sweetspot/impact/scene.hpp"
 
 namespace sweetspot {
@@ -110,11 +111,17 @@ struct Study {
   // with these. Without bat-parameter axes, one per bat file.
   std::vector<Bat> designs;
   std::vector<MassProperties> design_mass;  // the exact mass properties of each design
+  // swing = "equal_effort": every bat's swing scales from the base scene's, the player's swing
+  // with the reference bat, by its MOI about the knob (equal_effort.hpp).
+  bool equal_effort = false;
+  BatSource reference_source;  // the reference bat's files and texts (a run's inputs too)
+  double reference_moi = 0;    // kg m^2 about the knob, exact for its design
   // The [scene] values over the defaults; axes set their own keys per grid point.
   BeamTheory theory = BeamTheory::timoshenko;
   int slices = 0;  // 0: the profile's own slice count
   ImpactScene base;                  // impact; wall: its ball, ball_speed and integrator
   double omega_tau = 0;              // toy
+  double swing_exponent = default_swing_exponent;  // equal effort, unless an axis
   std::vector<Axis> axes;            // in the order written
   std::vector<std::string> outputs;  // in the order written
   double sweet_spot_fraction = 0.01;  // [output]: the sweet spot's zone is within this of the peak vf
@@ -136,6 +143,7 @@ struct GridPoint {
   double omega_tau = 0;
   std::size_t bat = 0;     // index into Study::bats
   std::size_t design = 0;  // index into Study::designs
+  double swing_exponent = default_swing_exponent;  // equal-effort swings: n in v ~ I^-n
   int slices = 0;       // 0: the profile's own
   BeamTheory theory = BeamTheory::timoshenko;
   std::vector<std::size_t> coords;  // one per axis
