@@ -88,6 +88,10 @@ constexpr OutputSpec outputs[] = {
     {"vf_rigid", impact, 0},
     {"vf_van_zandt", impact | toy, toy},
     {"e_eff", ball_kinds, ball_kinds},
+    {"e_a", impact, 0},
+    {"bbcor", impact, 0},  // these three only for pivoted bats (read_outputs)
+    {"besr", impact, 0},
+    {"bpf", impact, 0},
     {"contact_time", ball_kinds, ball_kinds},
     {"collision_time", ball_kinds, ball_kinds},
     {"u_max", ball_kinds, 0},

@@ -8,7 +8,7 @@ inline constexpr double metres_per_second_per_mph = 0.44704;
 
 // The pivot of the swing-weight (MOI) measurement and of the bat-test rig, 6 in from the knob
 // (ASTM F2398; NCAA).
-inline constexpr double swing_weight_pivot = 6 * metres_per_inch;  // 0.1524 m
+inline constexpr double swing_weight_pivot = 0.1524;  // m, 6 in, written as users write it
 
 // Drop: length in inches minus weight in ounces (a 33-in, 30-oz bat has drop 3; the rules'
 // "-3" is the weight less the length, so "at least -3" is a drop of at most 3 here).
