@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "program.hpp"
+#include "refusal.hpp"
 #include "temp_dir.hpp"
 
 namespace {
@@ -16,15 +17,6 @@ namespace {
 std::string read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), {}};
-}
-
-// One line, in the program's style, with every fragment; exit status 2.
-void require_refused(const ProgramRun& run, std::initializer_list<std::string> fragments) {
-  INFO(run.output);
-  CHECK(run.exit_code == 2);
-  CHECK_THAT(run.output, Catch::StartsWith("sweetspot: error: "));
-  CHECK(std::ranges::count(run.output, '\n') == 1);
-  for (const std::string& fragment : fragments) CHECK_THAT(run.output, Catch::Contains(fragment));
 }
 
 // A bat of length 0.84 m over a profile of `rows` slices of 6 cm diameter.

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "program.hpp"
+#include "refusal.hpp"
 #include "sweetspot/bat/bat_design.hpp"
 #include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/impact/certification.hpp"
@@ -43,15 +44,6 @@ RigSettings fine_rig(double e0, double pivot, int modes) {
   rig.vibrational_modes = modes;
   rig.integrator.dt = 1e-7;
   return rig;
-}
-
-// One line, in the program's style, with every fragment; exit status 2.
-void require_refused(const ProgramRun& run, std::initializer_list<std::string> fragments) {
-  INFO(run.output);
-  CHECK(run.exit_code == 2);
-  CHECK_THAT(run.output, Catch::StartsWith("sweetspot: error: "));
-  CHECK(std::ranges::count(run.output, '\n') == 1);
-  for (const std::string& fragment : fragments) CHECK_THAT(run.output, Catch::Contains(fragment));
 }
 
 }  // namespace
