@@ -97,7 +97,7 @@ const char* first_non_finite(const ImpactResult& r, const AskedValues& asked) {
   const std::pair<const char*, double> scalars[] = {
       {"vf", r.vf},
       {"e_eff", r.e_eff},
-      {"e_a", r.rig.e_a},
+      {"e_a", asked.e_a ? r.rig.e_a : 0.0},
       {"contact_time", r.contact_time},
       {"collision_time", asked.collision_time ? r.collision_time : 0.0},
       {"u_max", r.u_max},
@@ -203,7 +203,7 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& given) 
   e.ball = 0.5 * scene.ball.mass * r.vf * r.vf;
   bat_energies(scene, g, basis, c, r);
   close_balance(r);
-  require_finite(r, {options.find_collision_time, scene.rigid_comparison, scene.van_zandt_comparison});
+  require_finite(r, {options.find_collision_time, scene.rigid_comparison, scene.van_zandt_comparison, true});
   return r;
 }
 

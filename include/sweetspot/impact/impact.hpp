@@ -70,6 +70,7 @@ struct AskedValues {
   bool collision_time = true;
   bool vf_rigid = false;
   bool vf_van_zandt = false;
+  bool e_a = false;  // a bat was struck: the collision efficiency exists (the wall and toy have none)
 };
 
 // No NaN or infinite output comes with status ok: an ok result with one (a degenerate pulse, an
