@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "program.hpp"
+#include "refusal.hpp"
 #include "temp_dir.hpp"
 
 namespace {
@@ -16,15 +17,6 @@ namespace {
 std::string read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), {}};
-}
-
-// One line, in the program's style, with every fragment; exit status 2.
-void require_refused(const ProgramRun& run, std::initializer_list<std::string> fragments) {
-  INFO(run.output);
-  CHECK(run.exit_code == 2);
-  CHECK_THAT(run.output, Catch::StartsWith("sweetspot: error: "));
-  CHECK(std::ranges::count(run.output, '\n') == 1);
-  for (const std::string& fragment : fragments) CHECK_THAT(run.output, Catch::Contains(fragment));
 }
 
 // A bat of length 0.84 m over a profile of `rows` slices of 6 cm diameter.
@@ -159,8 +151,8 @@ TEST_CASE("Usage errors: one line in the program's style, exit status 2", "[boun
       {impact + " --center 0.1 --integrator euler", "impact: --integrator: 'euler': expected rk4, exact or dopri"},
       {"modes " + r161 + " --count 0", "modes: --count: Value 0 not in range 1 to 8192"},
       {"modes " + r161 + " --shapes", "modes: --shapes requires --json"},
-      {"", "expected a command: modes, impact, wall, toy, run or convergence"},
-      {"swing", "expected a command: modes, impact, wall, toy, run or convergence, not 'swing'"},
+      {"", "expected a command: modes, impact, wall, toy, run, convergence or certify"},
+      {"swing", "expected a command: modes, impact, wall, toy, run, convergence or certify, not 'swing'"},
       {impact, "impact: give the swing as --cm-speed or as --center"},
   };
   for (const Case& c : cases) {

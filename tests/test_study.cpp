@@ -343,7 +343,8 @@ TEST_CASE("outputs: any ImpactResult field, mode_energy with a fixed mode count"
   std::string all;
   for (const std::string& name : output_names()) all += (all.empty() ? "\"" : ", \"") + name + "\"";
   // The histories at the probes need probes.
-  const std::string probed = with(good_study, "e0 = 0.5\n", "e0 = 0.5\nmodes = 18\nprobes = [0.13]\n");
+  // The rig's measures need a pivoted bat.
+  const std::string probed = with(good_study, "e0 = 0.5\n", "e0 = 0.5\nmodes = 18\nprobes = [0.13]\npivot = true\n");
   const Study every = dir.load(with(probed, "[\"vf\", \"e_eff\"]", "[" + all + "]"));
   CHECK(every.outputs == output_names());
   CHECK(every.base.histories);

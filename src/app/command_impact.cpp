@@ -27,18 +27,6 @@ struct ImpactOptions {
   ImpactScene scene;
 };
 
-int parse_modes(const std::string& text) {
-  if (text == "all") return all_modes;
-  if (text == "auto") return auto_modes;
-  try {
-    std::size_t used = 0;
-    const int n = std::stoi(text, &used);
-    if (used == text.size() && n >= 0) return n;
-  } catch (const std::exception&) {
-  }
-  throw InputError("--modes " + text + ": expected a number of vibrational modes (0, 1, 2, ...), 'all' or 'auto'");
-}
-
 Json energy_json(const ImpactEnergy& e) {
   return Json::Object()
       .add("initial", e.initial)
@@ -119,6 +107,18 @@ void run_impact(ImpactOptions& o) {
 }
 
 }  // namespace
+
+int parse_modes(const std::string& text) {
+  if (text == "all") return all_modes;
+  if (text == "auto") return auto_modes;
+  try {
+    std::size_t used = 0;
+    const int n = std::stoi(text, &used);
+    if (used == text.size() && n >= 0) return n;
+  } catch (const std::exception&) {
+  }
+  throw InputError("--modes " + text + ": expected a number of vibrational modes (0, 1, 2, ...), 'all' or 'auto'");
+}
 
 void add_ball_options(CLI::App& cmd, Ball& ball) {
   cmd.add_option("--e0", ball.e0, "coefficient of restitution on a rigid wall, in (0, 1]")->capture_default_str();

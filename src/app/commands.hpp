@@ -13,6 +13,10 @@ void add_wall_command(CLI::App& app);
 void add_toy_command(CLI::App& app);
 void add_run_command(CLI::App& app);
 void add_convergence_command(CLI::App& app);
+void add_certify_command(CLI::App& app);
+
+// --modes: a number of vibrational modes, "all" or "auto"; InputError naming --modes otherwise.
+int parse_modes(const std::string& text);
 
 // Options shared by the commands that run a collision.
 void add_ball_options(CLI::App& cmd, Ball& ball);

@@ -17,6 +17,7 @@ class Json {
     return Json(buf);
   }
   static Json integer(long long v) { return Json(std::to_string(v)); }
+  static Json boolean(bool v) { return Json(v ? "true" : "false"); }
   static Json string(const std::string& s) {
     std::string out = "\"";
     for (char c : s) {

@@ -39,6 +39,16 @@ void bat_energies(const ImpactScene& scene, const SceneGeometry& g, const ModalB
   }
 }
 
+// The rig's measures at this point. A pivoted bat swinging about its pivot gives the rig's
+// numbers at the relative speed v_ball + v_bat: rotation about the pivot is its free rigid mode.
+RigMeasures impact_rig_measures(const ImpactScene& scene, const SceneGeometry& g, double vf) {
+  const double e_a = collision_efficiency(vf, scene.ball_speed, g.bat_speed);
+  if (scene.pivoted) return rig_measures(e_a, g.recoil, scene.ball.e0);  // g.recoil = m d^2 / I_pivot
+  RigMeasures free;
+  free.e_a = e_a;
+  return free;
+}
+
 // What a scene asks beside the collision that needs its whole force profile.
 void add_force_analyses(const ImpactScene& scene, const ModalBasis& basis, const SceneGeometry& g, const Collision& c,
                         ImpactResult& r) {
@@ -88,6 +98,7 @@ const char* first_non_finite(const ImpactResult& r, const AskedValues& asked) {
   const std::pair<const char*, double> scalars[] = {
       {"vf", r.vf},
       {"e_eff", r.e_eff},
+      {"e_a", asked.e_a ? r.rig.e_a : 0.0},
       {"contact_time", r.contact_time},
       {"collision_time", asked.collision_time ? r.collision_time : 0.0},
       {"u_max", r.u_max},
@@ -187,6 +198,7 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& given) 
     r.bbs_linear = linear_batted_ball_speed(collision_efficiency(basis, scene, scene.e_a_speed), scene.ball_speed,
                                             g.bat_speed);
   r.e_eff = effective_cor(r.vf, g.recoil, scene.ball_speed, g.bat_speed);
+  r.rig = impact_rig_measures(scene, g, r.vf);
   // Only a whole force profile can drive the modes (the toy model does the same).
   if (scene.van_zandt_comparison && c.status == CollisionStatus::ok)
     r.vf_van_zandt = van_zandt_exit_speed(g.contact, scene.ball, g.recoil, scene.ball_speed, g.bat_speed, c.force);
@@ -198,7 +210,7 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& given) 
   bat_energies(scene, g, basis, c, r);
   close_balance(r);
   require_finite(r, {options.find_collision_time, scene.rigid_comparison, scene.van_zandt_comparison,
-                     scene.linear_batted_ball});
+                     scene.linear_batted_ball, true});
   return r;
 }
 

@@ -12,7 +12,6 @@ namespace sweetspot {
 namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-constexpr double metres_per_inch = 0.0254, kilograms_per_ounce = 0.028349523125;
 // The modes whose nodes are stored, and the most nodes any of them has (mode k has k + 1).
 constexpr int node_modes = 3, most_nodes = node_modes + 1;
 
@@ -80,10 +79,6 @@ void add_mode_variables(const Study& study, const DesignModes& modes, int mode_c
 }
 
 }  // namespace
-
-double bat_drop(double length_m, double mass_kg) {
-  return length_m / metres_per_inch - mass_kg / kilograms_per_ounce;
-}
 
 std::vector<std::string> design_dims(const Study& study) {
   std::vector<std::string> dims{"bat"};

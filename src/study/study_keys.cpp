@@ -100,6 +100,10 @@ constexpr OutputSpec outputs[] = {
     {"bbs", impact, 0},
     {"bbs_linear", impact, 0},
     {"e_eff", ball_kinds, ball_kinds},
+    {"e_a", impact, 0},
+    {"bbcor", impact, 0},  // these three only for pivoted bats (read_outputs)
+    {"besr", impact, 0},
+    {"bpf", impact, 0},
     {"contact_time", ball_kinds, ball_kinds},
     {"collision_time", ball_kinds, ball_kinds},
     {"u_max", ball_kinds, 0},

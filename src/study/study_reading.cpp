@@ -325,6 +325,18 @@ std::string unavailable(const toml::node& item, StudyKind kind) {
   return "";
 }
 
+namespace {
+
+// The rig's measures beyond e_a are defined by the pivot that holds the bat.
+bool is_rig_measure(const std::string& name) { return name == "bbcor" || name == "besr" || name == "bpf"; }
+
+bool every_point_pivoted(const Settings& s) {
+  const std::vector<double> pivot = s.values("pivot", 0);
+  return std::ranges::count(pivot, 0.0) == 0;
+}
+
+}  // namespace
+
 std::vector<std::string> read_outputs(const Where& top, const toml::table& doc, const Settings& s, StudyKind kind) {
   const toml::table* table = subtable(top, doc, "output");
   const Where section{top.file, "output", 0};
@@ -349,6 +361,10 @@ std::vector<std::string> read_outputs(const Where& top, const toml::table& doc, 
       reject(at.item(i, item), describe(item),
              "needs a fixed number of modes >= 1 (modes a number in [scene], not \"all\", \"auto\" (the "
              "default) or an axis)");
+    if (is_rig_measure(name) && !every_point_pivoted(s))
+      reject(at.item(i, item), describe(item),
+             "needs a pivoted bat at every point (pivot = true, not an axis with false): its recoil factor is the "
+             "rig's m d^2 / I about the pivot");
     const Setting* z = find(s.axes, "z");
     if (name.starts_with("sweet_spot_") && (!z || z->values.size() < 3))
       reject(at.item(i, item), describe(item), "needs a z axis of at least 3 points, to reduce v_f along it");

@@ -31,6 +31,10 @@ const std::map<std::string, Description>& descriptions() {
       {"swing_exponent", {"1", "exponent n of the equal-effort swing, speed ~ MOI^-n"}},
       {"e_a_speed", {"m/s", "ball speed at which e_A is taken for bbs_linear"}},
       {"e_eff", {"1", "effective coefficient of restitution"}},
+      {"e_a", {"1", "collision efficiency (vf - v_bat) / (ball_speed + v_bat)"}},
+      {"bbcor", {"1", "ball-bat coefficient of restitution e_a (1 + r) + r, r = m d^2 / I_pivot"}},
+      {"besr", {"1", "ball exit speed ratio e_a + 1/2"}},
+      {"bpf", {"1", "bat performance factor bbcor / e0"}},
       {"contact_time", {"s", "time the ball is in contact with the bat, summed over contacts"}},
       {"collision_time", {"s", "time from first touch until 99 % of the impulse is delivered"}},
       {"u_max", {"m", "largest compression of the ball"}},
@@ -124,6 +128,10 @@ double scalar_value(const ImpactResult& r, const std::string& name) {
   if (name == "vf_rigid") return r.vf_rigid;
   if (name == "vf_van_zandt") return r.vf_van_zandt;
   if (name == "e_eff") return r.e_eff;
+  if (name == "e_a") return r.rig.e_a;
+  if (name == "bbcor") return r.rig.bbcor;
+  if (name == "besr") return r.rig.besr;
+  if (name == "bpf") return r.rig.bpf;
   if (name == "contact_time") return r.contact_time;
   if (name == "collision_time") return r.collision_time;
   if (name == "u_max") return r.u_max;

@@ -8,6 +8,7 @@
 
 #include "sweetspot/contact/collision.hpp"
 #include "sweetspot/impact/histories.hpp"
+#include "sweetspot/impact/rig_measures.hpp"
 #include "sweetspot/bat/modes.hpp"
 #include "sweetspot/impact/scene.hpp"
 
@@ -44,6 +45,10 @@ struct ImpactResult {
   // collision (the toy model always gives it).
   double vf_rigid = std::numeric_limits<double>::quiet_NaN();
   double vf_van_zandt = std::numeric_limits<double>::quiet_NaN();
+  // The measures of the bat-test rig (rig_measures.hpp): e_a for every scene that collides; bbcor,
+  // besr and bpf only for a pivoted one, whose recoil factor is the rig's r = m d^2 / I_pivot
+  // (NaN for a free bat, which no rig holds).
+  RigMeasures rig;
   ImpactEnergy energy;
   std::vector<double> mode_energy;  // J per kept vibrational mode (of the held bat when pivoted)
   std::vector<int> modes_kept;      // vibrational mode numbers kept (1 = the first)
@@ -69,6 +74,7 @@ struct AskedValues {
   bool vf_rigid = false;
   bool vf_van_zandt = false;
   bool bbs_linear = false;
+  bool e_a = false;  // a bat was struck: the collision efficiency exists (the wall and toy have none)
 };
 
 // No NaN or infinite output comes with status ok: an ok result with one (a degenerate pulse, an

@@ -5,17 +5,11 @@
 // and the lowest vibrational frequencies and their nodes (from the bat's modes as the study cuts it).
 #include <vector>
 
+#include "sweetspot/bat/inch_pound.hpp"  // swing_weight_pivot, bat_drop
 #include "sweetspot/study/dataset.hpp"
 #include "sweetspot/study/study.hpp"
 
 namespace sweetspot {
-
-// The pivot of the swing-weight (MOI) measurement and of the bat-test rig, 6 in from the knob
-// (ASTM F2398; NCAA).
-inline constexpr double swing_weight_pivot = 0.1524;  // m
-
-// The rules' "drop": length in inches minus weight in ounces.
-double bat_drop(double length_m, double mass_kg);
 
 // Frequencies (Hz) of each design's vibrational modes, the first `modes`, and the nodes (m from
 // the knob) of its first three; empty for a study that keeps no vibrational mode (no eigen-solve).

@@ -33,7 +33,9 @@
 //   [output] variables = names of ImpactResult fields the kind gives (output_names(kind));
 //            default default_outputs(kind). impact: vf, e_eff, contact_time, collision_time and
 //            status by default; vf_rigid and vf_van_zandt (the rigid bat's and Van Zandt's exit
-//            speeds at the same point) are computed only when named; wall: vf, e_eff (the
+//            speeds at the same point) are computed only when named; e_a (the collision
+//            efficiency) and, for studies whose every point is pivoted, bbcor, besr and bpf (the
+//            bat-test rig's measures, rig_measures.hpp) likewise; wall: vf, e_eff (the
 //            restitution), contact_time, collision_time, u_max, peak_force, impulse, status,
 //            the energies of the ball (initial, ball, ball_dissipated, residual) and the
 //            histories force, compression and ball_position; toy: vf

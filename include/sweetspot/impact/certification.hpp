@@ -1,0 +1,75 @@
+#pragma once
+// A bat certified in the virtual rig (README "Certification"): the standard's measure scanned
+// over the barrel, its maximum located between scan points, and the standard's rules checked.
+// Physics and rules only; `sweetspot certify` prints it and the certification study stores it.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sweetspot/bat/bat_design.hpp"
+#include "sweetspot/bat/modes.hpp"
+#include "sweetspot/impact/bat_test_rig.hpp"
+#include "sweetspot/impact/scan_maximum.hpp"
+#include "sweetspot/impact/standards.hpp"
+
+namespace sweetspot {
+
+// Where the rig strikes: from 12 in to 2 in from the barrel end every 1/2 in, then the maximum
+// between scan points to 1e-5 m. 2 in keeps the ball (1.44 in in radius) on the bat; 12 in is past
+// where any bat's measure peaks (wood near 6 in from the end).
+struct BarrelScan {
+  double far_from_end = 12 * metres_per_inch;
+  double near_end = 2 * metres_per_inch;
+  double step = 0.5 * metres_per_inch;
+  double tolerance = 1e-5;  // m
+};
+
+// What may change from the standard's rig, each unset to keep the standard's.
+struct CertifyOptions {
+  std::optional<double> e0;
+  std::optional<double> ball_speed;  // m/s
+  std::optional<double> pivot;       // m from the knob
+  int slices = 0;                    // 0: the bat's own
+  int vibrational_modes = auto_modes;
+  BeamTheory theory = BeamTheory::timoshenko;
+  BarrelScan scan;
+};
+
+struct RuleCheck {
+  std::string rule;  // "bbcor", "barrel_diameter", "drop", "length"
+  double value = 0;
+  double limit = 0;
+  bool pass = false;  // value <= limit
+};
+
+struct Certification {
+  Standard standard;     // with the options applied: its ball, speed and pivot as used
+  double z_max = 0;      // m from the knob, where the measure peaks
+  double measure = 0;    // the standard's measure there
+  RigMeasures at_max;    // every measure there
+  // The designer's numbers, exact for the designed shape (design_mass_properties), not summed
+  // over slices: mass, MOI about the pivot, drop, length, the largest outer diameter.
+  double mass = 0, moi_pivot = 0, drop = 0, length = 0, barrel_diameter = 0;
+  // The MOI about the pivot as the model discretises the bat: the r = m d^2 / I of the measures.
+  double moi_pivot_model = 0;
+  int evaluations = 0;   // rig hits computed
+  std::vector<RuleCheck> checks;
+  bool pass = false;     // every check passes
+};
+
+// The rig of a standard with the options applied. Throws InputError naming the option (e0,
+// ball_speed, pivot) and what was expected: e0 in (0, 1], a speed > 0, a pivot on the bat before
+// the scanned barrel.
+RigSettings certification_rig(const Standard& standard, const CertifyOptions& options, double length);
+
+// The measure's largest value over the barrel of the bat `basis` describes, and where.
+ScanMaximum barrel_maximum(const ModalBasis& basis, const RigSettings& rig, Measure measure, const BarrelScan& scan);
+
+// The rules of the standard for a bat of these numbers and measure.
+std::vector<RuleCheck> rule_checks(const Standard& standard, double measure, double barrel_diameter, double drop,
+                                   double length);
+
+// The whole certification of a design. Throws InputError for a bad option or an impossible bat.
+Certification certify(const BatDesign& design, const Standard& standard, const CertifyOptions& options);
+
+}  // namespace sweetspot

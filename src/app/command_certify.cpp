@@ -1,0 +1,108 @@
+// sweetspot certify: a bat in the virtual test rig against a performance standard.
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "commands.hpp"
+#include "json.hpp"
+#include "sweetspot/bat/bat_design.hpp"
+#include "sweetspot/impact/certification.hpp"
+
+namespace sweetspot::app {
+
+namespace {
+
+struct CertifyCommand {
+  std::string bat_file;
+  std::string standard = "bbcor";
+  std::string theory = "timoshenko";
+  std::string modes = "auto";
+  bool json = false;
+  std::optional<double> e0, ball_speed, pivot;
+  CertifyOptions options;
+};
+
+Json checks_json(const std::vector<RuleCheck>& checks) {
+  std::vector<Json> items;
+  for (const RuleCheck& c : checks)
+    items.push_back(Json::Object()
+                        .add("rule", c.rule)
+                        .add("value", c.value)
+                        .add("limit", c.limit)
+                        .add("pass", Json::boolean(c.pass)));
+  return Json::array(items);
+}
+
+void print_json(const Certification& c) {
+  Json::Object out;
+  out.add("standard", c.standard.name)
+      .add("z_max", c.z_max)
+      .add("e_a", c.at_max.e_a)
+      .add(to_string(c.standard.measure), c.measure)
+      .add("moi_pivot", c.moi_pivot)
+      .add("moi_pivot_model", c.moi_pivot_model)
+      .add("mass", c.mass)
+      .add("length", c.length)
+      .add("drop", c.drop)
+      .add("barrel_diameter", c.barrel_diameter)
+      .add("pivot", c.standard.pivot)
+      .add("ball_speed", c.standard.ball_speed)
+      .add("e0", c.standard.ball.e0)
+      .add("checks", checks_json(c.checks))
+      .add("pass", Json::boolean(c.pass));
+  std::printf("%s\n", Json(out).text().c_str());
+}
+
+void print_text(const std::string& bat_name, const Certification& c) {
+  const Standard& s = c.standard;
+  std::printf("%s against %s: %s\n", bat_name.c_str(), s.title.c_str(), c.pass ? "PASS" : "FAIL");
+  std::printf("rig             pivot %.4f m from the knob, ball %.4g m/s (%.4g mph), e0 %.4g, %.4g kg\n", s.pivot,
+              s.ball_speed, s.ball_speed / metres_per_second_per_mph, s.ball.e0, s.ball.mass);
+  std::printf("maximum %-7s %.6f at z = %.5f m from the knob (%.2f in from the barrel end)\n",
+              to_string(s.measure), c.measure, c.z_max, (c.length - c.z_max) / metres_per_inch);
+  std::printf("e_a             %.6f there (bbcor %.6f, besr %.6f, bpf %.6f)\n", c.at_max.e_a, c.at_max.bbcor,
+              c.at_max.besr, c.at_max.bpf);
+  std::printf("MOI about pivot %.6f kg m^2 (%.0f oz in^2; the model's slices: %.6f)\n", c.moi_pivot,
+              c.moi_pivot / (kilograms_per_ounce * metres_per_inch * metres_per_inch), c.moi_pivot_model);
+  std::printf("length          %.4f m (%.2f in), weight %.4f kg (%.2f oz), drop %.2f\n", c.length,
+              c.length / metres_per_inch, c.mass, c.mass / kilograms_per_ounce, c.drop);
+  std::printf("barrel diameter %.5f m (%.4f in)\n", c.barrel_diameter, c.barrel_diameter / metres_per_inch);
+  std::printf("%-16s %12s %12s  %s\n", "rule", "value", "limit", "result");
+  for (const RuleCheck& r : c.checks)
+    std::printf("%-16s %12.6g %12.6g  %s\n", r.rule.c_str(), r.value, r.limit, r.pass ? "pass" : "FAIL");
+}
+
+void run_certify(CertifyCommand& o) {
+  BatSource source;
+  const BatDesign design = load_bat_design(o.bat_file, source);
+  o.options.e0 = o.e0, o.options.ball_speed = o.ball_speed, o.options.pivot = o.pivot;
+  o.options.vibrational_modes = parse_modes(o.modes);
+  o.options.theory = parse_beam_theory(o.theory);
+  const Certification c = certify(design, find_standard(o.standard), o.options);
+  if (o.json) print_json(c);
+  else print_text(design.name, c);
+}
+
+}  // namespace
+
+void add_certify_command(CLI::App& app) {
+  auto o = std::make_shared<CertifyCommand>();
+  CLI::App* cmd = app.add_subcommand("certify", "A bat in the virtual test rig against BBCOR, BESR or BPF");
+  cmd->add_option("bat", o->bat_file, "bat file (TOML)")->required();
+  cmd->add_option("--standard", o->standard, "bbcor (NCAA/NFHS), besr (NCAA 1999-2010) or bpf (USSSA)")
+      ->capture_default_str();
+  cmd->add_option("--e0", o->e0, "the ball's COR on a rigid wall [default: the standard's, 0.5]");
+  cmd->add_option("--ball-speed", o->ball_speed, "the rig's ball speed, m/s [default: the standard's]");
+  cmd->add_option("--pivot-point", o->pivot, "the rig's pivot, m from the knob [default: 0.1524, 6 in]");
+  cmd->add_option("--theory", o->theory, "beam theory")
+      ->check(CLI::IsMember({"timoshenko", "euler-bernoulli"}))
+      ->capture_default_str();
+  cmd->add_option("--slices", o->options.slices, "slice count N (default: the bat's own)")
+      ->check(CLI::Range(min_slices, max_slices));
+  cmd->add_option("--modes", o->modes, "vibrational modes kept: a number, 'all' or 'auto'")->capture_default_str();
+  cmd->add_flag("--json", o->json, "print one JSON object");
+  cmd->callback([o] { run_certify(*o); });
+}
+
+}  // namespace sweetspot::app

@@ -1,0 +1,98 @@
+#include "sweetspot/impact/certification.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "sweetspot/input_error.hpp"
+
+namespace sweetspot {
+
+namespace {
+
+[[noreturn]] void reject(const std::string& what, double value, const std::string& expected) {
+  std::ostringstream text;
+  text << "certify: " << what << " " << value << ": expected " << expected;
+  throw InputError(text.str());
+}
+
+// The scanned stretch of the barrel, m from the knob.
+double scan_start(const BarrelScan& scan, double length) { return length - scan.far_from_end; }
+double scan_end(const BarrelScan& scan, double length) { return length - scan.near_end; }
+
+double largest_outer_diameter(const BatDesign& design) {
+  const Profile profile = design_profile(design);
+  return *std::ranges::max_element(profile.outer);
+}
+
+ModalBasis certification_modes(const BatDesign& design, const CertifyOptions& options) {
+  Bat bat = build_bat(design);
+  if (options.slices > 0) bat = resample(bat, options.slices);
+  // One basis serves every point of the scan: all modes, unless none is kept.
+  return compute_modes(bat, options.theory,
+                       options.vibrational_modes == 0 ? ModeRequest::rigid_only() : ModeRequest::all());
+}
+
+}  // namespace
+
+RigSettings certification_rig(const Standard& standard, const CertifyOptions& options, double length) {
+  RigSettings rig;
+  rig.ball = standard.ball;
+  rig.ball.e0 = options.e0.value_or(standard.ball.e0);
+  rig.ball_speed = options.ball_speed.value_or(standard.ball_speed);
+  rig.pivot = options.pivot.value_or(standard.pivot);
+  rig.vibrational_modes = options.vibrational_modes;
+  if (!(rig.ball.e0 > 0 && rig.ball.e0 <= 1)) reject("e0", rig.ball.e0, "a number in (0, 1]");
+  if (!(rig.ball_speed > 0) || !std::isfinite(rig.ball_speed))
+    reject("ball speed", rig.ball_speed, "a finite speed > 0 (m/s) toward the bat at rest");
+  const double start = scan_start(options.scan, length);
+  if (!(rig.pivot >= 0 && rig.pivot < start)) {
+    std::ostringstream range;
+    range << "a point on the bat before the scanned barrel (0 to " << start << " m from the knob of this "
+          << length << "-m bat)";
+    reject("pivot point", rig.pivot, range.str());
+  }
+  return rig;
+}
+
+ScanMaximum barrel_maximum(const ModalBasis& basis, const RigSettings& rig, Measure measure, const BarrelScan& scan) {
+  const auto value = [&](double z) { return measure_value(rig_hit(basis, rig, z), measure); };
+  return scan_maximum(value, scan_start(scan, basis.length()), scan_end(scan, basis.length()), scan.step,
+                      scan.tolerance);
+}
+
+std::vector<RuleCheck> rule_checks(const Standard& standard, double measure, double barrel_diameter, double drop,
+                                   double length) {
+  std::vector<RuleCheck> checks{{to_string(standard.measure), measure, standard.limit, false},
+                                {"barrel_diameter", barrel_diameter, standard.max_barrel_diameter, false}};
+  if (standard.max_drop) checks.push_back({"drop", drop, *standard.max_drop, false});
+  if (standard.max_length) checks.push_back({"length", length, *standard.max_length, false});
+  for (RuleCheck& c : checks) c.pass = c.value <= c.limit;
+  return checks;
+}
+
+Certification certify(const BatDesign& design, const Standard& standard, const CertifyOptions& options) {
+  const RigSettings rig = certification_rig(standard, options, design.length);
+  const ModalBasis basis = certification_modes(design, options);
+  const ScanMaximum peak = barrel_maximum(basis, rig, standard.measure, options.scan);
+
+  Certification c;
+  c.standard = standard;
+  c.standard.ball = rig.ball, c.standard.ball_speed = rig.ball_speed, c.standard.pivot = rig.pivot;
+  c.z_max = peak.x;
+  c.measure = peak.value;
+  c.at_max = rig_hit(basis, rig, peak.x);
+  c.evaluations = peak.evaluations + 1;
+  const MassProperties exact = design_mass_properties(design);
+  c.mass = exact.mass;
+  c.moi_pivot = exact.moment_of_inertia_about(rig.pivot);
+  c.moi_pivot_model = model_moi_about(basis, rig.pivot);
+  c.length = design.length;
+  c.drop = bat_drop(design.length, exact.mass);
+  c.barrel_diameter = largest_outer_diameter(design);
+  c.checks = rule_checks(standard, c.measure, c.barrel_diameter, c.drop, c.length);
+  c.pass = std::ranges::all_of(c.checks, &RuleCheck::pass);
+  return c;
+}
+
+}  // namespace sweetspot
