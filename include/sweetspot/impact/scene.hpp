@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "sweetspot/bat/inch_pound.hpp"
 #include "sweetspot/contact/ball.hpp"
 #include "sweetspot/contact/collision.hpp"
 #include "sweetspot/bat/modes.hpp"
@@ -52,7 +53,7 @@ struct HistoryRequest {
 
 // The speed at which the rules measure the collision efficiency e_A (batted_ball.hpp): the BBCOR
 // and BESR rig's 136 mph (70 mph pitch plus 66 mph bat; NCAA, ASTM F2219).
-inline constexpr double lab_e_a_speed = 136 * 0.44704;  // m/s
+inline constexpr double lab_e_a_speed = 136 * metres_per_second_per_mph;
 
 struct ImpactScene {
   double z = 0.7;             // impact location, m from the knob (anywhere on the bat)
