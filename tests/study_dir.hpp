@@ -15,6 +15,8 @@
 
 #include "program.hpp"
 #include "temp_dir.hpp"
+#include "sweetspot/input_error.hpp"
+#include "sweetspot/study/study.hpp"
 
 inline std::string file_text(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -48,6 +50,16 @@ struct StudyDir {
     return files;
   }
 };
+
+// The one line load_study refuses `study` with, or "(not refused)".
+inline std::string study_refusal(const std::filesystem::path& study) {
+  try {
+    sweetspot::load_study(study);
+  } catch (const sweetspot::InputError& e) {
+    return e.what();
+  }
+  return "(not refused)";
+}
 
 // The run was refused the program's way: exit status 2 and one line "sweetspot: error: ..."
 // holding `expected`. Under mpirun, mpirun's own note on the exit status may follow; no

@@ -34,15 +34,7 @@ struct DesignDir : StudyDir {
   }
 };
 
-std::string refusal(const std::string& text) {
-  const DesignDir d(text);
-  try {
-    load_study(d.study);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(not refused)";
-}
+std::string refusal(const std::string& text) { return study_refusal(DesignDir(text).study); }
 
 }  // namespace
 

@@ -27,15 +27,7 @@ double knob_moi(const std::string& file) {
   return design_mass_properties(load_bat_design(source_path(file), source)).moment_of_inertia_about(0);
 }
 
-std::string refusal(const std::string& scene) {
-  const StudyDir d(3, scene);
-  try {
-    load_study(d.study);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(not refused)";
-}
+std::string refusal(const std::string& scene) { return study_refusal(StudyDir(3, scene).study); }
 
 }  // namespace
 

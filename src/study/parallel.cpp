@@ -194,7 +194,7 @@ std::vector<double> compute_chunk(const Study& study, const OutputLayout& layout
   cache.make_room();
   for (std::size_t i = 0; i < points.size(); ++i) {  // modes first, serially: the cache is not shared
     grid[i] = grid_point(study, points[i]);
-    if (has_bat(grid[i].kind)) bases[i] = cache.get(grid[i], reasons[i]);
+    if (needs_modal_basis(grid[i].kind)) bases[i] = cache.get(grid[i], reasons[i]);
   }
   std::vector<double> rows(points.size() * layout.width);
   std::vector<char> failed(points.size(), 0);  // char, not bool: each thread writes its own
@@ -205,7 +205,9 @@ std::vector<double> compute_chunk(const Study& study, const OutputLayout& layout
     try {
       const ImpactResult r = guarded_point(grid[i], bases[i], reasons[i]);
       // The toy model's ball is dimensionless: no radius to pass.
-      if (grid[i].kind != StudyKind::toy && r.u_max > grid[i].scene.ball.radius) ++past_radius;
+      if (grid[i].kind != StudyKind::toy && grid[i].kind != StudyKind::certification &&
+          r.u_max > grid[i].scene.ball.radius)
+        ++past_radius;
       layout.extract(r, rows.data() + i * layout.width);
       failed[i] = r.status == CollisionStatus::failed;
       if (failed[i]) reasons[i] = r.message;

@@ -62,6 +62,9 @@ Study load_study(const fs::path& file) {
   study.base = base.scene;
   study.omega_tau = base.omega_tau;
   study.swing_exponent = base.swing_exponent;
+  study.standard = base.standard;
+  study.rig_e0 = base.rig_e0;
+  study.rig_ball_speed = base.rig_ball_speed;
   study.theory = base.theory;
   study.slices = base.slices;
   for (const Setting& axis : s.axes) study.axes.push_back(make_axis(axis));

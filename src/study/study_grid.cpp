@@ -41,6 +41,9 @@ GridPoint grid_point(const Study& study, std::size_t index) {
   p.scene = study.base;
   p.omega_tau = study.omega_tau;
   p.swing_exponent = study.swing_exponent;
+  p.standard = study.standard;
+  p.rig_e0 = study.rig_e0;
+  p.rig_ball_speed = study.rig_ball_speed;
   p.slices = study.slices;
   p.theory = study.theory;
   p.coords.resize(study.axes.size());
@@ -53,6 +56,7 @@ GridPoint grid_point(const Study& study, std::size_t index) {
     spec->set(p, axis.values[p.coords[k]]);
   }
   p.design = design_index(study, p.coords);
+  if (study.kind == StudyKind::certification) p.design_spec = &study.design_specs[p.design];
   if (study.equal_effort)
     p.scene.swing = equal_effort_swing(p.scene.swing, study.reference_moi,
                                        study.design_mass[p.design].moment_of_inertia_about(0), p.swing_exponent);

@@ -24,11 +24,18 @@ bool mode_count(double x) { return x >= 0 && x <= 1e6; }    // "all" and "auto" 
 
 constexpr KeySpec keys[] = {
     {"bat", Type::bat, "a bat file path (relative to the study file)", any,
-     [](GridPoint& p, double x) { p.bat = static_cast<std::size_t>(x); }, impact, impact},
+     [](GridPoint& p, double x) { p.bat = static_cast<std::size_t>(x); }, bat_kinds, bat_kinds},
     {"theory", Type::theory, "\"timoshenko\" or \"euler-bernoulli\"", any,
-     [](GridPoint& p, double x) { p.theory = static_cast<BeamTheory>(x); }},
+     [](GridPoint& p, double x) { p.theory = static_cast<BeamTheory>(x); }, bat_kinds},
     {"slices", Type::integer, "an integer slice count from 4 to 4096", slice_count,
-     [](GridPoint& p, double x) { p.slices = static_cast<int>(x); }},
+     [](GridPoint& p, double x) { p.slices = static_cast<int>(x); }, bat_kinds},
+    // The rig of a certification study: the standard, and its ball where the study overrides it.
+    {"standard", Type::standard, "\"bbcor\", \"besr\" or \"bpf\"", any,
+     [](GridPoint& p, double x) { p.standard = static_cast<std::size_t>(x); }, certification, 0, false},
+    {"rig_e0", Type::number, "a number in (0, 1] (the rig ball's COR; default the standard's)", unit_interval,
+     [](GridPoint& p, double x) { p.rig_e0 = x; }, certification},
+    {"rig_ball_speed", Type::number, "a finite number > 0 (m/s; default the standard's)", positive,
+     [](GridPoint& p, double x) { p.rig_ball_speed = x; }, certification},
     {"z", Type::number, "a finite number >= 0 (m from the knob)", on_bat,
      [](GridPoint& p, double x) { p.scene.z = x; }, impact, impact},
     // The wall takes only speeds > 0: check_wall_speeds.
@@ -66,7 +73,7 @@ constexpr KeySpec keys[] = {
     {"e_a_speed", Type::number, "a finite number > 0 (m/s: the speed e_A is taken at for bbs_linear)", positive,
      [](GridPoint& p, double x) { p.scene.e_a_speed = x; }},
     {"modes", Type::modes, "a number of vibrational modes >= 0, \"all\" or \"auto\"", mode_count,
-     [](GridPoint& p, double x) { p.scene.vibrational_modes = static_cast<int>(x); }},
+     [](GridPoint& p, double x) { p.scene.vibrational_modes = static_cast<int>(x); }, bat_kinds},
     {"mode_tolerance", Type::number, "a finite number > 0 (relative vf error allowed the dropped modes)", positive,
      [](GridPoint& p, double x) { p.scene.mode_tolerance = x; }},
     {"accuracy", Type::number, "a finite number > 0 (relative vf error the integration may add)", positive,
@@ -100,10 +107,12 @@ constexpr OutputSpec outputs[] = {
     {"bbs", impact, 0},
     {"bbs_linear", impact, 0},
     {"e_eff", ball_kinds, ball_kinds},
-    {"e_a", impact, 0},
-    {"bbcor", impact, 0},  // these three only for pivoted bats (read_outputs)
-    {"besr", impact, 0},
-    {"bpf", impact, 0},
+    {"e_a", bat_kinds, 0},
+    {"bbcor", bat_kinds, certification},  // these three only for pivoted bats (read_outputs)
+    {"besr", bat_kinds, 0},
+    {"bpf", bat_kinds, 0},
+    {"z_max", certification, certification},
+    {"certified", certification, certification},
     {"contact_time", ball_kinds, ball_kinds},
     {"collision_time", ball_kinds, ball_kinds},
     {"u_max", ball_kinds, 0},
@@ -147,9 +156,9 @@ std::vector<std::string> output_list(StudyKind kind, KindSet OutputSpec::*member
 // A bat's own parameters set the point's design (design_index), not its scene.
 constexpr KeySpec bat_parameter{"bat.", Type::bat_parameter,
                                 "a finite number, the bat parameter in SI units (m, kg/m^3, Pa)", finite,
-                                [](GridPoint&, double) {}};
+                                [](GridPoint&, double) {}, bat_kinds};
 constexpr KeySpec bat_material{"bat.material", Type::material, "the name of a wood preset", any,
-                               [](GridPoint&, double) {}};
+                               [](GridPoint&, double) {}, bat_kinds};
 
 }  // namespace
 
@@ -189,6 +198,8 @@ const char* to_string(StudyKind kind) {
       return "wall";
     case StudyKind::toy:
       return "toy";
+    case StudyKind::certification:
+      return "certification";
   }
   return "?";
 }
@@ -214,14 +225,16 @@ std::vector<std::string> scene_keys(StudyKind kind) {
 const std::vector<std::string>& output_names(StudyKind kind) {
   static const std::vector<std::string> names[] = {output_list(StudyKind::impact, &OutputSpec::kinds),
                                                    output_list(StudyKind::wall, &OutputSpec::kinds),
-                                                   output_list(StudyKind::toy, &OutputSpec::kinds)};
+                                                   output_list(StudyKind::toy, &OutputSpec::kinds),
+                                                   output_list(StudyKind::certification, &OutputSpec::kinds)};
   return names[static_cast<std::size_t>(kind)];
 }
 
 const std::vector<std::string>& default_outputs(StudyKind kind) {
   static const std::vector<std::string> names[] = {output_list(StudyKind::impact, &OutputSpec::by_default),
                                                    output_list(StudyKind::wall, &OutputSpec::by_default),
-                                                   output_list(StudyKind::toy, &OutputSpec::by_default)};
+                                                   output_list(StudyKind::toy, &OutputSpec::by_default),
+                                                   output_list(StudyKind::certification, &OutputSpec::by_default)};
   return names[static_cast<std::size_t>(kind)];
 }
 }  // namespace sweetspot

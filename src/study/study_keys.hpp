@@ -14,9 +14,11 @@ namespace sweetspot::study_detail {
 // A set of study kinds, one bit each: which kinds a key or an output belongs to.
 using KindSet = unsigned;
 constexpr KindSet bit(StudyKind kind) { return 1u << static_cast<unsigned>(kind); }
-constexpr KindSet impact = bit(StudyKind::impact), wall = bit(StudyKind::wall), toy = bit(StudyKind::toy);
+constexpr KindSet impact = bit(StudyKind::impact), wall = bit(StudyKind::wall), toy = bit(StudyKind::toy),
+                  certification = bit(StudyKind::certification);
 constexpr KindSet ball_kinds = impact | wall;  // the kinds with the nonlinear ball and its integrator
-constexpr KindSet every_kind = impact | wall | toy;
+constexpr KindSet bat_kinds = impact | certification;  // the kinds that strike bats
+constexpr KindSet every_kind = impact | wall | toy | certification;
 
 // The kind as the study file writes it, quoted.
 std::string kind_text(StudyKind kind);
@@ -25,7 +27,8 @@ std::string kind_text(StudyKind kind);
 // `material`: a wood preset's name (bat.material); `bat_parameter`: any other bat parameter.
 // `swing`: "given" or "equal_effort"; `reference`: the equal-effort swing's reference bat file.
 enum class Type {
-  number, integer, boolean, bat, theory, modes, integrator, preset, numbers, material, bat_parameter, swing, reference
+  number, integer, boolean, bat, theory, modes, integrator, preset, numbers, material, bat_parameter, swing, reference,
+  standard
 };
 
 // One key of [scene]: how its value is read, the rule validate() in scene.cpp applies to it, how

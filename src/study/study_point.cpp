@@ -1,11 +1,36 @@
 #include "sweetspot/study/study_point.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
+#include "sweetspot/impact/certification.hpp"
+#include "sweetspot/impact/standards.hpp"
 #include "sweetspot/impact/toy_model.hpp"
 #include "sweetspot/impact/wall.hpp"
 
 namespace sweetspot {
+
+namespace {
+
+// The point's bat certified: its result the rig's measures at their maximum over the barrel (at
+// z), `certified` whether every rule of the standard holds.
+ImpactResult certification_point(const GridPoint& point) {
+  CertifyOptions options;
+  if (!std::isnan(point.rig_e0)) options.e0 = point.rig_e0;
+  if (!std::isnan(point.rig_ball_speed)) options.ball_speed = point.rig_ball_speed;
+  options.slices = point.slices;
+  options.vibrational_modes = point.scene.vibrational_modes;
+  options.theory = point.theory;
+  const Certification c = certify(*point.design_spec, standards()[point.standard], options);
+  ImpactResult r;
+  r.z = c.z_max;
+  r.rig = c.at_max;
+  r.certified = c.pass ? 1 : 0;
+  if (!std::isfinite(c.measure)) r.status = CollisionStatus::non_finite, r.message = "the rig's measure is not finite";
+  return r;
+}
+
+}  // namespace
 
 ImpactResult simulate_point(const GridPoint& point, const ModalBasis* basis) {
   switch (point.kind) {
@@ -14,6 +39,8 @@ ImpactResult simulate_point(const GridPoint& point, const ModalBasis* basis) {
                       point.scene.histories ? &point.scene.history : nullptr);
     case StudyKind::toy:
       return toy_model(point.omega_tau);
+    case StudyKind::certification:
+      return certification_point(point);
     case StudyKind::impact:
       break;
   }

@@ -1,11 +1,13 @@
 #include "sweetspot/study/study_provenance.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "sweetspot/impact/standards.hpp"
 #include "sweetspot/version.hpp"
 
 namespace sweetspot {
@@ -57,6 +59,10 @@ void add_scene_key(const Study& study, const std::string& key, SceneAttributes& 
     return study.equal_effort ? out.text(key, study.reference_source.toml_file.string()) : void();
   if (key == "swing_exponent") return study.equal_effort ? out.number(key, study.swing_exponent) : void();
   if (key == "e_a_speed") return out.number(key, s.e_a_speed);
+  if (key == "standard") return out.text(key, standards()[study.standard].name);
+  // The rig's ball: the standard's, unless the study gives its own.
+  if (key == "rig_e0") return std::isnan(study.rig_e0) ? void() : out.number(key, study.rig_e0);
+  if (key == "rig_ball_speed") return std::isnan(study.rig_ball_speed) ? void() : out.number(key, study.rig_ball_speed);
   if (key == "modes") return add_modes(out, s.vibrational_modes);
   if (key == "mode_tolerance") return out.number(key, s.mode_tolerance);
   if (key == "accuracy") return out.number(key, s.accuracy);  // 0: the step as given (dt)

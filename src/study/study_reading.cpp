@@ -10,6 +10,7 @@
 
 #include "study_settings.hpp"
 #include "sweetspot/bat/material_presets.hpp"
+#include "sweetspot/impact/standards.hpp"
 #include "sweetspot/input_error.hpp"
 #include "toml_values.hpp"
 
@@ -32,6 +33,14 @@ const Setting* find(const std::vector<Setting>& settings, std::string_view name)
 }
 
 namespace {
+
+// A standard's place in standards().
+double standard_index(const Where& at, const std::string& name) {
+  const std::vector<Standard>& all = standards();
+  const auto it = std::ranges::find(all, name, &Standard::name);
+  if (it == all.end()) reject(at, quote(name), "expected \"bbcor\", \"besr\" or \"bpf\"");
+  return static_cast<double>(it - all.begin());
+}
 
 // A wood preset's place in material_preset_list().
 double material_preset_index(const Where& at, const std::string& name) {
@@ -104,6 +113,8 @@ Value read_value(const Where& at, const KeySpec& spec, const toml::node& node) {
             spec.type == Type::material || spec.type == Type::reference) &&
            node.is_string())
     v.label = node.as_string()->get();
+  else if (spec.type == Type::standard && node.is_string())
+    return {standard_index(at, node.as_string()->get()), node.as_string()->get()};
   else if (spec.type == Type::swing && (node.value<std::string_view>() == "given" ||
                                         node.value<std::string_view>() == "equal_effort"))
     return {node.value<std::string_view>() == "equal_effort" ? 1.0 : 0.0, std::string(*node.value<std::string_view>())};
@@ -294,7 +305,7 @@ std::vector<Setting> read_settings(const Where& top, const toml::table& doc, std
 
 // ---- The kind ----------------------------------------------------------------------------------
 
-constexpr StudyKind study_kinds[] = {StudyKind::impact, StudyKind::wall, StudyKind::toy};
+constexpr StudyKind study_kinds[] = {StudyKind::impact, StudyKind::wall, StudyKind::toy, StudyKind::certification};
 
 StudyKind read_kind(const Where& top, const toml::table& doc) {
   const toml::node* node = doc.get("kind");
@@ -361,7 +372,7 @@ std::vector<std::string> read_outputs(const Where& top, const toml::table& doc, 
       reject(at.item(i, item), describe(item),
              "needs a fixed number of modes >= 1 (modes a number in [scene], not \"all\", \"auto\" (the "
              "default) or an axis)");
-    if (is_rig_measure(name) && !every_point_pivoted(s))
+    if (is_rig_measure(name) && kind == StudyKind::impact && !every_point_pivoted(s))
       reject(at.item(i, item), describe(item),
              "needs a pivoted bat at every point (pivot = true, not an axis with false): its recoil factor is the "
              "rig's m d^2 / I about the pivot");

@@ -35,6 +35,10 @@ const std::map<std::string, Description>& descriptions() {
       {"bbcor", {"1", "ball-bat coefficient of restitution e_a (1 + r) + r, r = m d^2 / I_pivot"}},
       {"besr", {"1", "ball exit speed ratio e_a + 1/2"}},
       {"bpf", {"1", "bat performance factor bbcor / e0"}},
+      {"z_max", {"m", "impact location from the knob where the standard's measure peaks"}},
+      {"certified", {"", "whether the bat passes every rule of the standard"}},  // a flag
+      {"rig_e0", {"1", "COR of the rig's ball"}},
+      {"rig_ball_speed", {"m/s", "speed of the rig's ball"}},
       {"contact_time", {"s", "time the ball is in contact with the bat, summed over contacts"}},
       {"collision_time", {"s", "time from first touch until 99 % of the impulse is delivered"}},
       {"u_max", {"m", "largest compression of the ball"}},
@@ -129,6 +133,8 @@ double scalar_value(const ImpactResult& r, const std::string& name) {
   if (name == "vf_van_zandt") return r.vf_van_zandt;
   if (name == "e_eff") return r.e_eff;
   if (name == "e_a") return r.rig.e_a;
+  if (name == "z_max") return r.z;
+  if (name == "certified") return r.certified;
   if (name == "bbcor") return r.rig.bbcor;
   if (name == "besr") return r.rig.besr;
   if (name == "bpf") return r.rig.bpf;
@@ -178,13 +184,17 @@ Variable output_variable(const std::string& name, std::vector<std::string> dims,
   Description d = describe(name);
   if (units && *d.units) d.units = units;  // a flag (status) has no units in any kind
   Variable v{name, d.units, d.long_name, std::move(dims), {}, {}, {}};
-  if (name == "status" || name == "contacts" || name == "modes_kept") {
+  if (name == "status" || name == "contacts" || name == "modes_kept" || name == "certified") {
     std::vector<std::int32_t> ints(values.size());
     std::transform(values.begin(), values.end(), ints.begin(),
                    [](double x) { return std::isfinite(x) ? static_cast<std::int32_t>(x) : -1; });
     v.values = std::move(ints);
   } else {
     v.values = std::move(values);
+  }
+  if (name == "certified") {
+    v.int_attributes.push_back({"flag_values", {0, 1}});
+    v.text_attributes.push_back({"flag_meanings", "fails passes"});
   }
   if (name == "status") {  // every CollisionStatus, by its value and name
     std::vector<std::int32_t> flags;

@@ -49,6 +49,7 @@ struct ImpactResult {
   // besr and bpf only for a pivoted one, whose recoil factor is the rig's r = m d^2 / I_pivot
   // (NaN for a free bat, which no rig holds).
   RigMeasures rig;
+  int certified = -1;  // a certification study's point: 1 when the bat passes every rule, else 0
   ImpactEnergy energy;
   std::vector<double> mode_energy;  // J per kept vibrational mode (of the held bat when pivoted)
   std::vector<int> modes_kept;      // vibrational mode numbers kept (1 = the first)

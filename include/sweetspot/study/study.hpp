@@ -62,6 +62,7 @@
 //   results that fit in the machine's memory (study_memory.hpp).
 #include <cstddef>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -74,12 +75,17 @@
 
 namespace sweetspot {
 
-// What the ball strikes: a bat, a rigid immovable wall, or the toy model's two masses.
-enum class StudyKind { impact, wall, toy };
+// What the ball strikes: a bat, a rigid immovable wall, the toy model's two masses, or each bat
+// in the virtual test rig of a certification standard (certification.hpp).
+enum class StudyKind { impact, wall, toy, certification };
 const char* to_string(StudyKind kind);
 
-// Only impact studies strike a bat: the others have no bats, no modes and no bat dimension.
-constexpr bool has_bat(StudyKind kind) { return kind == StudyKind::impact; }
+// Impact and certification studies strike bats; the others have no bats, no modes and no bat
+// dimension.
+constexpr bool has_bat(StudyKind kind) { return kind == StudyKind::impact || kind == StudyKind::certification; }
+// Only an impact point strikes the bat once with the study's modes: a certification point scans
+// its bat in the rig and solves its own.
+constexpr bool needs_modal_basis(StudyKind kind) { return kind == StudyKind::impact; }
 
 
 // One swept scene key. `values` holds a number for every kind of axis: the value itself, 0/1 for
@@ -113,6 +119,7 @@ struct Study {
   // with these. Without bat-parameter axes, one per bat file.
   std::vector<Bat> designs;
   std::vector<MassProperties> design_mass;  // the exact mass properties of each design
+  std::vector<BatDesign> design_specs;      // each design as parameters: what certification takes
   // swing = "equal_effort": every bat's swing scales from the base scene's, the player's swing
   // with the reference bat, by its MOI about the knob (equal_effort.hpp).
   bool equal_effort = false;
@@ -124,6 +131,9 @@ struct Study {
   ImpactScene base;                  // impact; wall: its ball, ball_speed and integrator
   double omega_tau = 0;              // toy
   double swing_exponent = default_swing_exponent;  // equal effort, unless an axis
+  std::size_t standard = 0;                        // certification: its standard, and the rig's
+  double rig_e0 = std::numeric_limits<double>::quiet_NaN();          // e0 and ball speed where
+  double rig_ball_speed = std::numeric_limits<double>::quiet_NaN();  // the study overrides them
   std::vector<Axis> axes;            // in the order written
   std::vector<std::string> outputs;  // in the order written
   double sweet_spot_fraction = 0.01;  // [output]: the sweet spot's zone is within this of the peak vf
@@ -146,6 +156,12 @@ struct GridPoint {
   std::size_t bat = 0;     // index into Study::bats
   std::size_t design = 0;  // index into Study::designs
   double swing_exponent = default_swing_exponent;  // equal-effort swings: n in v ~ I^-n
+  // certification: the standard (index into standards()) and the rig's e0 and ball speed where
+  // the study overrides the standard's (NaN: the standard's); the design certified.
+  std::size_t standard = 0;
+  double rig_e0 = std::numeric_limits<double>::quiet_NaN();
+  double rig_ball_speed = std::numeric_limits<double>::quiet_NaN();
+  const BatDesign* design_spec = nullptr;
   int slices = 0;       // 0: the profile's own
   BeamTheory theory = BeamTheory::timoshenko;
   std::vector<std::size_t> coords;  // one per axis
