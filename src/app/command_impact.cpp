@@ -45,6 +45,11 @@ void print_json(const ImpactResult& r) {
   out.add("z", r.z)
       .add("vf", r.vf)
       .add("e_eff", r.e_eff)
+      .add("bat_speed", r.bat_speed)
+      .add("e_a", r.rig.e_a)
+      .add("bbcor", r.rig.bbcor)  // these three null for a free bat: no rig holds it
+      .add("besr", r.rig.besr)
+      .add("bpf", r.rig.bpf)
       .add("contact_time", r.contact_time)
       .add("collision_time", r.collision_time)
       .add("u_max", r.u_max)
@@ -63,6 +68,9 @@ void print_text(const ImpactResult& r) {
   std::printf("impact at z     %.4f m from the knob\n", r.z);
   std::printf("exit speed vf   %.6g m/s\n", r.vf);
   std::printf("e_eff           %.6g\n", r.e_eff);
+  std::printf("bat speed       %.6g m/s at the impact point; e_a %.6g\n", r.bat_speed, r.rig.e_a);
+  if (std::isfinite(r.rig.bbcor))
+    std::printf("held at the pivot: bbcor %.6g, besr %.6g, bpf %.6g\n", r.rig.bbcor, r.rig.besr, r.rig.bpf);
   std::printf("contact time    %.4g ms (%d contact%s)\n", 1e3 * r.contact_time, r.contacts, r.contacts == 1 ? "" : "s");
   std::printf("collision time  %.4g ms (99 %% of the impulse)\n", 1e3 * r.collision_time);
   std::printf("max compression %.4g mm, peak force %.5g N, impulse %.5g N s\n", 1e3 * r.u_max, r.peak_force, r.impulse);
