@@ -142,7 +142,7 @@ std::vector<std::string> build_designs(Study& study, const Settings& s, const Se
   for (const Setting& axis : s.axes)
     if (is_bat_parameter(axis.name)) axes.push_back(&axis), count *= static_cast<double>(axis.values.size());
   if (count * static_cast<double>(study.bat_designs.size()) > max_designs)
-    reject(axes.back()->where, "[...]",
+    reject(axes.empty() ? bat.where : axes.back()->where, "[...]",
            "the bat axes give " + format_number(count * static_cast<double>(study.bat_designs.size())) +
                " bats; at most 1e5");
   std::vector<std::string> labels;
