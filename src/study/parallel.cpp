@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
+#include <ranges>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -117,6 +119,9 @@ void log_rank_cores(int rank) {
 // the modes below its pulse's reach (auto_mode_request, from the rigid basis). A basis depends on
 // the point alone, never on which points came first: any ranks give the same results.
 class ModalCache {
+  using Key = std::tuple<std::size_t, int, BeamTheory, int, double>;  // (design, slices, theory, request)
+  using Model = std::tuple<std::size_t, int, BeamTheory>;
+
  public:
   explicit ModalCache(const Study& study) : study_(study) {
     for (const Axis& axis : study.axes)
@@ -126,13 +131,38 @@ class ModalCache {
   // The point's basis, or nullptr with `error` saying why it could not be had (the bat file
   // changed since the study was checked, say); a failure is kept too, not retried per point.
   const ModalBasis* get(const GridPoint& p, std::string& error) {
-    const int modes = p.scene.vibrational_modes;
-    if (modes != auto_modes) return basis(p, modes == 0           ? ModeRequest::rigid_only()
-                                             : modes == all_modes ? ModeRequest::all()
-                                                                  : ModeRequest::lowest(std::max(modes, largest_count_)),
-                                          error);
-    const ModalBasis* rigid = basis(p, ModeRequest::rigid_only(), error);
-    return rigid ? basis(p, auto_mode_request(p.scene, *rigid), error) : nullptr;
+    const std::optional<ModeRequest> request = request_for(p, error);
+    return request ? basis(p, *request, error) : nullptr;
+  }
+  // Solves, over the OpenMP threads, the bases that `points` need and the cache lacks: a chunk of
+  // many bats (a design study) would otherwise solve them on one thread while the others wait.
+  // Each basis is the same whichever thread solves it, so results stay bitwise the same.
+  void prefetch(const std::vector<GridPoint>& points) {
+    std::map<Key, std::pair<const GridPoint*, ModeRequest>> missing;
+    for (const GridPoint& p : points) {
+      std::string ignored;  // get() reports it, point by point
+      const std::optional<ModeRequest> request = needs_modal_basis(p.kind) ? request_for(p, ignored) : std::nullopt;
+      if (request && !known(p, *request)) missing.try_emplace(key_of(p, *request), &p, *request);
+    }
+    if (missing.size() < 2) return;  // one solve gains nothing from the threads
+    const std::vector<std::pair<const GridPoint*, ModeRequest>> jobs(std::views::values(missing).begin(),
+                                                                    std::views::values(missing).end());
+    std::vector<std::optional<ModalBasis>> solved(jobs.size());
+    std::vector<std::string> errors(jobs.size());
+    const auto start = Clock::now();
+#pragma omp parallel for schedule(dynamic)
+    for (long j = 0; j < static_cast<long>(jobs.size()); ++j) {
+      try {
+        solved[j] = solve(*jobs[j].first, jobs[j].second);
+      } catch (const std::exception& e) {
+        errors[j] = e.what();
+      }
+    }
+    solve_seconds_ += seconds_since(start);
+    for (std::size_t j = 0; j < jobs.size(); ++j) {
+      if (solved[j]) store(*jobs[j].first, jobs[j].second, std::move(*solved[j]));
+      else fail(*jobs[j].first, jobs[j].second, errors[j]);
+    }
   }
   int solves() const { return solves_; }
   double solve_seconds() const { return solve_seconds_; }
@@ -145,36 +175,68 @@ class ModalCache {
   }
 
  private:
-  const ModalBasis* basis(const GridPoint& p, ModeRequest request, std::string& error) {
-    // A frequency at or above one that already took every mode takes every mode too: the same
-    // dense solve, so reusing its basis changes nothing.
-    const Model model = std::make_tuple(p.design, p.slices, p.theory);
-    if (const auto it = complete_from_.find(model); it != complete_from_.end() && request.below_omega >= it->second.first)
+  // What the point needs solved; for "auto", read from its bat's rigid basis (no eigen-solve).
+  std::optional<ModeRequest> request_for(const GridPoint& p, std::string& error) {
+    const int modes = p.scene.vibrational_modes;
+    if (modes == 0) return ModeRequest::rigid_only();
+    if (modes == all_modes) return ModeRequest::all();
+    if (modes != auto_modes) return ModeRequest::lowest(std::max(modes, largest_count_));
+    const ModalBasis* rigid = basis(p, ModeRequest::rigid_only(), error);
+    return rigid ? std::optional(auto_mode_request(p.scene, *rigid)) : std::nullopt;
+  }
+
+  static Model model_of(const GridPoint& p) { return std::make_tuple(p.design, p.slices, p.theory); }
+  static Key key_of(const GridPoint& p, ModeRequest request) {
+    return std::make_tuple(p.design, p.slices, p.theory, request.vibrational, request.below_omega);
+  }
+
+  // A basis the cache holds for the request, or one that took every mode at a lower frequency
+  // (the same dense solve, so reusing it changes nothing).
+  const ModalBasis* cached(const GridPoint& p, ModeRequest request) const {
+    if (const auto it = complete_from_.find(model_of(p));
+        it != complete_from_.end() && request.below_omega >= it->second.first)
       return it->second.second;
-    const Key key = std::make_tuple(p.design, p.slices, p.theory, request.vibrational, request.below_omega);
-    if (const auto it = cache_.find(key); it != cache_.end()) return &it->second;
-    if (const auto it = errors_.find(key); it != errors_.end()) return error = it->second, nullptr;
+    const auto it = cache_.find(key_of(p, request));
+    return it == cache_.end() ? nullptr : &it->second;
+  }
+  bool known(const GridPoint& p, ModeRequest request) const {
+    return cached(p, request) || errors_.contains(key_of(p, request));
+  }
+
+  ModalBasis solve(const GridPoint& p, ModeRequest request) const {
+    Bat bat = study_.designs[p.design];
+    if (p.slices > 0) bat = resample(bat, p.slices);
+    return compute_modes(bat, p.theory, request);
+  }
+  const ModalBasis* store(const GridPoint& p, ModeRequest request, ModalBasis solved) {
+    if (!request.is_rigid_only()) ++solves_;
+    const ModalBasis* kept = &cache_.emplace(key_of(p, request), std::move(solved)).first->second;
+    if (request.below_omega > 0 && kept->complete()) {
+      auto& lowest = complete_from_.try_emplace(model_of(p), request.below_omega, kept).first->second;
+      if (request.below_omega < lowest.first) lowest = {request.below_omega, kept};
+    }
+    return kept;
+  }
+  std::string fail(const GridPoint& p, ModeRequest request, const std::string& why) {
+    const std::string error = "the modes of " + study_.bats[p.bat].string() + ": " + why;
+    errors_.emplace(key_of(p, request), error);
+    return error;
+  }
+
+  const ModalBasis* basis(const GridPoint& p, ModeRequest request, std::string& error) {
+    if (const ModalBasis* kept = cached(p, request)) return kept;
+    if (const auto it = errors_.find(key_of(p, request)); it != errors_.end()) return error = it->second, nullptr;
     try {
-      Bat bat = study_.designs[p.design];
-      if (p.slices > 0) bat = resample(bat, p.slices);
       const auto start = Clock::now();
-      ModalBasis solved = compute_modes(bat, p.theory, request);
-      if (!request.is_rigid_only()) ++solves_, solve_seconds_ += seconds_since(start);
-      const ModalBasis* kept = &cache_.emplace(key, std::move(solved)).first->second;
-      if (request.below_omega > 0 && kept->complete()) {
-        auto& lowest = complete_from_.try_emplace(model, request.below_omega, kept).first->second;
-        if (request.below_omega < lowest.first) lowest = {request.below_omega, kept};
-      }
-      return kept;
+      ModalBasis solved = solve(p, request);
+      if (!request.is_rigid_only()) solve_seconds_ += seconds_since(start);
+      return store(p, request, std::move(solved));
     } catch (const std::exception& e) {
-      error = "the modes of " + study_.bats[p.bat].string() + ": " + e.what();
-      errors_.emplace(key, error);
+      error = fail(p, request, e.what());
       return nullptr;
     }
   }
 
-  using Key = std::tuple<std::size_t, int, BeamTheory, int, double>;
-  using Model = std::tuple<std::size_t, int, BeamTheory>;
   const Study& study_;
   int largest_count_ = 0;
   std::map<Key, ModalBasis> cache_;
@@ -192,10 +254,10 @@ std::vector<double> compute_chunk(const Study& study, const OutputLayout& layout
   std::vector<const ModalBasis*> bases(points.size(), nullptr);  // none for the wall and the toy
   std::vector<std::string> reasons(points.size());  // why a point failed: first its modes', then its own
   cache.make_room();
-  for (std::size_t i = 0; i < points.size(); ++i) {  // modes first, serially: the cache is not shared
-    grid[i] = grid_point(study, points[i]);
+  for (std::size_t i = 0; i < points.size(); ++i) grid[i] = grid_point(study, points[i]);
+  cache.prefetch(grid);  // the chunk's bats solved over the threads
+  for (std::size_t i = 0; i < points.size(); ++i)  // then looked up serially: the cache is not shared
     if (needs_modal_basis(grid[i].kind)) bases[i] = cache.get(grid[i], reasons[i]);
-  }
   std::vector<double> rows(points.size() * layout.width);
   std::vector<char> failed(points.size(), 0);  // char, not bool: each thread writes its own
   const auto start = Clock::now();
