@@ -80,4 +80,8 @@ TEST_CASE("A certification study runs into a dataset and refuses what does not b
   CHECK_THAT(study_refusal(d.dir.write("bad.toml", "kind = \"certification\"\n[scene]\nbat = \"bats/r161.toml\"\n"
                                                    "standard = \"asa\"\n")),
              Catch::Contains("key 'scene.standard' = \"asa\""));
+  // A point certifies a bat: it has no single collision, so no vf or energies.
+  CHECK_THAT(study_refusal(d.dir.write("bad.toml", "kind = \"certification\"\n[scene]\nbat = \"bats/r161.toml\"\n"
+                                                   "[output]\nvariables = [\"vf\"]\n")),
+             Catch::Contains("does not apply to kind \"certification\""));
 }

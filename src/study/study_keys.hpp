@@ -18,7 +18,8 @@ constexpr KindSet impact = bit(StudyKind::impact), wall = bit(StudyKind::wall), 
                   certification = bit(StudyKind::certification);
 constexpr KindSet ball_kinds = impact | wall;  // the kinds with the nonlinear ball and its integrator
 constexpr KindSet bat_kinds = impact | certification;  // the kinds that strike bats
-constexpr KindSet every_kind = impact | wall | toy | certification;
+constexpr KindSet collision_kinds = impact | wall | toy;  // a point is one collision: vf, energies
+constexpr KindSet every_kind = collision_kinds | certification;
 
 // The kind as the study file writes it, quoted.
 std::string kind_text(StudyKind kind);
