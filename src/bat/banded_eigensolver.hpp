@@ -21,9 +21,12 @@ struct BandedRequest {
   bool diagonal_mass = false;  // Timoshenko's lumped M
 };
 
-// Beyond this share of all modes the bisection and each eigenvector's inverse iteration cost
-// about what the dense solve's O(n^3) does (R161 at N = 84: 60 of 168 modes as long as all 168).
-inline constexpr double max_banded_share = 0.3;
+// Beyond this share of all modes the dense solve is the better buy. R161 (Timoshenko) measured
+// by tests/benchmarks/bench_partial_modes.cpp's method: 80 of 168 modes cost 0.35 of the dense
+// solve at N = 84, 160 of 336 0.23 at N = 168; the banded cost grows by about 18 us (N = 84)
+// and 40 us (N = 168) per mode, so the two meet near 80 % of the modes at N = 84.
+// (Before the inline band LU and dsterf: 60 of 168 cost as much as all 168, and 0.3 was the limit.)
+inline constexpr double max_banded_share = 0.5;
 
 // Ascending eigenvalues and M-normalised eigenvectors (columns) of the request. The two rigid
 // modes come out as round-off; the caller replaces them by the exact ones. False, with nothing

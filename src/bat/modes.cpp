@@ -114,7 +114,12 @@ ModalBasis compute_modes(const Bat& bat, BeamTheory theory, ModeRequest request)
     if (s.slice_displacement.row(bat.slices() - 1).dot(x.col(n)) < 0) x.col(n) *= -1;
   // A partial basis maps with the sparse map (the dense product would cost more than its solve).
   if (!partial) basis.psi = s.slice_displacement * x;
-  else basis.psi = s.slice_displacement.sparseView() * x;
+  else {
+    // Materialised first: a sparseView() expression in the product is re-scanned, dense, for
+    // every column of x (an O(n^2) scan per mode).
+    const Eigen::SparseMatrix<double> map = s.slice_displacement.sparseView();
+    basis.psi = map * x;
+  }
   basis.vectors = std::move(x);
   if (partial && !basis.complete())
     basis.solved_below = request.vibrational > 0 ? basis.omega(basis.count() - 1) : request.below_omega;

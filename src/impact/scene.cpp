@@ -136,7 +136,7 @@ SceneGeometry rigid_geometry(const ImpactScene& scene, const ModalBasis& basis) 
 ModeRequest auto_mode_request(const ImpactScene& scene, const ModalBasis& basis) {
   const SceneGeometry g = rigid_geometry(scene, basis);
   const double pulse = pulse_duration(scene.ball, scene.ball_speed + g.bat_speed, g.recoil);
-  const double omega = auto_solve_factor * 4 * std::numbers::pi / pulse;
+  const double omega = auto_solve_factor(scene.mode_tolerance) * 4 * std::numbers::pi / pulse;
   if (!std::isfinite(omega) || !(omega > 0)) return ModeRequest::all();  // a scene validation will refuse
   // Half-octaves of 1000 rad/s: nearby pulses share one basis.
   return ModeRequest::below(1000 * std::exp2(std::ceil(2 * std::log2(std::max(omega, 1000.0) / 1000)) / 2));

@@ -6,6 +6,7 @@
 // estimate of what the dropped modes take is an upper bound; they are kept as a static
 // (residual) compliance sum psi_n^2 / omega_n^2, which removes most of even that.
 #include <Eigen/Dense>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -44,8 +45,13 @@ ModeSelection select_modes(const Eigen::VectorXd& omega, const Eigen::VectorXd& 
                            const UnsolvedModes& unsolved = {});
 
 // Modes faster than this multiple of the pulse's reach 4 pi / T are what a study solves for
-// `auto` (scene.hpp, auto_mode_request): their compliance-weighted cost stays far enough below the
-// tolerance that auto keeps the modes it keeps with every mode solved (tests/test_partial_modes.cpp).
-inline constexpr double auto_solve_factor = 48;
+// `auto` (scene.hpp, auto_mode_request). The unsolved tail's bound falls about as the cube of the
+// multiple (the tail's compliance as 1 / omega and its cost per unit compliance as 1 / omega^2; measured
+// 3.1), so the multiple grows as the tolerance's cube root: 24 at 1e-5. Measured (README,
+// "Numerics"; R161, torpedo and aluminium at N = 84/85 and 168/170, 30.5-80.5 cm, 1-50 m/s, e0 0.5-1,
+// a 1.5-2.2, tolerances 1e-3 to 1e-7): modes_error stays within the tolerance everywhere, and
+// two thirds of this multiple is not enough. (A fixed 48 asked twice as far as needed at 1e-5 and
+// not far enough at 1e-7, where the tail alone took up to 2.4 x the tolerance.)
+inline double auto_solve_factor(double tolerance) { return 24 * std::cbrt(1e-5 / tolerance); }
 
 }  // namespace sweetspot

@@ -111,9 +111,9 @@ struct SceneGeometry {
 // solved modes, so a study's cache solves at least as many as they ask.
 SceneGeometry scene_geometry(const ImpactScene& scene, const ModalBasis& basis);
 
-// The modes modes = "auto" needs solved at this scene: every one below auto_solve_factor times
-// the rigid-bat pulse's reach 4 pi / T, rounded up to a half-octave of 1000 rad/s. `basis` gives
-// the mass properties only (a rigid-only basis will do).
+// The modes modes = "auto" needs solved at this scene: every one below
+// auto_solve_factor(mode_tolerance) times the rigid-bat pulse's reach 4 pi / T, rounded up to a
+// half-octave of 1000 rad/s. `basis` gives the mass properties only (a rigid-only basis will do).
 ModeRequest auto_mode_request(const ImpactScene& scene, const ModalBasis& basis);
 
 }  // namespace sweetspot
