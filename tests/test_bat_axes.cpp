@@ -212,3 +212,23 @@ TEST_CASE("A design dataset holds each bat's mass, drop, balance, swing weight a
   CHECK(check.exit_code == 0);
   CHECK_THAT(check.output, Catch::Contains("design dataset ok"));
 }
+
+TEST_CASE("The sweet spot does not depend on the order a study writes z in", "[bat_axes]") {
+  const std::string z = "[0.60, 0.62, 0.64, 0.66, 0.68, 0.70, 0.72, 0.74, 0.76, 0.78]";
+  const DesignDir up(design_study("r161.toml", "\"bat.density\" = [600, 700]\nz = " + z + "\n",
+                                  "variables = [\"sweet_spot_z\", \"sweet_spot_width\"]\n"));
+  const auto down = up.dir.write("down.toml", design_study("r161.toml",
+                                                           "\"bat.density\" = [600, 700]\nz = [0.78, 0.76, 0.74, 0.72, "
+                                                           "0.70, 0.68, 0.66, 0.64, 0.62, 0.60]\n",
+                                                           "variables = [\"sweet_spot_z\", \"sweet_spot_width\"]\n"));
+  REQUIRE(run_program("run " + up.study.string() + " -o " + up / "up.h5 --quiet").exit_code == 0);
+  REQUIRE(run_program("run " + down.string() + " -o " + up / "down.h5 --quiet").exit_code == 0);
+  const ProgramRun check = run_command(
+      std::string(python) + " -c \"import xarray as xr, numpy as np; a = xr.open_dataset('" + up / "up.h5" +
+      "', engine='h5netcdf'); b = xr.open_dataset('" + up / "down.h5" +
+      "', engine='h5netcdf'); assert np.isfinite(a.sweet_spot_width).all(); "
+      "assert (a.sweet_spot_z.values == b.sweet_spot_z.values).all() and "
+      "(a.sweet_spot_width.values == b.sweet_spot_width.values).all(); print('same')\"");
+  INFO(check.output);
+  CHECK(check.output == "same\n");
+}

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <sstream>
 
 #include "sweetspot/study/bat_properties.hpp"
@@ -362,11 +363,17 @@ void add_sweet_spots(const Study& study, const OutputLayout& layout, const std::
   std::size_t inner = 1;  // points between neighbours along z: the axes after it
   for (std::size_t k = zk + 1; k < study.axes.size(); ++k) inner *= study.axes[k].size();
   const std::size_t lines = study.points() / z.size();
+  // The axis's values in ascending order, whatever order the study wrote them in.
+  std::vector<std::size_t> order(z.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::ranges::sort(order, {}, [&](std::size_t j) { return z.values[j]; });
+  std::vector<double> ascending(z.size());
+  for (std::size_t j = 0; j < z.size(); ++j) ascending[j] = z.values[order[j]];
   std::vector<double> at(lines), peak(lines), width(lines), line(z.size());
   for (std::size_t l = 0; l < lines; ++l) {
     const std::size_t first = (l / inner) * inner * z.size() + l % inner;
-    for (std::size_t j = 0; j < z.size(); ++j) line[j] = rows[(first + j * inner) * layout.width + vf];
-    const SweetSpot spot = sweet_spot(z.values, line, study.sweet_spot_fraction);
+    for (std::size_t j = 0; j < z.size(); ++j) line[j] = rows[(first + order[j] * inner) * layout.width + vf];
+    const SweetSpot spot = sweet_spot(ascending, line, study.sweet_spot_fraction);
     at[l] = spot.z, peak[l] = spot.vf, width[l] = spot.width;
   }
   std::vector<std::string> dims;
