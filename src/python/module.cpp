@@ -5,6 +5,8 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <omp.h>
+
 #include <cmath>
 #include <exception>
 #include <string>
@@ -90,7 +92,7 @@ void fill_row(const ImpactResult& r, double* row) {
 
 // Every point of flat per-point arrays (same length) over OpenMP threads without the GIL. A
 // point refused as bad input raises ValueError with the first such point's message.
-py::dict run_impacts(BatHandle& bat, const py::dict& scalars, const py::dict& arrays) {
+py::dict run_impacts(BatHandle& bat, const py::dict& scalars, const py::dict& arrays, int threads) {
   std::set<std::string> per_point;
   std::vector<std::pair<int, py::array_t<double, py::array::c_style | py::array::forcecast>>> columns;
   py::ssize_t n = -1;
@@ -117,7 +119,8 @@ py::dict run_impacts(BatHandle& bat, const py::dict& scalars, const py::dict& ar
   std::vector<std::string> errors(n);
   {
     py::gil_scoped_release release;
-#pragma omp parallel for schedule(dynamic)
+    if (threads <= 0) threads = omp_get_max_threads();
+#pragma omp parallel for schedule(dynamic) num_threads(threads)
     for (py::ssize_t i = 0; i < n; ++i) {
       try {
         SceneArgs args = base;
@@ -239,7 +242,7 @@ PYBIND11_MODULE(_sweetspot, m) {
     }
     return result_dict(r);
   });
-  m.def("_impacts", &run_impacts);
+  m.def("_impacts", &run_impacts, py::arg("bat"), py::arg("scalars"), py::arg("arrays"), py::arg("threads") = 0);
   m.def("_describe", [](const std::string& name) {
     const OutputDescription d = describe_output(name);
     return py::make_tuple(d.units, d.long_name);

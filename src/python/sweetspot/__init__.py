@@ -75,10 +75,10 @@ def _dims(arrays, shape):
 
 def impacts(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, e0=None, ball_mass=None,
             ball_radius=None, k1=None, a=None, pivot=False, modes=None, mode_tolerance=None, accuracy=None,
-            integrator=None, dt=None, tolerance=None, window=None, theory="timoshenko", n2000=False):
+            integrator=None, dt=None, tolerance=None, window=None, theory="timoshenko", n2000=False, threads=None):
     """Many impacts at once: z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1
     and a may be arrays, broadcast together as numpy does. Runs in C++ over OpenMP threads with the
-    GIL released, each needed set of modes solved once. Returns an xarray.Dataset with a study
+    GIL released (`threads` of them, default OpenMP's: OMP_NUM_THREADS or every core), each needed set of modes solved once. Returns an xarray.Dataset with a study
     dataset's names, units and status flags: dims named after the array arguments when each is 1-D
     along its own axis (z=np.linspace(...), ball_speed=v[:, None] gives dims (ball_speed, z)), else
     one dim `point` with the arguments as coordinates over it."""
@@ -94,7 +94,7 @@ def impacts(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, e0=Non
     except ValueError as e:
         raise ValueError(f"impacts: arguments that do not broadcast together: {e}") from None
     flat = {k: np.ascontiguousarray(np.broadcast_to(v, shape)).ravel() for k, v in arrays.items()}
-    out = _impacts(bat, scalars, flat)
+    out = _impacts(bat, scalars, flat, 0 if threads is None else int(threads))
 
     dims = _dims(arrays, shape)
     if dims is not None:
