@@ -2,16 +2,18 @@
 impacts broadcasts and equals single impacts, bad input is ValueError with the program's message,
 and two Python threads run impacts at once (the GIL released).
 
-    /usr/bin/python3 tests/check_python.py MODULE_DIR PROGRAM SOURCE_DIR
+    /usr/bin/python3 tests/check_python.py MODULE_DIR PROGRAM SOURCE_DIR BUILD_DIR WORK_DIR
 """
 import json
 import math
+import os
+import shutil
 import subprocess
 import sys
 import threading
 import time
 
-module_dir, program, source = sys.argv[1:4]
+module_dir, program, source, build, work = sys.argv[1:6]
 sys.path.insert(0, module_dir)
 import numpy as np  # noqa: E402
 import sweetspot  # noqa: E402
@@ -130,10 +132,10 @@ for threads in (None, 1):
     t_one = time.perf_counter() - start
     results = [None, None]
 
-    def work(k):
+    def run_in_thread(k):
         results[k] = sweetspot.impacts(bat, z=zs, ball_speed=40, cm_speed=10, omega=40, threads=threads)
 
-    workers = [threading.Thread(target=work, args=(k,)) for k in range(2)]
+    workers = [threading.Thread(target=run_in_thread, args=(k,)) for k in range(2)]
     start = time.perf_counter()
     for t in workers:
         t.start()
@@ -144,6 +146,32 @@ for threads in (None, 1):
         check(r is not None and np.array_equal(r.vf.values, alone.vf.values), "threaded impacts equal")
     print(f"impacts over {zs.size} points, threads={threads}: {t_one:.3f} s alone, two Python threads at once "
           f"{t_two:.3f} s ({t_two / t_one:.2f} x one call)")
+
+# 5. run_study equals `sweetspot run`, and impacts equals the study's points (the same modes solved).
+shutil.rmtree(work, ignore_errors=True)
+os.makedirs(work)
+study = f"{source}/studies/high_impact.toml"
+ds = sweetspot.run_study(study, output=f"{work}/module.h5")
+subprocess.run([program, "run", study, "-o", f"{work}/program.h5", "--quiet"], check=True)
+import xarray as xr  # noqa: E402
+with xr.open_dataset(f"{work}/program.h5", engine="h5netcdf") as reference:
+    for name in ("vf", "e_eff", "contact_time", "status", "frequency"):
+        check(np.array_equal(ds[name].values, reference[name].values, equal_nan=True), f"run_study {name}")
+points = sweetspot.impacts(bat, z=ds.z.values, ball_speed=40, center=0.09, omega=51, e0=0.5, modes=18)
+check(np.array_equal(points.vf.values, ds.vf.sel(modes=18).squeeze().values), "impacts == the study's points")
+try:
+    sweetspot.run_study(f"{source}/studies/no_such_study.toml")
+    check(False, "run_study of a missing file")
+except ValueError as e:
+    print("ValueError:", e)
+
+# 6. cmake --install puts the package under the prefix, where the interpreter imports it.
+prefix = f"{work}/prefix"
+subprocess.run(["cmake", "--install", build, "--prefix", prefix], check=True, capture_output=True)
+site = f"{prefix}/lib/python3/dist-packages"
+run = subprocess.run([sys.executable, "-c", "import sweetspot; print(sweetspot.__file__)"],
+                     env=os.environ | {"PYTHONPATH": site}, capture_output=True, text=True, cwd=work)
+check(run.returncode == 0 and run.stdout.startswith(site), f"installed package: {run.stdout} {run.stderr}")
 
 if failures:
     print(f"{len(failures)} failures")
