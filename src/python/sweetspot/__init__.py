@@ -98,7 +98,7 @@ def impacts(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, e0=Non
 
     dims = _dims(arrays, shape)
     if dims is not None:
-        coords = {k: (k, arrays[k].ravel() if arrays[k].size > 1 else arrays[k].reshape(1), _attrs(k))
+        coords = {k: (k, arrays[k].ravel(), _attrs(k))
                   for k in dims}
         data_shape, data_dims = shape, tuple(dims)
     else:
