@@ -96,13 +96,8 @@ void run_impact(ImpactOptions& o) {
   o.scene.swing.center = o.center.value_or(0);
   o.scene.swing.cm_speed = o.cm_speed.value_or(0);
   const BeamTheory theory = parse_beam_theory(o.theory);
-  const int modes = o.scene.vibrational_modes;
   // What a study's point solves for (study/parallel.cpp), so that both give the same result.
-  const ModeRequest request = modes == auto_modes
-                                  ? auto_mode_request(o.scene, compute_modes(bat, theory, ModeRequest::rigid_only()))
-                              : modes == 0         ? ModeRequest::rigid_only()
-                              : modes == all_modes ? ModeRequest::all()
-                                                   : ModeRequest::lowest(modes);
+  const ModeRequest request = impact_mode_request(o.scene, compute_modes(bat, theory, ModeRequest::rigid_only()));
   const ModalBasis basis = compute_modes(bat, theory, request);
   const ImpactResult r = simulate_impact(basis, o.scene);
   if (r.status == CollisionStatus::refused_step) throw InputError("--dt: " + r.message);

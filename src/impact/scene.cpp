@@ -142,6 +142,14 @@ ModeRequest auto_mode_request(const ImpactScene& scene, const ModalBasis& basis)
   return ModeRequest::below(1000 * std::exp2(std::ceil(2 * std::log2(std::max(omega, 1000.0) / 1000)) / 2));
 }
 
+ModeRequest impact_mode_request(const ImpactScene& scene, const ModalBasis& rigid) {
+  const int modes = scene.vibrational_modes;
+  if (modes == auto_modes) return auto_mode_request(scene, rigid);
+  if (modes == 0) return ModeRequest::rigid_only();
+  if (modes == all_modes) return ModeRequest::all();
+  return ModeRequest::lowest(modes);
+}
+
 SceneGeometry scene_geometry(const ImpactScene& scene, const ModalBasis& basis) {
   SceneGeometry g = rigid_geometry(scene, basis);
   const Swing& swing = scene.swing;

@@ -259,6 +259,11 @@ std::vector<double> array_value(const ImpactResult& r, const std::string& name) 
 
 }  // namespace
 
+OutputDescription describe_output(const std::string& name) {
+  const Description d = describe(name);
+  return {d.units, d.long_name};
+}
+
 int dataset_mode_count(const Study& study) {
   const auto axis = std::ranges::find(study.axes, "modes", &Axis::name);
   const std::vector<double> counts = axis == study.axes.end() ? std::vector<double>{static_cast<double>(study.base.vibrational_modes)}

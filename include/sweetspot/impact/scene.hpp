@@ -116,4 +116,10 @@ SceneGeometry scene_geometry(const ImpactScene& scene, const ModalBasis& basis);
 // half-octave of 1000 rad/s. `basis` gives the mass properties only (a rigid-only basis will do).
 ModeRequest auto_mode_request(const ImpactScene& scene, const ModalBasis& basis);
 
+// What one impact solves for, by scene.vibrational_modes: the rigid modes alone for 0, every mode
+// for all_modes, the lowest k for a count k, auto_mode_request for auto_modes. `rigid` gives the
+// mass properties only (a rigid-only basis will do). The program's `impact` and the Python module
+// both ask this, so that they solve the same basis and give the same result bit for bit.
+ModeRequest impact_mode_request(const ImpactScene& scene, const ModalBasis& rigid);
+
 }  // namespace sweetspot

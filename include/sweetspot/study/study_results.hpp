@@ -32,6 +32,13 @@ struct OutputLayout {
 Dataset make_dataset(const Study& study, const OutputLayout& layout, const std::vector<double>& rows,
                      const DesignModes& modes, const RunInfo& info);
 
+// The units (UDUNITS, empty for flags and strings) and long_name a dataset gives an output or an
+// axis of this name: the Python module's datasets take theirs from here.
+struct OutputDescription {
+  std::string units, long_name;
+};
+OutputDescription describe_output(const std::string& name);
+
 // Whether any point of the study keeps a vibrational mode (else no modes are computed at all).
 bool keeps_vibrations(const Study& study);
 

@@ -1,0 +1,43 @@
+#pragma once
+// A bat as Python holds it: the sliced bat, its mass properties and the modal bases solved so far,
+// one per (theory, ModeRequest), so that impacts on the same bat solve each basis once. Safe to
+// use from several threads at once (impacts release the GIL).
+#include <map>
+#include <memory>
+#include <mutex>
+#include <tuple>
+
+#include "sweetspot/bat/bat.hpp"
+#include "sweetspot/bat/modes.hpp"
+
+namespace sweetspot::python {
+
+class BatHandle {
+ public:
+  explicit BatHandle(Bat bat) : bat_(std::move(bat)), mass_(mass_properties(bat_)) {}
+
+  const Bat& bat() const { return bat_; }
+  const MassProperties& mass() const { return mass_; }
+
+  // The basis of this request, solved on first use (outside the lock: two threads asking the same
+  // new basis may both solve it, and the first stored is kept; the solve is deterministic).
+  std::shared_ptr<const ModalBasis> basis(BeamTheory theory, ModeRequest request) {
+    const Key key{static_cast<int>(theory), request.vibrational, request.below_omega};
+    {
+      const std::lock_guard lock(mutex_);
+      if (auto it = cache_.find(key); it != cache_.end()) return it->second;
+    }
+    auto solved = std::make_shared<const ModalBasis>(compute_modes(bat_, theory, request));
+    const std::lock_guard lock(mutex_);
+    return cache_.emplace(key, std::move(solved)).first->second;
+  }
+
+ private:
+  using Key = std::tuple<int, int, double>;
+  Bat bat_;
+  MassProperties mass_;
+  std::mutex mutex_;
+  std::map<Key, std::shared_ptr<const ModalBasis>> cache_;
+};
+
+}  // namespace sweetspot::python

@@ -1,0 +1,257 @@
+// sweetspot._sweetspot: thin bindings over sweetspot_core and sweetspot_study. The Python package
+// (src/python/sweetspot/__init__.py) gives the documented signatures, broadcasting and xarray.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <omp.h>
+
+#include <cmath>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "bat_handle.hpp"
+#include "scene_args.hpp"
+#include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/impact/impact.hpp"
+#include "sweetspot/input_error.hpp"
+#include "sweetspot/study/study_results.hpp"
+
+namespace py = pybind11;
+using namespace sweetspot;
+using namespace sweetspot::python;
+
+namespace {
+
+py::array_t<double> array(const std::vector<double>& v) { return py::array_t<double>(v.size(), v.data()); }
+py::array_t<double> array(const Eigen::VectorXd& v) { return py::array_t<double>(v.size(), v.data()); }
+
+// One impact as the program's `impact` runs it: the rigid basis, the request it asks for, the
+// basis of that request (both cached on the bat), the collision.
+ImpactResult run_impact(BatHandle& bat, const SceneArgs& args) {
+  const auto rigid = bat.basis(args.theory, ModeRequest::rigid_only());
+  const auto basis = bat.basis(args.theory, impact_mode_request(args.scene, *rigid));
+  ImpactResult r = simulate_impact(*basis, args.scene);
+  if (r.status == CollisionStatus::refused_step) throw InputError("dt: " + r.message);
+  return r;
+}
+
+// The result under the names of `sweetspot impact --json`, in its order; NaN where JSON has null.
+py::dict result_dict(const ImpactResult& r) {
+  py::dict d;
+  d["status"] = to_string(r.status);
+  if (!r.message.empty()) d["message"] = r.message;
+  d["z"] = r.z, d["vf"] = r.vf, d["e_eff"] = r.e_eff, d["contact_time"] = r.contact_time;
+  d["collision_time"] = r.collision_time, d["u_max"] = r.u_max, d["peak_force"] = r.peak_force;
+  d["impulse"] = r.impulse, d["bat_speed"] = r.bat_speed, d["e_a"] = r.rig.e_a, d["bbcor"] = r.rig.bbcor;
+  d["besr"] = r.rig.besr, d["bpf"] = r.rig.bpf;
+  py::dict e;
+  e["initial"] = r.energy.initial, e["ball"] = r.energy.ball, e["bat_translation"] = r.energy.bat_translation;
+  e["bat_rotation"] = r.energy.bat_rotation, e["vibration"] = r.energy.vibration;
+  e["ball_dissipated"] = r.energy.ball_dissipated, e["residual"] = r.energy.residual;
+  d["energy"] = e;
+  d["mode_energy"] = array(r.mode_energy);
+  d["modes_kept"] = py::array_t<int>(r.modes_kept.size(), r.modes_kept.data());
+  d["modes_error"] = r.modes_error;
+  d["contacts"] = r.contacts;
+  return d;
+}
+
+// The scalar outputs of a study dataset that `impacts` gives, in the order of its variables.
+const std::vector<std::string> impacts_outputs = {
+    "vf",     "e_eff",       "bat_speed",      "e_a",         "bbcor",      "besr",
+    "bpf",    "contact_time", "collision_time", "u_max",      "peak_force", "impulse",
+    "energy_initial", "energy_ball", "energy_bat_translation", "energy_bat_rotation", "energy_vibration",
+    "energy_ball_dissipated", "energy_residual", "modes_error"};
+
+void fill_row(const ImpactResult& r, double* row) {
+  const double values[] = {r.vf,
+                           r.e_eff,
+                           r.bat_speed,
+                           r.rig.e_a,
+                           r.rig.bbcor,
+                           r.rig.besr,
+                           r.rig.bpf,
+                           r.contact_time,
+                           r.collision_time,
+                           r.u_max,
+                           r.peak_force,
+                           r.impulse,
+                           r.energy.initial,
+                           r.energy.ball,
+                           r.energy.bat_translation,
+                           r.energy.bat_rotation,
+                           r.energy.vibration,
+                           r.energy.ball_dissipated,
+                           r.energy.residual,
+                           r.modes_error};
+  std::copy(std::begin(values), std::end(values), row);
+}
+
+// Every point of flat per-point arrays (same length) over OpenMP threads without the GIL. A
+// point refused as bad input raises ValueError with the first such point's message.
+py::dict run_impacts(BatHandle& bat, const py::dict& scalars, const py::dict& arrays, int threads) {
+  std::set<std::string> per_point;
+  std::vector<std::pair<int, py::array_t<double, py::array::c_style | py::array::forcecast>>> columns;
+  py::ssize_t n = -1;
+  for (const auto& [key, value] : arrays) {
+    const std::string name = key.cast<std::string>();
+    const auto& names = point_arguments();
+    const auto it = std::find(names.begin(), names.end(), name);
+    if (it == names.end()) throw py::type_error("'" + name + "' cannot vary from point to point");
+    auto column = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(value);
+    if (!column || column.ndim() != 1) throw py::type_error("'" + name + "': expected a 1-D array of numbers");
+    if (n >= 0 && column.size() != n) throw py::value_error("impacts: per-point arrays of different lengths");
+    n = column.size();
+    per_point.insert(name);
+    columns.emplace_back(static_cast<int>(it - names.begin()), std::move(column));
+  }
+  if (n < 0) n = 1;
+  const SceneArgs base = scene_args(scalars, per_point);
+  std::vector<std::pair<int, const double*>> data;
+  for (const auto& [which, column] : columns) data.emplace_back(which, column.data());
+
+  const std::size_t width = impacts_outputs.size();
+  std::vector<double> rows(static_cast<std::size_t>(n) * width);
+  std::vector<int> status(n), contacts(n), kept(n);
+  std::vector<std::string> errors(n);
+  {
+    py::gil_scoped_release release;
+    if (threads <= 0) threads = omp_get_max_threads();
+#pragma omp parallel for schedule(dynamic) num_threads(threads)
+    for (py::ssize_t i = 0; i < n; ++i) {
+      try {
+        SceneArgs args = base;
+        for (const auto& [which, values] : data) set_point_argument(args.scene, which, values[i]);
+        const ImpactResult r = run_impact(bat, args);
+        fill_row(r, &rows[i * width]);
+        status[i] = static_cast<int>(r.status), contacts[i] = r.contacts;
+        kept[i] = static_cast<int>(r.modes_kept.size());
+      } catch (const InputError& e) {
+        errors[i] = e.what();
+      } catch (const std::exception& e) {  // not bad input: the point fails, as a study's would
+        std::fill_n(&rows[i * width], width, std::nan(""));
+        status[i] = static_cast<int>(CollisionStatus::failed), contacts[i] = -1, kept[i] = -1;
+      }
+    }
+  }
+  for (const std::string& e : errors)
+    if (!e.empty()) throw InputError(e);
+  py::dict out;
+  for (std::size_t k = 0; k < width; ++k) {
+    py::array_t<double> column(n);
+    double* p = column.mutable_data();
+    for (py::ssize_t i = 0; i < n; ++i) p[i] = rows[i * width + k];
+    out[py::str(impacts_outputs[k])] = column;
+  }
+  out["status"] = py::array_t<int>(n, status.data());
+  out["contacts"] = py::array_t<int>(n, contacts.data());
+  out["modes_kept"] = py::array_t<int>(n, kept.data());
+  return out;
+}
+
+py::dict modes_dict(BatHandle& bat, std::optional<int> count, const std::string& theory_text) {
+  const BeamTheory theory = parse_beam_theory(theory_text);
+  if (count && *count < 1) throw InputError("count " + std::to_string(*count) + ": expected at least 1");
+  const auto basis = bat.basis(theory, count ? ModeRequest::lowest(*count) : ModeRequest::all());
+  const int solved = basis->count() - 2;
+  if (count && *count > solved)
+    throw InputError("count " + std::to_string(*count) + ": the bat has only " + std::to_string(solved) +
+                     " vibrational modes at " + std::to_string(bat.bat().slices()) + " slices");
+  const int k = count.value_or(solved);
+  const std::vector<double> f = basis->vibrational_frequencies_hz();
+  py::array_t<double> shapes({k, basis->slices()});
+  py::list nodes;
+  for (int mode = 1; mode <= k; ++mode) {  // as `sweetspot modes --shapes`: max |psi| = 1, + at the barrel end
+    const Eigen::VectorXd psi = basis->psi.col(mode + 1);
+    const double scale = psi.cwiseAbs().maxCoeff() * (psi(psi.size() - 1) < 0 ? -1 : 1);
+    for (int i = 0; i < basis->slices(); ++i) shapes.mutable_at(mode - 1, i) = psi(i) / scale;
+    nodes.append(array(basis->nodes(mode + 1)));
+  }
+  py::dict d;
+  d["theory"] = to_string(theory);
+  d["frequencies_hz"] = py::array_t<double>(k, f.data());
+  d["nodes_m"] = nodes;
+  d["z_m"] = array(basis->z);
+  d["shapes"] = shapes;
+  d["omega"] = array(Eigen::VectorXd(basis->omega.head(k + 2)));
+  d["mass_kg"] = basis->mass;
+  d["z_cm_m"] = basis->z_cm;
+  d["moment_of_inertia_cm_kg_m2"] = basis->moment_of_inertia_cm;
+  return d;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_sweetspot, m) {
+  m.doc() = "sweetspot's C++ engine (use the package sweetspot)";
+  // The program's bad input (one line naming what was wrong) is Python's ValueError.
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const InputError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+  });
+
+  py::class_<BatHandle, std::shared_ptr<BatHandle>>(m, "Bat")
+      .def_static("load", [](const std::filesystem::path& path, std::optional<int> slices) {
+            Bat bat = load_bat(path);
+            if (slices) {
+              if (*slices < min_slices || *slices > max_slices)
+                throw InputError("slices " + std::to_string(*slices) + ": expected " + std::to_string(min_slices) +
+                                 " to " + std::to_string(max_slices));
+              bat = resample(bat, *slices);
+            }
+            return std::make_shared<BatHandle>(std::move(bat));
+          }, py::arg("path"), py::arg("slices") = py::none(),
+          "A bat from its TOML file, cut into `slices` slices (default: its profile's own).")
+      .def_property_readonly("name", [](const BatHandle& b) { return b.bat().name; })
+      .def_property_readonly("length", [](const BatHandle& b) { return b.bat().length; }, "m")
+      .def_property_readonly("slices", [](const BatHandle& b) { return b.bat().slices(); })
+      .def_property_readonly("mass", [](const BatHandle& b) { return b.mass().mass; }, "kg")
+      .def_property_readonly("z_cm", [](const BatHandle& b) { return b.mass().z_cm; }, "m from the knob")
+      .def_property_readonly("moment_of_inertia_cm", [](const BatHandle& b) { return b.mass().moment_of_inertia_cm; },
+                             "kg m^2 about the centre of mass")
+      .def_property_readonly("radius_of_gyration", [](const BatHandle& b) { return b.mass().radius_of_gyration(); }, "m")
+      .def("moment_of_inertia_about", [](const BatHandle& b, double z) { return b.mass().moment_of_inertia_about(z); },
+           py::arg("z"), "kg m^2 about the point z (m from the knob)")
+      .def_property_readonly("z", [](const BatHandle& b) {
+            std::vector<double> z(b.bat().slices());
+            for (int i = 0; i < b.bat().slices(); ++i) z[i] = b.bat().slice_center(i);
+            return array(z);
+          }, "slice centres, m from the knob")
+      .def_property_readonly("outer_diameter", [](const BatHandle& b) { return array(b.bat().outer_diameter); }, "m")
+      .def_property_readonly("inner_diameter", [](const BatHandle& b) { return array(b.bat().inner_diameter); },
+                             "m (empty for a solid bat)")
+      .def("modes", &modes_dict, py::arg("count") = py::none(), py::arg("theory") = "timoshenko",
+           "Normal modes: frequencies_hz, shapes (count x slices, max |psi| = 1), z_m, nodes_m, omega, mass properties.")
+      .def("__repr__", [](const BatHandle& b) {
+        return "<sweetspot.Bat '" + b.bat().name + "': " + std::to_string(b.bat().length) + " m, " +
+               std::to_string(b.bat().slices()) + " slices>";
+      });
+
+  m.def("_impact", [](BatHandle& bat, const py::dict& args) {
+    const SceneArgs scene = scene_args(args);
+    ImpactResult r;
+    {
+      py::gil_scoped_release release;
+      r = run_impact(bat, scene);
+    }
+    return result_dict(r);
+  });
+  m.def("_impacts", &run_impacts, py::arg("bat"), py::arg("scalars"), py::arg("arrays"), py::arg("threads") = 0);
+  m.def("_describe", [](const std::string& name) {
+    const OutputDescription d = describe_output(name);
+    return py::make_tuple(d.units, d.long_name);
+  });
+  m.def("_status_names", [] {
+    py::list names;
+    for (int k = 0; k <= static_cast<int>(CollisionStatus::failed); ++k)
+      names.append(to_string(static_cast<CollisionStatus>(k)));
+    return names;
+  });
+  m.def("_point_arguments", [] { return point_arguments(); });
+}

@@ -1,0 +1,106 @@
+#include "scene_args.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "sweetspot/impact/n2000_settings.hpp"
+#include "sweetspot/input_error.hpp"
+
+namespace py = pybind11;
+
+namespace sweetspot::python {
+
+namespace {
+
+const std::set<std::string>& known_arguments() {
+  static const std::set<std::string> names = {
+      "z",  "ball_speed", "cm_speed",    "center", "omega",          "e0",       "ball_mass", "ball_radius",
+      "k1", "a",          "pivot",       "modes",  "mode_tolerance", "accuracy", "integrator", "dt",
+      "tolerance", "window", "theory", "n2000"};
+  return names;
+}
+
+// The program's --modes: a count, "all" or "auto".
+int parse_modes(const py::handle& value) {
+  if (py::isinstance<py::str>(value)) {
+    const std::string text = value.cast<std::string>();
+    if (text == "all") return all_modes;
+    if (text == "auto") return auto_modes;
+  } else if (py::isinstance<py::int_>(value) && !py::isinstance<py::bool_>(value)) {
+    const long long n = value.cast<long long>();
+    if (n >= 0 && n <= 2 * max_slices) return static_cast<int>(n);
+  }
+  throw InputError("modes " + py::str(value).cast<std::string>() +
+                   ": expected a number of vibrational modes (0, 1, 2, ...), 'all' or 'auto'");
+}
+
+double number(const std::string& name, const py::handle& value) {
+  try {
+    return value.cast<double>();
+  } catch (const py::cast_error&) {
+    throw InputError(name + " " + py::str(value).cast<std::string>() + ": expected a number");
+  }
+}
+
+}  // namespace
+
+void set_point_argument(ImpactScene& s, int which, double v) {
+  switch (which) {
+    case 0: s.z = v; break;
+    case 1: s.ball_speed = v; break;
+    case 2: s.swing.cm_speed = v, s.swing.about_center = false; break;
+    case 3: s.swing.center = v, s.swing.about_center = true; break;
+    case 4: s.swing.omega = v; break;
+    case 5: s.ball.e0 = v; break;
+    case 6: s.ball.mass = v; break;
+    case 7: s.ball.radius = v; break;
+    case 8: s.ball.k1 = v; break;
+    default: s.ball.a = v; break;
+  }
+}
+
+SceneArgs scene_args(const py::dict& args, const std::set<std::string>& per_point) {
+  SceneArgs out;
+  ImpactScene& s = out.scene;
+  std::set<std::string> given = per_point;
+  for (const auto& [key, value] : args) {
+    const std::string name = key.cast<std::string>();
+    if (!known_arguments().contains(name)) throw py::type_error("unexpected keyword argument '" + name + "'");
+    if (!value.is_none()) given.insert(name);
+  }
+  auto has = [&](const char* name) { return given.contains(name) && !per_point.contains(name); };
+  auto get = [&](const char* name) { return args[name]; };
+
+  const auto& names = point_arguments();
+  for (std::size_t k = 0; k < names.size(); ++k)
+    if (has(names[k].c_str())) set_point_argument(s, static_cast<int>(k), number(names[k], get(names[k].c_str())));
+  if (!given.contains("z")) throw InputError("impact: z is required");
+  if (!given.contains("ball_speed")) throw InputError("impact: ball_speed is required");
+  const bool cm = given.contains("cm_speed"), center = given.contains("center");
+  if (!cm && !center) throw InputError("impact: give the swing as cm_speed or as center");
+  if (cm && center) throw InputError("impact: cm_speed excludes center: give the swing as one of them");
+  s.swing.about_center = center;
+
+  if (has("theory")) out.theory = parse_beam_theory(get("theory").cast<std::string>());
+  if (has("pivot")) s.pivoted = get("pivot").cast<bool>();
+  if (has("mode_tolerance")) s.mode_tolerance = number("mode_tolerance", get("mode_tolerance"));
+  if (has("accuracy")) s.accuracy = number("accuracy", get("accuracy"));
+  if (has("tolerance")) s.integrator.tolerance = number("tolerance", get("tolerance"));
+  if (has("window")) s.integrator.window = number("window", get("window"));
+  // As the program's --n2000: RK4 at 5 us and 18 modes unless integrator, dt or modes say otherwise.
+  const bool n2000 = has("n2000") && get("n2000").cast<bool>();
+  if (n2000 && !has("integrator")) s.integrator = with_n2000_settings(s.integrator);
+  if (has("integrator")) s.integrator.method = parse_method(get("integrator").cast<std::string>());
+  if (has("dt")) s.integrator.dt = number("dt", get("dt"));
+  else s.integrator.dt = default_step(s.integrator.method);
+  if (!(s.integrator.dt >= finest_step)) {
+    char text[160];
+    std::snprintf(text, sizeof text, "impact: dt %g: expected a step >= %g s (a finer one could take more than 1e7 "
+                  "steps per contact)", s.integrator.dt, finest_step);
+    throw InputError(text);
+  }
+  s.vibrational_modes = has("modes") ? parse_modes(get("modes")) : n2000 ? n2000_modes : auto_modes;
+  return out;
+}
+
+}  // namespace sweetspot::python

@@ -1,0 +1,146 @@
+"""sweetspot: the ball-bat collision (A. M. Nathan, Am. J. Phys. 68, 979 (2000)) from Python.
+
+    import sweetspot
+    bat = sweetspot.Bat.load("studies/bats/r161.toml")
+    r = sweetspot.impact(bat, z=0.7, ball_speed=40, cm_speed=10, omega=40)   # as `sweetspot impact --json`
+    ds = sweetspot.impacts(bat, z=np.linspace(0.4, 0.84, 45), ball_speed=40, cm_speed=10, omega=40)
+
+The physics is the C++ library's (the extension `_sweetspot`); this package gives the signatures,
+numpy broadcasting and the xarray datasets. Bad input raises ValueError with the program's message.
+"""
+import os
+import shutil
+import subprocess
+import tempfile
+import warnings
+from pathlib import Path
+
+import numpy as np
+
+from ._sweetspot import Bat, _describe, _impact, _impacts, _point_arguments, _status_names
+
+__all__ = ["Bat", "impact", "impacts", "run_study"]
+
+_POINT = tuple(_point_arguments())  # z, ball_speed, cm_speed, center, omega, e0, ball_mass, ...
+
+
+def _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, pivot, modes,
+           mode_tolerance, accuracy, integrator, dt, tolerance, window, theory, n2000):
+    return dict(z=z, ball_speed=ball_speed, cm_speed=cm_speed, center=center, omega=omega, e0=e0,
+                ball_mass=ball_mass, ball_radius=ball_radius, k1=k1, a=a, pivot=pivot, modes=modes,
+                mode_tolerance=mode_tolerance, accuracy=accuracy, integrator=integrator, dt=dt,
+                tolerance=tolerance, window=window, theory=theory, n2000=n2000)
+
+
+def impact(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, e0=None, ball_mass=None,
+           ball_radius=None, k1=None, a=None, pivot=False, modes=None, mode_tolerance=None, accuracy=None,
+           integrator=None, dt=None, tolerance=None, window=None, theory="timoshenko", n2000=False):
+    """One ball on one bat, as `sweetspot impact --json`: a dict with the same keys (status, z, vf,
+    e_eff, contact_time, collision_time, u_max, peak_force, impulse, bat_speed, e_a, bbcor, besr, bpf,
+    energy, mode_energy, modes_kept, modes_error, contacts), NaN where the JSON has null.
+
+    The swing is cm_speed (m/s) or center (m from the knob, the point at rest), with omega (rad/s).
+    None means the program's default: e0 0.5, exact stepping at 10 us, modes "auto" (a count, "all"
+    or "auto"); n2000=True takes RK4 at 5 us with 18 modes unless integrator, dt or modes are given.
+    The bat's modes are solved once per needed set and kept on the bat."""
+    result = _impact(bat, _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a,
+                                 pivot, modes, mode_tolerance, accuracy, integrator, dt, tolerance, window,
+                                 theory, n2000))
+    radius = 0.0366 if ball_radius is None else ball_radius
+    if result["u_max"] > radius:
+        warnings.warn(f"the ball compressed {1e3 * result['u_max']:.3g} mm, past its radius "
+                      f"{1e3 * radius:.3g} mm: the force law is not meant for that", RuntimeWarning, stacklevel=2)
+    return result
+
+
+def _attrs(name):
+    units, long_name = _describe(name)
+    return ({"units": units} if units else {}) | {"long_name": long_name}
+
+
+def _dims(arrays, shape):
+    """Each array argument's own axis when every one is 1-D along a distinct axis, else None."""
+    owner = {}
+    for name, value in arrays.items():
+        padded = (1,) * (len(shape) - value.ndim) + value.shape
+        varying = [k for k, n in enumerate(padded) if n != 1]
+        if len(varying) > 1:
+            return None
+        axis = varying[0] if varying else len(shape) - 1
+        if axis in owner:
+            return None
+        owner[axis] = name
+    return [owner[k] for k in range(len(shape))] if len(owner) == len(shape) else None
+
+
+def impacts(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, e0=None, ball_mass=None,
+            ball_radius=None, k1=None, a=None, pivot=False, modes=None, mode_tolerance=None, accuracy=None,
+            integrator=None, dt=None, tolerance=None, window=None, theory="timoshenko", n2000=False, threads=None):
+    """Many impacts at once: z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1
+    and a may be arrays, broadcast together as numpy does. Runs in C++ over OpenMP threads with the
+    GIL released (`threads` of them, default OpenMP's: OMP_NUM_THREADS or every core), each needed set of modes solved once. Returns an xarray.Dataset with a study
+    dataset's names, units and status flags: dims named after the array arguments when each is 1-D
+    along its own axis (z=np.linspace(...), ball_speed=v[:, None] gives dims (ball_speed, z)), else
+    one dim `point` with the arguments as coordinates over it."""
+    import xarray as xr
+
+    args = _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, pivot, modes,
+                  mode_tolerance, accuracy, integrator, dt, tolerance, window, theory, n2000)
+    arrays = {k: np.asarray(v, dtype=float) for k, v in args.items()
+              if k in _POINT and v is not None and np.ndim(v) > 0}
+    scalars = {k: v for k, v in args.items() if k not in arrays}
+    try:
+        shape = np.broadcast_shapes(*(v.shape for v in arrays.values())) if arrays else ()
+    except ValueError as e:
+        raise ValueError(f"impacts: arguments that do not broadcast together: {e}") from None
+    flat = {k: np.ascontiguousarray(np.broadcast_to(v, shape)).ravel() for k, v in arrays.items()}
+    out = _impacts(bat, scalars, flat, 0 if threads is None else int(threads))
+
+    dims = _dims(arrays, shape)
+    if dims is not None:
+        coords = {k: (k, arrays[k].ravel(), _attrs(k))
+                  for k in dims}
+        data_shape, data_dims = shape, tuple(dims)
+    else:
+        coords = {k: ("point", v, _attrs(k)) for k, v in flat.items()}
+        data_shape, data_dims = (int(np.prod(shape)),), ("point",)
+    data = {}
+    for name, values in out.items():
+        attrs = _attrs(name)
+        if name == "status":
+            names = _status_names()
+            attrs |= {"flag_values": np.arange(len(names), dtype=np.int32), "flag_meanings": " ".join(names)}
+        data[name] = (data_dims, values.reshape(data_shape), attrs)
+    attrs = {"bat": bat.name, "bat_slices": bat.slices}
+    attrs |= {f"scene_{k}": (v if not isinstance(v, bool) else int(v)) for k, v in scalars.items()
+              if v is not None and k not in _POINT}
+    attrs |= {f"scene_{k}": float(v) for k, v in scalars.items() if v is not None and k in _POINT}
+    return xr.Dataset(data, coords=coords, attrs=attrs)
+
+
+def _program():
+    here = Path(__file__).resolve().parent
+    for candidate in (here.parent.parent / "sweetspot", Path(os.environ.get("SWEETSPOT_PROGRAM", ""))):
+        if candidate.is_file() and os.access(candidate, os.X_OK):
+            return str(candidate)
+    found = shutil.which("sweetspot")
+    if not found:
+        raise RuntimeError("run_study: the sweetspot program was not found (set SWEETSPOT_PROGRAM)")
+    return found
+
+
+def run_study(path, output=None):
+    """Runs a study file with the program (`sweetspot run PATH -o OUTPUT --quiet`) and returns its
+    dataset, read into memory. output None: a temporary file, removed afterwards."""
+    import xarray as xr
+
+    with tempfile.TemporaryDirectory() as scratch:
+        out = output if output is not None else os.path.join(scratch, "study.h5")
+        run = subprocess.run([_program(), "run", str(path), "-o", str(out), "--quiet"],
+                             capture_output=True, text=True)
+        if run.returncode != 0:
+            lines = (run.stderr or run.stdout).strip().splitlines()
+            message = lines[-1] if lines else f"exit status {run.returncode}"
+            raise ValueError(message.removeprefix("sweetspot: error: ").removeprefix("sweetspot: "))
+        with xr.open_dataset(out, engine="h5netcdf") as ds:
+            return ds.load()

@@ -1,0 +1,179 @@
+"""The Python module against the program: impact equals `sweetspot impact --json` bit for bit,
+impacts broadcasts and equals single impacts, bad input is ValueError with the program's message,
+and two Python threads run impacts at once (the GIL released).
+
+    /usr/bin/python3 tests/check_python.py MODULE_DIR PROGRAM SOURCE_DIR BUILD_DIR WORK_DIR
+"""
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import threading
+import time
+
+module_dir, program, source, build, work = sys.argv[1:6]
+sys.path.insert(0, module_dir)
+import numpy as np  # noqa: E402
+import sweetspot  # noqa: E402
+
+BAT = f"{source}/studies/bats/r161.toml"
+failures = []
+
+
+def check(condition, what):
+    if not condition:
+        failures.append(what)
+        print("FAIL:", what)
+
+
+def same(a, b):
+    """Bitwise equality of a JSON value (null for non-finite) and the module's."""
+    if isinstance(a, dict):
+        return a.keys() == b.keys() and all(same(a[k], b[k]) for k in a)
+    if isinstance(a, list):
+        return len(a) == len(b) and all(same(x, y) for x, y in zip(a, b))
+    if a is None:
+        return isinstance(b, float) and not math.isfinite(b)
+    if isinstance(a, str):
+        return a == b
+    return b is not None and float(a) == float(b)
+
+
+def program_json(args):
+    run = subprocess.run([program, "impact", "--bat", BAT, "--json", *args], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    return json.loads(run.stdout)
+
+
+def program_error(args):
+    run = subprocess.run([program, "impact", "--bat", BAT, *args], capture_output=True, text=True)
+    assert run.returncode == 2, (run.returncode, run.stdout, run.stderr)
+    return run.stderr.strip()
+
+
+bat = sweetspot.Bat.load(BAT)
+check(bat.name == "R161" and bat.slices == 84 and abs(bat.length - 0.84) < 1e-12, "bat properties")
+modes = bat.modes(count=4)
+check(modes["frequencies_hz"].shape == (4,) and modes["shapes"].shape == (4, 84), "modes shapes")
+check(abs(modes["frequencies_hz"][0] - 174.6) < 0.5, f"f1 {modes['frequencies_hz'][0]}")
+check(len(modes["nodes_m"][0]) == 2, "two nodes of mode 1")
+
+# 1. impact == impact --json, bit for bit, key for key (arrays as lists).
+scenes = [
+    (["--z", "0.7", "--ball-speed", "40", "--cm-speed", "10", "--omega", "40"],
+     dict(z=0.7, ball_speed=40, cm_speed=10, omega=40)),
+    (["--z", "0.62", "--ball-speed", "31.3", "--center", "0.05", "--omega", "52", "--pivot", "--n2000", "--e0", "0.46"],
+     dict(z=0.62, ball_speed=31.3, center=0.05, omega=52, pivot=True, n2000=True, e0=0.46)),
+    (["--z", "0.8", "--ball-speed", "35", "--cm-speed", "5", "--modes", "12", "--integrator", "dopri"],
+     dict(z=0.8, ball_speed=35, cm_speed=5, modes=12, integrator="dopri")),
+]
+for args, kwargs in scenes:
+    expected = program_json(args)
+    got = sweetspot.impact(bat, **kwargs)
+    got = {k: (v.tolist() if isinstance(v, np.ndarray) else v) for k, v in got.items()}
+    check(list(expected) == list(got), f"keys {list(expected)} != {list(got)}")
+    for key in expected:
+        check(same(expected[key], got.get(key)), f"{' '.join(args)}: {key} {expected[key]!r} != {got.get(key)!r}")
+
+# 2. impacts: broadcasting (ball_speed down, z across) and equality with single impacts.
+z = np.array([0.5, 0.6, 0.7, 0.75, 0.8])
+v = np.array([30.0, 40.0, 50.0])
+ds = sweetspot.impacts(bat, z=z, ball_speed=v[:, None], cm_speed=10, omega=40, e0=0.5)
+check(ds.vf.dims == ("ball_speed", "z") and ds.vf.shape == (3, 5), f"dims {ds.vf.dims} {ds.vf.shape}")
+check(ds.vf.attrs.get("units") == "m/s" and "units" not in ds.status.attrs, "units as a study's")
+check(ds.status.attrs["flag_meanings"].split()[0] == "ok" and list(ds.status.attrs["flag_values"][:2]) == [0, 1],
+      "status flags")
+for i, speed in enumerate(v):
+    for j, zz in enumerate(z):
+        one = sweetspot.impact(bat, z=zz, ball_speed=speed, cm_speed=10, omega=40, e0=0.5)
+        for name in ("vf", "e_eff", "bat_speed", "e_a", "contact_time", "modes_error"):
+            check(ds[name].values[i, j] == one[name], f"impacts {name}[{i},{j}] {ds[name].values[i, j]} != {one[name]}")
+        check(ds.status.values[i, j] == 0 and ds.modes_kept.values[i, j] == len(one["modes_kept"]), "status, kept")
+zipped = sweetspot.impacts(bat, z=z, e0=np.linspace(0.4, 0.6, 5), ball_speed=40, cm_speed=10, omega=40)
+check(zipped.vf.dims == ("point",) and zipped.e0.dims == ("point",), f"zipped dims {zipped.vf.dims}")
+one = sweetspot.impact(bat, z=z[2], e0=0.5, ball_speed=40, cm_speed=10, omega=40)
+check(zipped.vf.values[2] == one["vf"], "zipped value")
+
+# 3. Bad input: ValueError with the program's message, nothing crashes.
+for args, kwargs in [(["--z", "2", "--ball-speed", "40", "--cm-speed", "10"], dict(z=2.0, ball_speed=40, cm_speed=10)),
+                     (["--z", "0.7", "--ball-speed", "40", "--cm-speed", "10", "--e0", "2"],
+                      dict(z=0.7, ball_speed=40, cm_speed=10, e0=2))]:
+    message = program_error(args)
+    try:
+        sweetspot.impact(bat, **kwargs)
+        check(False, f"no ValueError for {kwargs}")
+    except ValueError as e:
+        check(str(e) in message and "\n" not in str(e), f"message {e!r} not the program's {message!r}")
+for call in [lambda: sweetspot.Bat.load(f"{source}/studies/bats/no_such_bat.toml"),
+             lambda: sweetspot.impacts(bat, z=[0.7, 2.0], ball_speed=40, cm_speed=10),
+             lambda: sweetspot.impacts(bat, z=0.7, ball_speed=40, cm_speed=10, e0=[0.5, 2]),
+             lambda: sweetspot.impact(bat, z=0.7, ball_speed=40),
+             lambda: sweetspot.impact(bat, z=0.7, ball_speed=40, cm_speed=1, center=0.1),
+             lambda: sweetspot.impact(bat, z=0.7, ball_speed=40, cm_speed=1, modes="some"),
+             lambda: sweetspot.impact(bat, z=0.7, ball_speed=40, cm_speed=1, dt=1e-15),
+             lambda: sweetspot.impact(bat, z=0.7, ball_speed=40, cm_speed=1, integrator="euler"),
+             lambda: sweetspot.impact(bat, z=math.nan, ball_speed=40, cm_speed=1),
+             lambda: bat.modes(theory="string")]:
+    try:
+        call()
+        check(False, "no ValueError")
+    except ValueError as e:
+        print("ValueError:", e)
+
+# 4. The GIL released: two Python threads each run impacts; both finish with the same numbers.
+zs = np.linspace(0.45, 0.84, 3000)
+# OpenMP's threads per call, then one each: two one-thread calls on two cores take about as long as
+# one when the GIL is released, twice as long when it is not (printed, not asserted: shared machines).
+for threads in (None, 1):
+    start = time.perf_counter()
+    alone = sweetspot.impacts(bat, z=zs, ball_speed=40, cm_speed=10, omega=40, threads=threads)
+    t_one = time.perf_counter() - start
+    results = [None, None]
+
+    def run_in_thread(k):
+        results[k] = sweetspot.impacts(bat, z=zs, ball_speed=40, cm_speed=10, omega=40, threads=threads)
+
+    workers = [threading.Thread(target=run_in_thread, args=(k,)) for k in range(2)]
+    start = time.perf_counter()
+    for t in workers:
+        t.start()
+    for t in workers:
+        t.join()
+    t_two = time.perf_counter() - start
+    for r in results:
+        check(r is not None and np.array_equal(r.vf.values, alone.vf.values), "threaded impacts equal")
+    print(f"impacts over {zs.size} points, threads={threads}: {t_one:.3f} s alone, two Python threads at once "
+          f"{t_two:.3f} s ({t_two / t_one:.2f} x one call)")
+
+# 5. run_study equals `sweetspot run`, and impacts equals the study's points (the same modes solved).
+shutil.rmtree(work, ignore_errors=True)
+os.makedirs(work)
+study = f"{source}/studies/high_impact.toml"
+ds = sweetspot.run_study(study, output=f"{work}/module.h5")
+subprocess.run([program, "run", study, "-o", f"{work}/program.h5", "--quiet"], check=True)
+import xarray as xr  # noqa: E402
+with xr.open_dataset(f"{work}/program.h5", engine="h5netcdf") as reference:
+    for name in ("vf", "e_eff", "contact_time", "status", "frequency"):
+        check(np.array_equal(ds[name].values, reference[name].values, equal_nan=True), f"run_study {name}")
+points = sweetspot.impacts(bat, z=ds.z.values, ball_speed=40, center=0.09, omega=51, e0=0.5, modes=18)
+check(np.array_equal(points.vf.values, ds.vf.sel(modes=18).squeeze().values), "impacts == the study's points")
+try:
+    sweetspot.run_study(f"{source}/studies/no_such_study.toml")
+    check(False, "run_study of a missing file")
+except ValueError as e:
+    print("ValueError:", e)
+
+# 6. cmake --install puts the package under the prefix, where the interpreter imports it.
+prefix = f"{work}/prefix"
+subprocess.run(["cmake", "--install", build, "--prefix", prefix], check=True, capture_output=True)
+site = f"{prefix}/lib/python3/dist-packages"
+run = subprocess.run([sys.executable, "-c", "import sweetspot; print(sweetspot.__file__)"],
+                     env=os.environ | {"PYTHONPATH": site}, capture_output=True, text=True, cwd=work)
+check(run.returncode == 0 and run.stdout.startswith(site), f"installed package: {run.stdout} {run.stderr}")
+
+if failures:
+    print(f"{len(failures)} failures")
+    sys.exit(1)
+print("python module: all checks passed")
