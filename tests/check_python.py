@@ -1,6 +1,7 @@
 """The Python module against the program: impact equals `sweetspot impact --json` bit for bit,
 impacts broadcasts and equals single impacts, bad input is ValueError with the program's message,
-and two Python threads run impacts at once (the GIL released).
+two Python threads run impacts at once (the GIL released), bats from knots and dimensions are the
+bat files' bats, and certify equals `sweetspot certify --json`.
 
     /usr/bin/python3 tests/check_python.py MODULE_DIR PROGRAM SOURCE_DIR BUILD_DIR WORK_DIR
 """
@@ -165,7 +166,38 @@ try:
 except ValueError as e:
     print("ValueError:", e)
 
-# 6. cmake --install puts the package under the prefix, where the interpreter imports it.
+# 6. Bats as designs: from knots and from dimensions, their exact properties, and certify.
+rod = sweetspot.Bat.from_knots("rod", 0.84, [0, 0.84], [0.06, 0.06], material="maple", density=700)
+check(abs(rod.properties()["mass"] / (700 * math.pi * 0.03 ** 2 * 0.84) - 1) < 1e-12, "a 2-knot rod's mass")
+check(abs(rod.properties()["moi_cm"] / (rod.properties()["mass"] * (0.84 ** 2 / 12 + 0.03 ** 2 / 4)) - 1) < 1e-12,
+      "a 2-knot rod's MOI about its centre: M (L^2/12 + R^2/4)")
+file_271 = sweetspot.Bat.load(f"{source}/studies/bats/maple_271.toml")
+made_271 = sweetspot.Bat.from_dimensions("maple 271", 0.8382, knob_diameter=0.0505, knob_length=0.02,
+                                         handle_diameter=0.0238125, taper_start=0.3048, taper_end=0.6604,
+                                         barrel_diameter=0.0635, end="cupped", end_depth=0.0254)
+check(made_271.properties() == file_271.properties(), "from_dimensions is the bat file's maple 271")
+props = file_271.properties()
+check(abs(props["drop"] - (props["length"] / 0.0254 - props["mass"] / 0.028349523125)) < 1e-12, "drop")
+check(abs(props["moi_pivot"] - props["moi_cm"] - props["mass"] * (props["balance_point"] - 0.1524) ** 2) < 1e-15,
+      "moi_pivot by the parallel-axis theorem")
+for standard in ("bbcor", "besr"):
+    mine = sweetspot.certify(sweetspot.Bat.load(BAT), standard)
+    run = subprocess.run([program, "certify", BAT, "--standard", standard, "--json"], capture_output=True, text=True)
+    check(same(json.loads(run.stdout), mine), f"certify({standard}) equals sweetspot certify --json")
+for bad, what in ((lambda: sweetspot.Bat.from_knots("b", 0.84, [0, 0.9], [0.06, 0.06]), "beyond length"),
+                  (lambda: sweetspot.Bat.from_knots("b", 0.84, [0.5, 0.2], [0.06, 0.06]), "increasing"),
+                  (lambda: sweetspot.Bat.from_knots("b", 0.84, [0, 0.84], [0.06, 0.06], material="oak"), "oak"),
+                  (lambda: sweetspot.Bat.from_dimensions("b", 0.84, knob_diameter=0.05, knob_length=0.02,
+                                                         handle_diameter=0.024, taper_start=0.3, taper_end=0.6,
+                                                         barrel_diameter=0.02), "handle_diameter"),
+                  (lambda: sweetspot.certify(file_271, "asa"), "asa")):
+    try:
+        bad()
+        check(False, f"{what}: no ValueError")
+    except ValueError as e:
+        check(what in str(e), f"{what}: {e}")
+
+# 7. cmake --install puts the package under the prefix, where the interpreter imports it.
 prefix = f"{work}/prefix"
 subprocess.run(["cmake", "--install", build, "--prefix", prefix], check=True, capture_output=True)
 site = f"{prefix}/lib/python3/dist-packages"

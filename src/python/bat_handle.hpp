@@ -7,16 +7,22 @@
 #include <mutex>
 #include <tuple>
 
+#include <optional>
+
 #include "sweetspot/bat/bat.hpp"
+#include "sweetspot/bat/bat_design.hpp"
 #include "sweetspot/bat/modes.hpp"
 
 namespace sweetspot::python {
 
 class BatHandle {
  public:
-  explicit BatHandle(Bat bat) : bat_(std::move(bat)), mass_(mass_properties(bat_)) {}
+  // The bat, and the design it was built from (what certification and a designer's numbers read).
+  BatHandle(Bat bat, BatDesign design)
+      : bat_(std::move(bat)), design_(std::move(design)), mass_(mass_properties(bat_)) {}
 
   const Bat& bat() const { return bat_; }
+  const BatDesign& design() const { return design_; }
   const MassProperties& mass() const { return mass_; }
 
   // The basis of this request, solved on first use (outside the lock: two threads asking the same
@@ -35,6 +41,7 @@ class BatHandle {
  private:
   using Key = std::tuple<int, int, double>;
   Bat bat_;
+  BatDesign design_;
   MassProperties mass_;
   std::mutex mutex_;
   std::map<Key, std::shared_ptr<const ModalBasis>> cache_;

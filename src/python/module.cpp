@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "bat_design_bindings.hpp"
 #include "bat_handle.hpp"
 #include "scene_args.hpp"
 #include "sweetspot/bat/bat_file.hpp"
@@ -196,16 +197,11 @@ PYBIND11_MODULE(_sweetspot, m) {
     }
   });
 
-  py::class_<BatHandle, std::shared_ptr<BatHandle>>(m, "Bat")
+  py::class_<BatHandle, std::shared_ptr<BatHandle>> bat(m, "Bat");
+  bat
       .def_static("load", [](const std::filesystem::path& path, std::optional<int> slices) {
-            Bat bat = load_bat(path);
-            if (slices) {
-              if (*slices < min_slices || *slices > max_slices)
-                throw InputError("slices " + std::to_string(*slices) + ": expected " + std::to_string(min_slices) +
-                                 " to " + std::to_string(max_slices));
-              bat = resample(bat, *slices);
-            }
-            return std::make_shared<BatHandle>(std::move(bat));
+            BatSource source;
+            return make_bat(load_bat_design(path, source), slices);
           }, py::arg("path"), py::arg("slices") = py::none(),
           "A bat from its TOML file, cut into `slices` slices (default: its profile's own).")
       .def_property_readonly("name", [](const BatHandle& b) { return b.bat().name; })
@@ -232,6 +228,7 @@ PYBIND11_MODULE(_sweetspot, m) {
         return "<sweetspot.Bat '" + b.bat().name + "': " + std::to_string(b.bat().length) + " m, " +
                std::to_string(b.bat().slices()) + " slices>";
       });
+  bind_bat_design(m, bat);
 
   m.def("_impact", [](BatHandle& bat, const py::dict& args) {
     const SceneArgs scene = scene_args(args);

@@ -20,20 +20,6 @@ const std::set<std::string>& known_arguments() {
   return names;
 }
 
-// The program's --modes: a count, "all" or "auto".
-int parse_modes(const py::handle& value) {
-  if (py::isinstance<py::str>(value)) {
-    const std::string text = value.cast<std::string>();
-    if (text == "all") return all_modes;
-    if (text == "auto") return auto_modes;
-  } else if (py::isinstance<py::int_>(value) && !py::isinstance<py::bool_>(value)) {
-    const long long n = value.cast<long long>();
-    if (n >= 0 && n <= 2 * max_slices) return static_cast<int>(n);
-  }
-  throw InputError("modes " + py::str(value).cast<std::string>() +
-                   ": expected a number of vibrational modes (0, 1, 2, ...), 'all' or 'auto'");
-}
-
 double number(const std::string& name, const py::handle& value) {
   try {
     return value.cast<double>();
@@ -57,6 +43,19 @@ void set_point_argument(ImpactScene& s, int which, double v) {
     case 8: s.ball.k1 = v; break;
     default: s.ball.a = v; break;
   }
+}
+
+int parse_modes(const py::handle& value) {
+  if (py::isinstance<py::str>(value)) {
+    const std::string text = value.cast<std::string>();
+    if (text == "all") return all_modes;
+    if (text == "auto") return auto_modes;
+  } else if (py::isinstance<py::int_>(value) && !py::isinstance<py::bool_>(value)) {
+    const long long n = value.cast<long long>();
+    if (n >= 0 && n <= 2 * max_slices) return static_cast<int>(n);
+  }
+  throw InputError("modes " + py::str(value).cast<std::string>() +
+                   ": expected a number of vibrational modes (0, 1, 2, ...), 'all' or 'auto'");
 }
 
 SceneArgs scene_args(const py::dict& args, const std::set<std::string>& per_point) {

@@ -23,6 +23,9 @@ inline const std::vector<std::string>& point_arguments() {
 // called with the GIL released.
 void set_point_argument(ImpactScene& scene, int which, double value);
 
+// The program's --modes: a count, "all" or "auto"; throws InputError for anything else.
+int parse_modes(const pybind11::handle& value);
+
 struct SceneArgs {
   ImpactScene scene;
   BeamTheory theory = BeamTheory::timoshenko;

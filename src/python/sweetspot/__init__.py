@@ -17,9 +17,45 @@ from pathlib import Path
 
 import numpy as np
 
-from ._sweetspot import Bat, _describe, _impact, _impacts, _point_arguments, _status_names
+from ._sweetspot import Bat, _certify, _describe, _impact, _impacts, _point_arguments, _status_names
 
-__all__ = ["Bat", "impact", "impacts", "run_study"]
+__all__ = ["Bat", "impact", "impacts", "run_study", "certify"]
+
+
+def _from_knots(name, length, z, outer_diameter, inner_diameter=None, *, interpolation="linear", slices=None,
+                material="maple", density=None, youngs_modulus=None, shear_modulus=None, shear_coefficient=None):
+    """A bat from its diameters at knots (m from the knob), as a profile CSV with a z_m column gives
+    them: interpolation "linear" (frustums), "pchip" or "stepped"; `material` a wood preset, any
+    constant given beside it overriding the preset's; cut into `slices` (default about 1 cm each)."""
+    inner = None if inner_diameter is None else [float(d) for d in np.ravel(inner_diameter)]
+    return Bat._from_knots(name, float(length), [float(v) for v in np.ravel(z)],
+                           [float(d) for d in np.ravel(outer_diameter)], inner, interpolation, slices, material,
+                           dict(density=density, youngs_modulus=youngs_modulus, shear_modulus=shear_modulus,
+                                shear_coefficient=shear_coefficient))
+
+
+def _from_dimensions(name, length, *, knob_diameter, knob_length, handle_diameter, taper_start, taper_end,
+                     barrel_diameter, end="flat", end_depth=0.0, wall_thickness=0.0, slices=None, material="maple",
+                     density=None, youngs_modulus=None, shear_modulus=None, shear_coefficient=None):
+    """A bat from the named dimensions of a bat file's [dimensions] (README, "Bat files"), m."""
+    dimensions = dict(knob_diameter=knob_diameter, knob_length=knob_length, handle_diameter=handle_diameter,
+                      taper_start=taper_start, taper_end=taper_end, barrel_diameter=barrel_diameter,
+                      end_depth=end_depth, wall_thickness=wall_thickness)
+    return Bat._from_dimensions(name, float(length), {k: float(v) for k, v in dimensions.items()}, end, slices,
+                                material, dict(density=density, youngs_modulus=youngs_modulus,
+                                               shear_modulus=shear_modulus, shear_coefficient=shear_coefficient))
+
+
+Bat.from_knots = staticmethod(_from_knots)
+Bat.from_dimensions = staticmethod(_from_dimensions)
+
+
+def certify(bat, standard="bbcor", *, e0=None, ball_speed=None, pivot=None, modes="auto", theory="timoshenko"):
+    """The bat in the virtual test rig of a standard ("bbcor", "besr" or "bpf"), as `sweetspot
+    certify --json`: a dict with standard, z_max, e_a, the measure by its name, moi_pivot, mass,
+    drop, barrel_diameter, checks (rule, value, limit, pass) and pass. e0, ball_speed (m/s) and
+    pivot (m from the knob) override the standard's rig."""
+    return _certify(bat, standard, e0, ball_speed, pivot, modes, theory)
 
 _POINT = tuple(_point_arguments())  # z, ball_speed, cm_speed, center, omega, e0, ball_mass, ...
 
