@@ -26,7 +26,7 @@ struct BandedRequest {
 // solve at N = 84, 160 of 336 0.23 at N = 168; the banded cost grows by about 18 us (N = 84)
 // and 40 us (N = 168) per mode, so the two meet near 80 % of the modes at N = 84.
 // (Before the inline band LU and dsterf: 60 of 168 cost as much as all 168, and 0.3 was the limit.)
-inline constexpr double max_banded_share = 0.5;
+inline constexpr double max_banded_share = 0.75;
 
 // Ascending eigenvalues and M-normalised eigenvectors (columns) of the request. The two rigid
 // modes come out as round-off; the caller replaces them by the exact ones. False, with nothing
