@@ -60,6 +60,23 @@ double roundoff(const ModalBasis& full, int n) {
   return eps * top * top;
 }
 
+// Each solved mode of `part` is the dense solve's: its frequency to 1e-10 (or the round-off both
+// carry), its shape up to sign to 1e-8 (a shape errs by about that round-off over the relative gap
+// to its neighbours, >= 1 here), its nodes to 1e-8 of the length.
+void check_modes_match(const ModalBasis& part, const ModalBasis& full, double length) {
+  for (int n = 2; n < part.count(); ++n) {
+    INFO("mode " << n);
+    CHECK(std::abs(part.omega(n) / full.omega(n) - 1) <= 1e-10 + roundoff(full, n));
+    const double scale = full.psi.col(n).cwiseAbs().maxCoeff();
+    const double same = (part.psi.col(n) - full.psi.col(n)).cwiseAbs().maxCoeff();
+    const double flipped = (part.psi.col(n) + full.psi.col(n)).cwiseAbs().maxCoeff();
+    CHECK(std::min(same, flipped) <= (1e-8 + roundoff(full, n) / 10) * scale);
+    const std::vector<double> a = part.nodes(n), b = full.nodes(n);
+    REQUIRE(a.size() == b.size());
+    for (std::size_t k = 0; k < a.size(); ++k) CHECK(std::abs(a[k] - b[k]) <= 1e-8 * length);
+  }
+}
+
 }  // namespace
 
 TEST_CASE("The lowest modes of a partial solve are the dense solve's", "[partial_modes]") {
@@ -69,18 +86,7 @@ TEST_CASE("The lowest modes of a partial solve are the dense solve's", "[partial
     REQUIRE(part.count() == 20);
     CHECK_FALSE(part.complete());
     CHECK(part.solved_below == part.omega(19));
-    for (int n = 2; n < part.count(); ++n) {
-      INFO("mode " << n);
-      CHECK(std::abs(part.omega(n) / full.omega(n) - 1) <= 1e-10 + roundoff(full, n));
-      const double scale = full.psi.col(n).cwiseAbs().maxCoeff();
-      const double same = (part.psi.col(n) - full.psi.col(n)).cwiseAbs().maxCoeff();
-      const double flipped = (part.psi.col(n) + full.psi.col(n)).cwiseAbs().maxCoeff();
-      // A shape errs by about that round-off over the relative gap to its neighbours (>= 1 here).
-      CHECK(std::min(same, flipped) <= (1e-8 + roundoff(full, n) / 10) * scale);
-      const std::vector<double> a = part.nodes(n), b = full.nodes(n);
-      REQUIRE(a.size() == b.size());
-      for (std::size_t k = 0; k < a.size(); ++k) CHECK(std::abs(a[k] - b[k]) <= 1e-8 * bat.length);
-    }
+    check_modes_match(part, full, bat.length);
   }
 }
 
@@ -266,13 +272,6 @@ TEST_CASE("A partial solve of most of the modes is still the dense solve's", "[p
     REQUIRE(part.count() == 112);
     const Eigen::MatrixXd gram = part.vectors.transpose() * beam_mass_matrix(bat, BeamTheory::timoshenko) * part.vectors;
     CHECK((gram - Eigen::MatrixXd::Identity(112, 112)).cwiseAbs().maxCoeff() < 1e-12);
-    for (int n = 2; n < part.count(); ++n) {
-      INFO("mode " << n);
-      CHECK(std::abs(part.omega(n) / full.omega(n) - 1) <= 1e-10 + roundoff(full, n));
-      const double scale = full.psi.col(n).cwiseAbs().maxCoeff();
-      const double same = (part.psi.col(n) - full.psi.col(n)).cwiseAbs().maxCoeff();
-      const double flipped = (part.psi.col(n) + full.psi.col(n)).cwiseAbs().maxCoeff();
-      CHECK(std::min(same, flipped) <= (1e-8 + roundoff(full, n) / 10) * scale);
-    }
+    check_modes_match(part, full, bat.length);
   }
 }
