@@ -29,6 +29,19 @@ double knob_moi(const std::string& file) {
 
 std::string refusal(const std::string& scene) { return study_refusal(StudyDir(3, scene).study); }
 
+// N2000's high-impact swing (51 rad/s about 9 cm from the knob), a 38 m/s pitch, asking for the
+// linear batted-ball speed with e_A taken at `e_a_speed`.
+ImpactScene swung_scene(double z, int modes, double e_a_speed) {
+  ImpactScene scene;
+  scene.z = z;
+  scene.ball_speed = 38;
+  scene.swing = {51, true, 0, 0.09};
+  scene.vibrational_modes = modes;
+  scene.linear_batted_ball = true;
+  scene.e_a_speed = e_a_speed;
+  return scene;
+}
+
 }  // namespace
 
 TEST_CASE("An equal-effort swing scales as the knob MOI to the power -n, and keeps the reference's", "[swing]") {
@@ -70,13 +83,7 @@ TEST_CASE("The linear batted-ball speed is the rigid bat's exactly", "[swing]") 
   const ModalBasis basis = compute_modes(r161(), BeamTheory::timoshenko, ModeRequest::rigid_only());
   for (const double z : {0.5, 0.683, 0.8})
     for (const double e_a_speed : {20.0, lab_e_a_speed}) {
-      ImpactScene scene;
-      scene.z = z;
-      scene.ball_speed = 38;
-      scene.swing = {51, true, 0, 0.09};
-      scene.vibrational_modes = 0;
-      scene.linear_batted_ball = true;
-      scene.e_a_speed = e_a_speed;
+      ImpactScene scene = swung_scene(z, 0, e_a_speed);
       scene.integrator.dt = 2e-6;  // e_A from a collision at another speed: integrated finely, both
       const ImpactResult r = simulate_impact(basis, scene);
       REQUIRE(r.status == CollisionStatus::ok);
@@ -87,19 +94,14 @@ TEST_CASE("The linear batted-ball speed is the rigid bat's exactly", "[swing]") 
 TEST_CASE("With e_A at the collision's relative speed the linear rule is the flexible bat's too", "[swing]") {
   const ModalBasis basis = compute_modes(r161(), BeamTheory::timoshenko, ModeRequest::lowest(18));
   for (const double z : {0.55, 0.683, 0.78}) {
-    ImpactScene scene;
-    scene.z = z;
-    scene.ball_speed = 38;
-    scene.swing = {51, true, 0, 0.09};
-    scene.vibrational_modes = 18;
-    scene.linear_batted_ball = true;
-    scene.e_a_speed = 38 + 51 * (z - 0.09);
-    const ImpactResult r = simulate_impact(basis, scene);
+    const ImpactResult r = simulate_impact(basis, swung_scene(z, 18, 38 + 51 * (z - 0.09)));
     REQUIRE(r.status == CollisionStatus::ok);
     CHECK(r.bbs_linear == Approx(r.vf).epsilon(1e-9));
-    // Taken at the lab's 136 mph instead, e_A differs from the game's: the rule errs a little.
-    scene.e_a_speed = lab_e_a_speed;
-    CHECK(std::abs(simulate_impact(basis, scene).bbs_linear / r.vf - 1) < 0.05);
+    // Taken at the lab's 136 mph instead, a flexible bat's e_A is not the game's: the rule errs,
+    // by far more than the integration but by little.
+    const double error = std::abs(simulate_impact(basis, swung_scene(z, 18, lab_e_a_speed)).bbs_linear / r.vf - 1);
+    CHECK(error > 1e-6);
+    CHECK(error < 0.05);
   }
 }
 
