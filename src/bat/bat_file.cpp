@@ -491,9 +491,4 @@ Bat load_bat(const std::filesystem::path& toml_path, BatSource& source) {
   return build_bat(load_bat_design(toml_path, source));
 }
 
-std::filesystem::path profile_path(const std::filesystem::path& toml_path) {
-  const toml::table doc = parse_toml(toml_path, read_text(toml_path));
-  return profile_path(toml_path, Section{toml_path, doc, ""});
-}
-
 }  // namespace sweetspot

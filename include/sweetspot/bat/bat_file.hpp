@@ -21,12 +21,6 @@ struct BatSource {
   std::string toml_text, profile_text;
 };
 
-// The profile CSV a bat file names, resolved against the bat file's directory as load_bat does
-// (a run must know every file it reads: none may be its output, and all key its journal).
-// An empty path for a bat of [dimensions], which names no profile. Throws InputError as load_bat
-// does when the bat file or its key 'profile' is unreadable.
-std::filesystem::path profile_path(const std::filesystem::path& toml_path);
-
 // As load_bat, and fills `source` with the texts the bat was built from.
 Bat load_bat(const std::filesystem::path& toml_path, BatSource& source);
 
