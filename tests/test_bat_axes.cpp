@@ -92,7 +92,8 @@ TEST_CASE("A bat's mass goes as its density and its frequencies as sqrt(E / rho)
 
 TEST_CASE("The drop is the length in inches less the weight in ounces", "[bat_axes]") {
   CHECK(bat_drop(33 * 0.0254, 30 * 0.028349523125) == Approx(3).epsilon(1e-12));
-  CHECK(bat_drop(0.84, 0.885) == Approx(0.84 / 0.0254 - 0.885 / 0.028349523125).epsilon(1e-15));
+  CHECK(std::abs(bat_drop(34 * 0.0254, 34 * 0.028349523125)) < 1e-12);  // a 34-in, 34-oz bat: drop 0
+  CHECK(bat_drop(32 * 0.0254, 31 * 0.028349523125) == Approx(1).epsilon(1e-12));  // a "-1" bat
 }
 
 TEST_CASE("An impossible bat is refused before any work, naming the axis, the value and the rule", "[bat_axes]") {
