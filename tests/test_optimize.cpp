@@ -84,7 +84,11 @@ std::string read(const std::string& path) {
 
 TEST_CASE("optimize finds the closed-form best density of a rigid bat swung with equal effort", "[optimize]") {
   TempDir dir;
-  const OptimizationProblem problem = load_optimization(dir.write("opt.toml", density_problem()));
+  const std::string algorithm = GENERATE("cobyla", "bobyqa", "mlsl");
+  INFO(algorithm);
+  std::string text = density_problem();
+  text.replace(text.find("xtol_rel"), 0, "algorithm = \"" + algorithm + "\"\n");
+  const OptimizationProblem problem = load_optimization(dir.write("opt.toml", text));
   const double rho0 = problem.base.material.density;
   const RigidFamily family = rigid_family(problem.base);
   const double best = rho0 * family.best_scale(100 / rho0, 3000 / rho0);
@@ -121,6 +125,24 @@ TEST_CASE("optimize meets an active mass window at its edge within the tolerance
   CHECK(mass <= limit * (1 + 1e-7));  // met within its tolerance
   CHECK(found.x[0] == Approx(0.8 * best_free).epsilon(1e-4));
   CHECK(feasible(problem, found));
+}
+
+TEST_CASE("optimize's spread of impact points is the normal distribution's Gauss-Hermite rule", "[optimize]") {
+  TempDir dir;
+  std::string text = density_problem();
+  const std::string one_point = "points = [0.7]\nweights = [1]";
+  text.replace(text.find(one_point), one_point.size(), "spread = { mean = 0.7, sigma = 0.03, points = 6 }");
+  const ObjectiveSpec o = load_optimization(dir.write("opt.toml", text)).objective;
+  REQUIRE(o.z.size() == 6);
+  // n points integrate polynomials to degree 2n - 1 exactly: the normal's moments up to the 11th
+  // (odd ones 0, E[(z - mean)^(2k)] = sigma^(2k) (2k - 1)!!).
+  double double_factorial = 1;
+  for (int k = 0; k <= 11; ++k) {
+    double moment = 0;
+    for (std::size_t i = 0; i < o.z.size(); ++i) moment += o.weights[i] * std::pow((o.z[i] - 0.7) / 0.03, k);
+    if (k >= 2 && k % 2 == 0) double_factorial *= k - 1;
+    CHECK(moment == Approx(k % 2 ? 0.0 : double_factorial).margin(1e-9));
+  }
 }
 
 TEST_CASE("optimize's best design is written as a bat file that reads back as the design", "[optimize]") {
@@ -220,6 +242,12 @@ TEST_CASE("optimize killed mid-run resumes to the same best design, and 2 ranks 
   // The same best design and comment (objective to 17 digits, its evaluation and the count).
   std::string resumed_best = read(dir / "killed_best.toml"), whole_best = best;
   CHECK(resumed_best == whole_best);
+
+  const ProgramRun plot = run_command(std::string(python) + " " + source_path("scripts/plot_optimization.py") + " " +
+                                      dir / "whole.h5" + " " + dir / "whole.png");
+  INFO(plot.output);
+  CHECK(plot.exit_code == 0);
+  CHECK(std::filesystem::file_size(dir / "whole.png") > 10000);
 
   const ProgramRun two = run_program_mpi(2, 1, "optimize " + opt.string() + " -o " + dir / "two.h5 --quiet");
   INFO(two.output);

@@ -79,11 +79,11 @@ nlopt::opt algorithm(const OptimizationProblem& problem) {
     if (!problem.constraints.empty()) outer.set_local_optimizer(bobyqa);
     return outer;
   }
-  // MLSL: local searches from low-discrepancy (Sobol) starts; it never converges by itself, so
-  // each of its runs has a quarter of the budget.
+  // MLSL: local searches from low-discrepancy (Sobol) starts. It never converges by itself: its
+  // run takes the whole budget.
   nlopt::opt mlsl(nlopt::GN_MLSL_LDS, n);
   mlsl.set_local_optimizer(bobyqa);
-  mlsl.set_maxeval(std::max(1, s.max_evaluations / 4));
+  mlsl.set_maxeval(s.max_evaluations);
   local_stop(mlsl, s);
   if (problem.constraints.empty()) return mlsl;
   nlopt::opt auglag(nlopt::AUGLAG, n);
