@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "sweetspot/impact/bat_test_rig.hpp"
 #include "sweetspot/impact/equal_effort.hpp"
 #include "sweetspot/impact/impact.hpp"
 #include "sweetspot/impact/scan_maximum.hpp"
@@ -120,12 +121,40 @@ double shape_quantity(Quantity q, const BatDesign& design, const MassProperties&
   throw std::logic_error("shape_quantity: the rig's measure is no number of the shape");
 }
 
-ModalBasis design_modes(const OptimizationProblem& problem, const BatDesign& design) {
-  Bat bat = build_bat(design);
-  if (problem.model.slices > 0) bat = resample(bat, problem.model.slices);
-  // One basis for every impact and rig hit: all modes, unless none is kept.
-  return compute_modes(bat, problem.model.theory,
-                       problem.model.vibrational_modes == 0 ? ModeRequest::rigid_only() : ModeRequest::all());
+// The impact points an evaluation strikes at its scan's samples (the golden section's points
+// lie between them), and the rig's hits when a constraint asks for its measure.
+std::vector<ImpactScene> sampled_scenes(const OptimizationProblem& problem, const ImpactScene& scene, double length) {
+  const ObjectiveSpec& o = problem.objective;
+  std::vector<ImpactScene> scenes;
+  for (const double z : o.kind == ObjectiveKind::mean_bbs ? o.z : scan_points(o.z_from, o.z_to, o.z_step)) {
+    scenes.push_back(scene);
+    scenes.back().z = z;
+  }
+  if (std::ranges::any_of(problem.constraints, [](const Constraint& c) { return c.quantity == Quantity::measure; })) {
+    const RigSettings rig = certification_rig(problem.standard, problem.rig, length);
+    const BarrelScan& scan = problem.rig.scan;
+    for (const double z : scan_points(length - scan.far_from_end, length - scan.near_end, scan.step))
+      scenes.push_back(rig_scene(rig, z));
+  }
+  return scenes;
+}
+
+// One basis for every impact and rig hit of the design: the rigid modes alone, a fixed count, all
+// modes, or (auto) every mode below the largest reach any sampled scene asks, as a study's cache
+// solves it (a partial solve: most of an evaluation's cost is this eigen-solve).
+ModalBasis design_modes(const OptimizationProblem& problem, const Bat& bat, const std::vector<ImpactScene>& scenes) {
+  const int modes = problem.model.vibrational_modes;
+  if (modes == 0) return compute_modes(bat, problem.model.theory, ModeRequest::rigid_only());
+  if (modes == all_modes) return compute_modes(bat, problem.model.theory, ModeRequest::all());
+  if (modes != auto_modes) return compute_modes(bat, problem.model.theory, ModeRequest::lowest(modes));
+  const ModalBasis rigid = compute_modes(bat, problem.model.theory, ModeRequest::rigid_only());
+  ModeRequest request = ModeRequest::below(0);
+  for (const ImpactScene& s : scenes) {
+    const ModeRequest asked = auto_mode_request(s, rigid);
+    if (asked.is_all()) return compute_modes(bat, problem.model.theory, ModeRequest::all());
+    request.below_omega = std::max(request.below_omega, asked.below_omega);
+  }
+  return compute_modes(bat, problem.model.theory, request);
 }
 
 }  // namespace
@@ -149,12 +178,14 @@ DesignEvaluation evaluate_design(const OptimizationProblem& problem, const std::
     for (std::size_t i = 0; i < problem.constraints.size(); ++i)
       if (problem.constraints[i].quantity != Quantity::measure)
         e.constraints[i] = shape_quantity(problem.constraints[i].quantity, design, exact);
-    const ModalBasis basis = design_modes(problem, design);
     ImpactScene scene;
     scene.ball.e0 = problem.player.e0;
     scene.ball_speed = problem.player.ball_speed;
     scene.swing = design_swing(problem.player, exact);
     scene.vibrational_modes = problem.model.vibrational_modes;
+    Bat bat = build_bat(design);
+    if (problem.model.slices > 0) bat = resample(bat, problem.model.slices);
+    const ModalBasis basis = design_modes(problem, bat, sampled_scenes(problem, scene, design.length));
     e.objective = objective_value(problem, basis, scene, map);
     const auto measure = std::ranges::find(problem.constraints, Quantity::measure, &Constraint::quantity);
     if (measure != problem.constraints.end())
