@@ -261,3 +261,34 @@ TEST_CASE("optimize killed mid-run resumes to the same best design, and 2 ranks 
   INFO(same.output);
   CHECK(same.output == "True True\n");
 }
+
+TEST_CASE("every shipped optimisation loads, and its start design is feasible", "[optimize]") {
+  int found = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(source_path("studies"))) {
+    if (!entry.path().filename().string().starts_with("optimize_")) continue;
+    INFO(entry.path());
+    ++found;
+    const OptimizationProblem problem = load_optimization(entry.path());
+    CHECK(problem.text.starts_with('#'));  // each says what it searches for
+    std::vector<double> start;
+    for (const FreeParameter& p : problem.free) start.push_back(p.start);
+    const DesignEvaluation e = evaluate_design(problem, start, serial_map);
+    INFO(e.message);
+    CHECK(e.status == EvaluationStatus::ok);
+    CHECK(feasible(problem, e));
+  }
+  CHECK(found >= 1);
+  // The README's study: five dimensions of a 33-in maple, BBCOR and drop constrained, the sweet
+  // spot's width at equal effort.
+  const OptimizationProblem maple = load_optimization(source_path("studies/optimize_maple.toml"));
+  CHECK(maple.free.size() == 5);
+  CHECK(maple.base.length == Approx(33 * 0.0254));
+  CHECK(maple.base.material_name == "maple");
+  CHECK(maple.player.equal_effort);
+  CHECK(maple.objective.kind == ObjectiveKind::sweet_spot_width);
+  std::vector<std::string> labels;
+  for (const Constraint& c : maple.constraints) labels.push_back(c.label());
+  CHECK(std::ranges::count(labels, "bbcor_max") == 1);
+  CHECK(std::ranges::count(labels, "drop_max") == 1);
+  CHECK(std::ranges::count(labels, "drop_min") == 1);
+}
