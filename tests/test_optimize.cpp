@@ -197,6 +197,9 @@ TEST_CASE("optimize writes every evaluation and the best bat, which certify acce
   simplex.replace(simplex.find("xtol_rel"), 0, "algorithm = \"simplex\"\n");
   refused(simplex, {"optimizer.algorithm", "simplex", "cobyla"});
   refused(density_problem() + "[objective]\n", {"objective"});
+  std::string too_many = density_problem();
+  too_many.replace(too_many.find("modes = 0"), 9, "modes = 500");
+  refused(too_many, {"model.modes", "500", "at most the"});
   refused("bat = \"" + source_path("studies/bats/r161.toml") + "\"\n[free]\ndensity = { min = 500, max = 900 }\n",
           {"bat", "profile", "[dimensions]"});
   std::string no_scan = density_problem();

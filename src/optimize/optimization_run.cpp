@@ -167,8 +167,8 @@ class JournaledEvaluator {
     const std::string what = fmt::format("evaluation {}:{} -> {} {:.6g} ({})", index, design, to_string(problem_.objective.kind),
                                          e.objective, e.status != EvaluationStatus::ok ? e.message
                                                                        : feasible(problem_, e) ? "feasible" : "infeasible");
-    if (verbosity_ == Verbosity::verbose) spdlog::info("{}", what);
-    else spdlog::debug("{}", what);
+    // Every evaluation when verbose; otherwise every 25th, so that a long search shows progress.
+    if (verbosity_ == Verbosity::verbose || index % 25 == 0) spdlog::info("{}", what);
   }
 
   const OptimizationProblem& problem_;

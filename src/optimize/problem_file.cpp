@@ -215,6 +215,25 @@ ModelSettings read_model(const Where& top, const toml::table& doc) {
   return m;
 }
 
+// The model must serve the shortest design (fewest slices when they are about 1 cm each): its
+// slicing and theory, and a count of modes it has.
+void check_model(const Where& top, const toml::table& doc, const OptimizationProblem& problem, double length) {
+  const Where at{top.file, "model", doc.get("model") ? doc.get("model")->source().begin.line : 0};
+  BatDesign shortest = problem.base;
+  set_design_parameter(shortest, "length", length);
+  int modes = 0;
+  try {
+    Bat bat = build_bat(shortest);
+    if (problem.model.slices > 0) bat = resample(bat, problem.model.slices);
+    modes = static_cast<int>(compute_modes(bat, problem.model.theory, ModeRequest::rigid_only()).vectors.rows()) - 2;
+  } catch (const InputError& e) {
+    reject(at, "{...}", std::string("cannot model the shortest design: ") + e.what());
+  }
+  if (problem.model.vibrational_modes > modes)
+    reject(at.child("modes", *doc["model"]["modes"].node()), std::to_string(problem.model.vibrational_modes),
+           "expected at most the " + std::to_string(modes) + " vibrational modes of the shortest design, \"all\" or \"auto\"");
+}
+
 // ---- [objective] ---------------------------------------------------------------------------
 
 // The shortest design in the box: every impact point must lie on it.
@@ -440,6 +459,7 @@ OptimizationProblem load_optimization(const fs::path& file) {
   problem.player = read_player(top, doc, problem);
   problem.model = read_model(top, doc);
   const double length = shortest_length(problem);
+  check_model(top, doc, problem, length);
   problem.objective = read_objective(top, doc, length);
   problem.rig.vibrational_modes = problem.model.vibrational_modes;
   problem.rig.slices = problem.model.slices;
