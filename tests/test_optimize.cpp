@@ -171,6 +171,9 @@ TEST_CASE("optimize writes every evaluation and the best bat, which certify acce
   const ProgramRun certified = run_program("certify " + dir / "out_best.toml --json");
   INFO(certified.output);
   CHECK(certified.exit_code == 0);
+  const ProgramRun struck = run_program("impact --bat " + dir / "out_best.toml" + " --z 0.7 --ball-speed 40 --center 0.09 --omega 51");
+  INFO(struck.output);
+  CHECK(struck.exit_code == 0);
   const ProgramRun check = run_command(std::string(python) + " -c \"import h5py; f = h5py.File('" + dir / "out.h5" +
                                        "'); b = int(f['best_evaluation'][()]); print(f['design'].shape[0], b, "
                                        "f['feasible'][b], f['design'][b, 0] == f['best_design'][0], "
