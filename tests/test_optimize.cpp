@@ -15,6 +15,7 @@
 #include "program.hpp"
 #include "refusal.hpp"
 #include "sweetspot/bat/bat_design_text.hpp"
+#include "sweetspot/impact/certification.hpp"
 #include "sweetspot/impact/formulas.hpp"
 #include "sweetspot/optimize/optimizer.hpp"
 #include "temp_dir.hpp"
@@ -297,4 +298,28 @@ TEST_CASE("every shipped optimisation loads, and its start design is feasible", 
   CHECK(std::ranges::count(labels, "bbcor_max") == 1);
   CHECK(std::ranges::count(labels, "drop_max") == 1);
   CHECK(std::ranges::count(labels, "drop_min") == 1);
+}
+
+TEST_CASE("optimize's BBCOR constraint is certify's maximum over the barrel, and the rules are certify's", "[optimize]") {
+  TempDir dir;
+  const auto file = dir.write(
+      "opt.toml", "bat = \"" + maple + "\"\n[free]\nbarrel_diameter = { min = 0.0603, max = 0.0667 }\n"
+                  "[player]\ncenter = 0.09\nomega = 51\nball_speed = 40\n[objective]\nmaximize = \"peak_bbs\"\n"
+                  "z = { start = 0.55, stop = 0.80, step = 0.01 }\n[constraints]\nstandard = \"bbcor\"\n");
+  const OptimizationProblem problem = load_optimization(file);
+  const DesignEvaluation e = evaluate_design(problem, {0.0655}, serial_map);
+  REQUIRE(e.status == EvaluationStatus::ok);
+  const Certification c = certify(design_at(problem, {0.0655}), problem.standard, CertifyOptions{});
+  std::vector<std::string> labels;
+  for (const Constraint& k : problem.constraints) labels.push_back(k.label());
+  CHECK(labels == std::vector<std::string>{"bbcor_max", "barrel_diameter_max", "drop_max", "length_max"});
+  // The optimiser solves the modes its impacts ask (auto, a partial solve), certify all of them:
+  // the measure agrees to the auto modes' stated error.
+  CHECK(e.constraints[0] == Approx(c.measure).epsilon(1e-5));
+  for (std::size_t i = 1; i < c.checks.size(); ++i) {
+    INFO(c.checks[i].rule);
+    CHECK(e.constraints[i] == c.checks[i].value);
+    CHECK(problem.constraints[i].limit == c.checks[i].limit);
+  }
+  CHECK(feasible(problem, e) == c.pass);
 }
