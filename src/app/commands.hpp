@@ -14,6 +14,7 @@ void add_toy_command(CLI::App& app);
 void add_run_command(CLI::App& app);
 void add_convergence_command(CLI::App& app);
 void add_certify_command(CLI::App& app);
+void add_optimize_command(CLI::App& app);
 
 // --modes: a number of vibrational modes, "all" or "auto"; InputError naming --modes otherwise.
 int parse_modes(const std::string& text);

@@ -13,12 +13,8 @@ struct Sample {
 };
 
 std::vector<Sample> uniform_scan(const std::function<double(double)>& f, double from, double to, double step) {
-  const int intervals = std::max(1, static_cast<int>(std::ceil((to - from) / step - 1e-9)));
   std::vector<Sample> samples;
-  for (int i = 0; i <= intervals; ++i) {
-    const double x = i == intervals ? to : from + i * step;
-    samples.push_back({x, f(x)});
-  }
+  for (const double x : scan_points(from, to, step)) samples.push_back({x, f(x)});
   return samples;
 }
 
@@ -48,6 +44,13 @@ void golden_section(const std::function<double(double)>& f, double a, double b, 
 }
 
 }  // namespace
+
+std::vector<double> scan_points(double from, double to, double step) {
+  const int intervals = std::max(1, static_cast<int>(std::ceil((to - from) / step - 1e-9)));
+  std::vector<double> points;
+  for (int i = 0; i <= intervals; ++i) points.push_back(i == intervals ? to : from + i * step);
+  return points;
+}
 
 ScanMaximum scan_maximum(const std::function<double(double)>& f, double from, double to, double step,
                          double tolerance) {

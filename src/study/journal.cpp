@@ -66,14 +66,20 @@ std::uint64_t word_at(const char* bytes) {
 
 }  // namespace
 
-JournalKey journal_key(const Study& study, std::uint64_t width) {
-  // The bats' texts as the study read them, which its points are computed from: a file edited
+JournalKey journal_key(const std::string& text, const std::vector<BatSource>& sources, std::uint64_t points,
+                       std::uint64_t width) {
+  // The bats' texts as the run read them, which its results are computed from: a file edited
   // since is no part of this run.
   Checksum inputs;
-  for (const BatSource& source : study.bat_sources) inputs.add(source.toml_text).add(source.profile_text);
-  inputs.add(study.reference_source.toml_text).add(study.reference_source.profile_text);
-  return {Checksum().add(study.text).value, inputs.value,
-          Checksum().add(std::string(version) + " (" + git_commit + ")").value, study.points(), width};
+  for (const BatSource& source : sources) inputs.add(source.toml_text).add(source.profile_text);
+  return {Checksum().add(text).value, inputs.value, Checksum().add(std::string(version) + " (" + git_commit + ")").value,
+          points, width};
+}
+
+JournalKey journal_key(const Study& study, std::uint64_t width) {
+  std::vector<BatSource> sources = study.bat_sources;
+  sources.push_back(study.reference_source);
+  return journal_key(study.text, sources, study.points(), width);
 }
 
 Journal::Journal(const fs::path& path, const JournalKey& key, bool resume, const RowCheck& check)

@@ -40,6 +40,10 @@ struct JournalKey {
 // The key of `study` with rows of `width` values; reads every bat file and profile again (throws
 // InputError if one has become unreadable).
 JournalKey journal_key(const Study& study, std::uint64_t width);
+// The key of any run read from one file (`text`) and the bats it names (`sources`, as read),
+// with `points` rows of `width` values: what the optimiser's journal is keyed on.
+JournalKey journal_key(const std::string& text, const std::vector<BatSource>& sources, std::uint64_t points,
+                       std::uint64_t width);
 
 // Why a recovered row cannot be kept (e.g. a status outside the enumeration), or "" to keep it.
 using RowCheck = std::function<std::string(const double* row)>;

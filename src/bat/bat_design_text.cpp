@@ -1,0 +1,57 @@
+#include "sweetspot/bat/bat_design_text.hpp"
+
+#include <cstdio>
+#include <sstream>
+#include <stdexcept>
+
+namespace sweetspot {
+
+namespace {
+
+// 17 significant digits: the double itself comes back when the file is read.
+std::string exact(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", x);
+  return text;
+}
+
+// A TOML basic string.
+std::string quoted(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (c == '\n') {
+      out += "\\n";
+      continue;
+    }
+    out += c;
+  }
+  return out + "\"";
+}
+
+}  // namespace
+
+std::string bat_design_text(const BatDesign& design, const std::string& comment) {
+  if (!design.dimensions) throw std::invalid_argument("bat_design_text: the design has no [dimensions] to write");
+  std::ostringstream out;
+  std::istringstream lines(comment);
+  for (std::string line; std::getline(lines, line);) out << "# " << line << "\n";
+  out << "name = " << quoted(design.name) << "\n";
+  out << "length = " << exact(design.length) << "  # m\n";
+  if (design.slices) out << "slices = " << *design.slices << "\n";
+  out << "\n[material]\n";
+  if (!design.material_name.empty()) out << "preset = " << quoted(design.material_name) << "\n";
+  const Material& m = design.material;
+  out << "density = " << exact(m.density) << "  # kg/m^3\n"
+      << "youngs_modulus = " << exact(m.youngs_modulus) << "  # Pa\n"
+      << "shear_modulus = " << exact(m.shear_modulus) << "  # Pa\n"
+      << "shear_coefficient = " << exact(m.shear_coefficient) << "\n";
+  out << "\n[dimensions]  # m\n";
+  const Dimensions& d = *design.dimensions;
+  for (const DimensionField& f : dimension_fields)
+    if (!f.optional || d.*f.value > 0) out << f.name << " = " << exact(d.*f.value) << "\n";
+  out << "end = " << quoted(to_string(d.end)) << "\n";
+  return out.str();
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,217 @@
+#include "sweetspot/optimize/evaluation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "sweetspot/impact/bat_test_rig.hpp"
+#include "sweetspot/impact/equal_effort.hpp"
+#include "sweetspot/impact/impact.hpp"
+#include "sweetspot/impact/scan_maximum.hpp"
+#include "sweetspot/study/sweet_spot.hpp"
+
+namespace sweetspot {
+
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+// Thrown inside an evaluation for a design that cannot be scored; becomes its status.
+struct Unscorable : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Values at `points` through the map; a point that throws or fails gives NaN, and any NaN
+// makes the evaluation unscorable, saying what was computed there.
+std::vector<double> values_at(const std::vector<double>& points, const std::function<double(double)>& f,
+                              const PointMap& map, const char* what) {
+  std::vector<double> values = map(points.size(), [&](std::size_t i) {
+    try {
+      return f(points[i]);
+    } catch (const std::exception&) {
+      return nan;
+    }
+  });
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (!std::isfinite(values[i]))
+      throw Unscorable(std::string(what) + " at z = " + std::to_string(points[i]) + " m did not end ok");
+  return values;
+}
+
+// The maximum of f between from and to as scan_maximum finds it, its uniform samples computed
+// through the map (bitwise the values scan_maximum would compute itself), the golden section
+// after them on every worker alike.
+ScanMaximum mapped_scan_maximum(const std::function<double(double)>& f, double from, double to, double step,
+                                double tolerance, const PointMap& map, const char* what) {
+  const std::vector<double> points = scan_points(from, to, step);
+  const std::vector<double> values = values_at(points, f, map, what);
+  const auto sampled_or_computed = [&](double x) {
+    const auto at = std::ranges::find(points, x);
+    const double v = at != points.end() ? values[static_cast<std::size_t>(at - points.begin())] : f(x);
+    if (!std::isfinite(v)) throw Unscorable(std::string(what) + " at z = " + std::to_string(x) + " m did not end ok");
+    return v;
+  };
+  return scan_maximum(sampled_or_computed, from, to, step, tolerance);
+}
+
+// The player's swing with this design: scaled from the reference bat's by equal effort.
+Swing design_swing(const Player& player, const MassProperties& exact) {
+  if (!player.equal_effort) return player.swing;
+  return equal_effort_swing(player.swing, player.reference_moi, exact.moment_of_inertia_about(0),
+                            player.swing_exponent);
+}
+
+// The batted-ball speed (the flexible model's v_f) at z; NaN unless the impact ends ok.
+double batted_ball_speed(const ModalBasis& basis, ImpactScene scene, double z) {
+  scene.z = z;
+  const ImpactResult r = simulate_impact(basis, scene);
+  return r.status == CollisionStatus::ok ? r.vf : nan;
+}
+
+double objective_value(const OptimizationProblem& problem, const ModalBasis& basis, const ImpactScene& scene,
+                       const PointMap& map) {
+  const ObjectiveSpec& o = problem.objective;
+  const auto bbs = [&](double z) { return batted_ball_speed(basis, scene, z); };
+  switch (o.kind) {
+    case ObjectiveKind::peak_bbs:
+      return mapped_scan_maximum(bbs, o.z_from, o.z_to, o.z_step, o.tolerance, map, "the impact").value;
+    case ObjectiveKind::sweet_spot_width: {
+      const std::vector<double> z = scan_points(o.z_from, o.z_to, o.z_step);
+      const double width = sweet_spot(z, values_at(z, bbs, map, "the impact"), o.fraction).width;
+      if (!std::isfinite(width))
+        throw Unscorable("the sweet spot is not inside the z scan (its peak at an end, or its zone running off it)");
+      return width;
+    }
+    case ObjectiveKind::mean_bbs: {
+      const std::vector<double> vf = values_at(o.z, bbs, map, "the impact");
+      double mean = 0;
+      for (std::size_t i = 0; i < vf.size(); ++i) mean += o.weights[i] * vf[i];
+      return mean;
+    }
+  }
+  throw std::logic_error("objective_value: unknown objective");
+}
+
+// The standard's measure at its maximum over the barrel, as certify finds it.
+double rig_maximum(const OptimizationProblem& problem, const ModalBasis& basis, double length, const PointMap& map) {
+  const RigSettings rig = certification_rig(problem.standard, problem.rig, length);
+  const BarrelScan& scan = problem.rig.scan;
+  const auto measure = [&](double z) { return measure_value(rig_hit(basis, rig, z), problem.standard.measure); };
+  return mapped_scan_maximum(measure, length - scan.far_from_end, length - scan.near_end, scan.step, scan.tolerance,
+                             map, "the rig's hit")
+      .value;
+}
+
+double largest_outer_diameter(const BatDesign& design) {
+  const Profile profile = design_profile(design);
+  return *std::ranges::max_element(profile.outer);
+}
+
+double shape_quantity(Quantity q, const BatDesign& design, const MassProperties& exact) {
+  switch (q) {
+    case Quantity::barrel_diameter: return largest_outer_diameter(design);
+    case Quantity::drop: return bat_drop(design.length, exact.mass);
+    case Quantity::mass: return exact.mass;
+    case Quantity::moi_knob: return exact.moment_of_inertia_about(0);
+    case Quantity::moi_pivot: return exact.moment_of_inertia_about(swing_weight_pivot);
+    case Quantity::length: return design.length;
+    case Quantity::measure: break;
+  }
+  throw std::logic_error("shape_quantity: the rig's measure is no number of the shape");
+}
+
+// The impact points an evaluation strikes at its scan's samples (the golden section's points
+// lie between them), and the rig's hits when a constraint asks for its measure.
+std::vector<ImpactScene> sampled_scenes(const OptimizationProblem& problem, const ImpactScene& scene, double length) {
+  const ObjectiveSpec& o = problem.objective;
+  std::vector<ImpactScene> scenes;
+  for (const double z : o.kind == ObjectiveKind::mean_bbs ? o.z : scan_points(o.z_from, o.z_to, o.z_step)) {
+    scenes.push_back(scene);
+    scenes.back().z = z;
+  }
+  if (std::ranges::any_of(problem.constraints, [](const Constraint& c) { return c.quantity == Quantity::measure; })) {
+    const RigSettings rig = certification_rig(problem.standard, problem.rig, length);
+    const BarrelScan& scan = problem.rig.scan;
+    for (const double z : scan_points(length - scan.far_from_end, length - scan.near_end, scan.step))
+      scenes.push_back(rig_scene(rig, z));
+  }
+  return scenes;
+}
+
+// One basis for every impact and rig hit of the design: the rigid modes alone, a fixed count, all
+// modes, or (auto) every mode below the largest reach any sampled scene asks, as a study's cache
+// solves it (a partial solve: most of an evaluation's cost is this eigen-solve).
+ModalBasis design_modes(const OptimizationProblem& problem, const Bat& bat, const std::vector<ImpactScene>& scenes) {
+  const int modes = problem.model.vibrational_modes;
+  if (modes == 0) return compute_modes(bat, problem.model.theory, ModeRequest::rigid_only());
+  if (modes == all_modes) return compute_modes(bat, problem.model.theory, ModeRequest::all());
+  if (modes != auto_modes) return compute_modes(bat, problem.model.theory, ModeRequest::lowest(modes));
+  const ModalBasis rigid = compute_modes(bat, problem.model.theory, ModeRequest::rigid_only());
+  ModeRequest request = ModeRequest::below(0);
+  for (const ImpactScene& s : scenes) {
+    const ModeRequest asked = auto_mode_request(s, rigid);
+    if (asked.is_all()) return compute_modes(bat, problem.model.theory, ModeRequest::all());
+    request.below_omega = std::max(request.below_omega, asked.below_omega);
+  }
+  return compute_modes(bat, problem.model.theory, request);
+}
+
+}  // namespace
+
+std::vector<double> serial_map(std::size_t count, const std::function<double(std::size_t)>& value) {
+  std::vector<double> values(count);
+  for (std::size_t i = 0; i < count; ++i) values[i] = value(i);
+  return values;
+}
+
+const char* to_string(EvaluationStatus status) { return status == EvaluationStatus::ok ? "ok" : "failed"; }
+
+DesignEvaluation evaluate_design(const OptimizationProblem& problem, const std::vector<double>& x, const PointMap& map) {
+  DesignEvaluation e;
+  e.x = x;
+  e.constraints.assign(problem.constraints.size(), nan);
+  try {
+    const BatDesign design = design_at(problem, x);
+    if (const auto broken = broken_rule(design)) throw Unscorable(*broken);
+    const MassProperties exact = design_mass_properties(design);
+    for (std::size_t i = 0; i < problem.constraints.size(); ++i)
+      if (problem.constraints[i].quantity != Quantity::measure)
+        e.constraints[i] = shape_quantity(problem.constraints[i].quantity, design, exact);
+    ImpactScene scene;
+    scene.ball.e0 = problem.player.e0;
+    scene.ball_speed = problem.player.ball_speed;
+    scene.swing = design_swing(problem.player, exact);
+    scene.vibrational_modes = problem.model.vibrational_modes;
+    Bat bat = build_bat(design);
+    if (problem.model.slices > 0) bat = resample(bat, problem.model.slices);
+    const ModalBasis basis = design_modes(problem, bat, sampled_scenes(problem, scene, design.length));
+    e.objective = objective_value(problem, basis, scene, map);
+    const auto measure = std::ranges::find(problem.constraints, Quantity::measure, &Constraint::quantity);
+    if (measure != problem.constraints.end())
+      e.constraints[static_cast<std::size_t>(measure - problem.constraints.begin())] =
+          rig_maximum(problem, basis, design.length, map);
+  } catch (const std::exception& failure) {  // Unscorable, or an InputError of a rig off this bat
+    e.status = EvaluationStatus::failed;
+    e.message = failure.what();
+    e.objective = nan;
+  }
+  return e;
+}
+
+double constraint_violation(const OptimizationProblem& problem, const DesignEvaluation& e, std::size_t i) {
+  const Constraint& c = problem.constraints[i];
+  const double value = e.constraints[i];
+  if (e.status != EvaluationStatus::ok || !std::isfinite(value)) return 1;
+  const double scale = std::abs(c.limit) > 0 ? std::abs(c.limit) : 1;
+  return (c.upper ? value - c.limit : c.limit - value) / scale;
+}
+
+bool feasible(const OptimizationProblem& problem, const DesignEvaluation& e) {
+  if (e.status != EvaluationStatus::ok) return false;
+  for (std::size_t i = 0; i < problem.constraints.size(); ++i)
+    if (constraint_violation(problem, e, i) > problem.optimizer.constraint_tolerance) return false;
+  return true;
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,254 @@
+#include "sweetspot/optimize/optimization_run.hpp"
+
+#include <mpi.h>
+#include <omp.h>
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <optional>
+
+#include "sweetspot/bat/bat_design_text.hpp"
+#include "sweetspot/optimize/optimization_dataset.hpp"
+#include "sweetspot/optimize/optimizer.hpp"
+#include "sweetspot/optimize/parallel_map.hpp"
+#include "sweetspot/study/journal.hpp"
+#include "sweetspot/study/output_lock.hpp"
+#include "sweetspot/study/output_paths.hpp"
+#include "sweetspot/version.hpp"
+
+namespace sweetspot {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// ---- A journal row: the design's bits, its objective, its constraints, its status ----------
+
+std::size_t row_width(const OptimizationProblem& p) { return p.free.size() + 1 + p.constraints.size() + 1; }
+
+std::vector<double> to_row(const DesignEvaluation& e) {
+  std::vector<double> row = e.x;
+  row.push_back(e.objective);
+  row.insert(row.end(), e.constraints.begin(), e.constraints.end());
+  row.push_back(static_cast<double>(e.status));
+  return row;
+}
+
+DesignEvaluation from_row(const OptimizationProblem& p, const double* row) {
+  DesignEvaluation e;
+  const std::size_t n = p.free.size(), m = p.constraints.size();
+  e.x.assign(row, row + n);
+  e.objective = row[n];
+  e.constraints.assign(row + n + 1, row + n + 1 + m);
+  e.status = static_cast<EvaluationStatus>(static_cast<int>(row[n + 1 + m]));
+  if (e.status != EvaluationStatus::ok) e.message = "failed (as journaled)";
+  return e;
+}
+
+// Why a journaled row cannot be one of this problem's evaluations, or "".
+std::string row_problem(const OptimizationProblem& p, const double* row) {
+  const std::size_t n = p.free.size(), m = p.constraints.size();
+  for (std::size_t i = 0; i < n; ++i)
+    if (!(row[i] >= p.free[i].lower && row[i] <= p.free[i].upper)) return "a design outside the bounds";
+  const double status = row[n + 1 + m];
+  if (status != 0 && status != 1) return "an unknown status";
+  if (status == 0 && !std::isfinite(row[n])) return "an ok evaluation without an objective";
+  return "";
+}
+
+// ---- The output claimed by rank 0 ----------------------------------------------------------
+
+std::vector<fs::path> inputs(const OptimizationProblem& p) {
+  std::vector<fs::path> files{p.file, p.base_source.toml_file};
+  if (!p.reference_source.toml_file.empty()) files.push_back(p.reference_source.toml_file);
+  return files;
+}
+
+fs::path temporary(const fs::path& path) { return path.string() + ".tmp"; }
+
+struct OutputClaim {
+  OutputLock lock;
+  Journal journal;
+  OutputClaim(const OptimizationProblem& p, const OptimizeOptions& o)
+      : lock(o.output),
+        journal(Journal::path_for(o.output),
+                journal_key(p.text, {p.base_source, p.reference_source},
+                            static_cast<std::uint64_t>(p.optimizer.max_evaluations), row_width(p)),
+                o.resume, [&p](const double* row) { return row_problem(p, row); }) {
+    if (!journal.dropped().empty()) spdlog::warn("{}: {}", Journal::path_for(o.output).string(), journal.dropped());
+  }
+  static void check(const OptimizationProblem& p, const OptimizeOptions& o) {
+    const fs::path journal = Journal::path_for(o.output), best = best_bat_path(o.output);
+    check_output_paths(o.output,
+                       {dataset_temporary_path(o.output), journal, Journal::rewrite_path(journal),
+                        OutputLock::path_for(o.output), best, temporary(best)},
+                       inputs(p));
+  }
+};
+
+// Rank 0 claims the output; all ranks learn whether it did and stop together if not.
+std::unique_ptr<OutputClaim> claim_output(const OptimizationProblem& p, const OptimizeOptions& o, int rank) {
+  std::unique_ptr<OutputClaim> claim;
+  std::string refusal;
+  if (rank == 0) try {
+      OutputClaim::check(p, o);
+      claim = std::make_unique<OutputClaim>(p, o);
+    } catch (const InputError& e) {
+      refusal = e.what();
+    }
+  int length = static_cast<int>(refusal.size());
+  MPI_Bcast(&length, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  refusal.resize(static_cast<std::size_t>(length));
+  MPI_Bcast(refusal.data(), length, MPI_CHAR, 0, MPI_COMM_WORLD);
+  if (!refusal.empty()) throw RunRefused(refusal);
+  return claim;
+}
+
+// ---- Rank 0 drives, the others serve -------------------------------------------------------
+
+enum Command : int { stop = 0, evaluate = 1 };
+
+DesignEvaluation evaluate_everywhere(const OptimizationProblem& p, std::vector<double> x) {
+  int command = Command::evaluate;
+  MPI_Bcast(&command, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  MPI_Bcast(x.data(), static_cast<int>(x.size()), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  return evaluate_design(p, x, mpi_map);
+}
+
+void serve(const OptimizationProblem& p) {
+  for (;;) {
+    int command = Command::stop;
+    MPI_Bcast(&command, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    if (command == Command::stop) return;
+    std::vector<double> x(p.free.size());
+    MPI_Bcast(x.data(), static_cast<int>(x.size()), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+    evaluate_design(p, x, mpi_map);
+  }
+}
+
+// Rank 0's scorer: the journal's answer for an evaluation it holds (the same design, bit for
+// bit, since the optimiser repeats its path), else a new evaluation shared by every rank,
+// journaled before the optimiser sees it.
+class JournaledEvaluator {
+ public:
+  JournaledEvaluator(const OptimizationProblem& p, Journal& journal, Verbosity verbosity)
+      : problem_(p), journal_(journal), verbosity_(verbosity), recovered_(static_cast<std::size_t>(p.optimizer.max_evaluations)) {
+    const std::size_t width = row_width(p);
+    for (std::size_t k = 0; k < journal.recovered_points().size(); ++k)
+      recovered_[journal.recovered_points()[k]] = from_row(p, journal.recovered_values().data() + k * width);
+  }
+
+  DesignEvaluation operator()(const std::vector<double>& x) {
+    const std::size_t index = asked_++;
+    const std::optional<DesignEvaluation>& old = recovered_.at(index);
+    if (old && std::memcmp(old->x.data(), x.data(), x.size() * sizeof(double)) == 0) {
+      ++resumed_;
+      return *old;
+    }
+    if (old)
+      throw std::runtime_error("the journal's evaluation " + std::to_string(index) +
+                               " is of another design than this run asks: the optimiser did not repeat its path");
+    DesignEvaluation e = evaluate_everywhere(problem_, x);
+    journal_.append({index}, to_row(e));
+    log(index, e);
+    return e;
+  }
+  int resumed() const { return resumed_; }
+
+ private:
+  void log(std::size_t index, const DesignEvaluation& e) const {
+    if (verbosity_ == Verbosity::quiet) return;
+    std::string design;
+    for (std::size_t i = 0; i < e.x.size(); ++i) design += fmt::format(" {}={:.6g}", problem_.free[i].name, e.x[i]);
+    const std::string what = fmt::format("evaluation {}:{} -> {} {:.6g} ({})", index, design, to_string(problem_.objective.kind),
+                                         e.objective, e.status != EvaluationStatus::ok ? e.message
+                                                                       : feasible(problem_, e) ? "feasible" : "infeasible");
+    // Every evaluation when verbose; otherwise every 25th, so that a long search shows progress.
+    if (verbosity_ == Verbosity::verbose || index % 25 == 0) spdlog::info("{}", what);
+  }
+
+  const OptimizationProblem& problem_;
+  Journal& journal_;
+  Verbosity verbosity_;
+  std::vector<std::optional<DesignEvaluation>> recovered_;
+  std::size_t asked_ = 0;
+  int resumed_ = 0;
+};
+
+// The best design as a bat file beside the dataset, written whole or not at all.
+void write_best_bat(const OptimizationProblem& p, const OptimizationHistory& h, const fs::path& path) {
+  const DesignEvaluation& best = h.evaluations[static_cast<std::size_t>(h.best)];
+  BatDesign design = design_at(p, best.x);
+  design.name = p.base.name + " (optimised)";
+  const std::string comment = fmt::format(
+      "The best design of the optimisation {} ({}): {} = {:.17g}, evaluation {} of {}.\n"
+      "Written by sweetspot {} ({}); the base bat is {}.",
+      p.file.string(), p.title, to_string(p.objective.kind), best.objective, h.best, h.evaluations.size(), version,
+      git_commit, p.base_source.toml_file.string());
+  {
+    std::ofstream out(temporary(path), std::ios::binary);
+    out << bat_design_text(design, comment);
+    if (!out) throw std::runtime_error(temporary(path).string() + ": cannot write the best design's bat file");
+  }
+  fs::rename(temporary(path), path);
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+fs::path best_bat_path(const fs::path& output) {
+  return output.parent_path() / (output.stem().string() + "_best.toml");
+}
+
+void run_optimization(const OptimizationProblem& problem, const OptimizeOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  std::unique_ptr<OutputClaim> claim = claim_output(problem, options, rank);
+  if (rank != 0) return serve(problem);
+
+  spdlog::info("optimising {} ({} free parameters, {}, at most {} evaluations) on {} ranks x {} threads",
+               problem.file.string(), problem.free.size(), to_string(problem.optimizer.algorithm),
+               problem.optimizer.max_evaluations, ranks, omp_get_max_threads());
+  JournaledEvaluator evaluator(problem, claim->journal, options.verbosity);
+  OptimizationHistory history;
+  try {
+    history = optimize_design(problem, std::ref(evaluator));
+  } catch (...) {
+    int command = Command::stop;  // release the serving ranks before the error goes up
+    MPI_Bcast(&command, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    throw;
+  }
+  int command = Command::stop;
+  MPI_Bcast(&command, 1, MPI_INT, 0, MPI_COMM_WORLD);
+
+  OptimizationRunInfo info{ranks, omp_get_max_threads(), seconds_since(start), evaluator.resumed(), {}};
+  if (history.best >= 0) {
+    info.best_bat_file = best_bat_path(options.output);
+    write_best_bat(problem, history, info.best_bat_file);
+  } else {
+    spdlog::warn("no feasible design among {} evaluations: no best bat file written ({} is not this run's)",
+                 history.evaluations.size(), best_bat_path(options.output).string());
+  }
+  write_dataset(options.output, optimization_dataset(problem, history, info));
+  claim->journal.remove();
+  if (evaluator.resumed() > 0) spdlog::info("resumed: {} evaluations from the journal", evaluator.resumed());
+  if (history.best >= 0) {
+    const DesignEvaluation& best = history.evaluations[static_cast<std::size_t>(history.best)];
+    std::string design;
+    for (std::size_t i = 0; i < best.x.size(); ++i) design += fmt::format(" {}={:.9g}", problem.free[i].name, best.x[i]);
+    spdlog::info("best: evaluation {}:{} -> {} {:.9g}", history.best, design, to_string(problem.objective.kind), best.objective);
+  }
+  spdlog::info("{} evaluations in {:.2f} s on {} ranks x {} threads ({}); wrote {}", history.evaluations.size(),
+               info.wall_time, ranks, omp_get_max_threads(), history.stop_reason, options.output.string());
+}
+
+}  // namespace sweetspot

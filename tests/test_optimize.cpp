@@ -1,0 +1,325 @@
+// The design optimiser. With rigid bats swung with equal effort, the best density of a bat has a
+// closed form the optimiser never sees: the rigid formulas of physics.md §5 and the power law of
+// the swing, maximised by a 1-D root of their derivative. NLopt finds it to 1e-4; with a mass
+// window below it, the optimum sits on the window's edge within its tolerance. A killed run
+// resumes to the same best design; the best design's bat file reads back as the design; a bad
+// optimisation file is refused before any work.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "program.hpp"
+#include "refusal.hpp"
+#include "sweetspot/bat/bat_design_text.hpp"
+#include "sweetspot/impact/certification.hpp"
+#include "sweetspot/impact/formulas.hpp"
+#include "sweetspot/optimize/optimizer.hpp"
+#include "temp_dir.hpp"
+
+using namespace sweetspot;
+
+namespace {
+
+const std::string maple = source_path("studies/bats/maple_271.toml");
+
+// The rigid maple 271 at one impact point, its density free, swung with equal effort about a
+// centre near the knob (the player's swing measured with the base bat itself).
+constexpr double centre = 0.09, omega_ref = 51, pitch = 40, z0 = 0.7, exponent = 0.3;
+
+std::string density_problem(const std::string& constraints = "", const std::string& free = "density = { min = 100, max = 3000 }") {
+  return "bat = \"" + maple + "\"\n[free]\n" + free +
+         "\n[player]\ncenter = 0.09\nomega = 51\nball_speed = 40\nswing_exponent = 0.3\n"
+         "[model]\nmodes = 0\n[objective]\nmaximize = \"mean_bbs\"\npoints = [0.7]\nweights = [1]\n"
+         "[optimizer]\nxtol_rel = 1e-10\nmax_evaluations = 400\n" + constraints;
+}
+
+OptimizationHistory optimize(const OptimizationProblem& problem) {
+  return optimize_design(problem, [&](const std::vector<double>& x) { return evaluate_design(problem, x, serial_map); });
+}
+
+// The rigid bat's exit speed at density s times the base's, from the formulas alone: mass and
+// moment of inertia scale with s, the swing's speed with s^-n (equal effort against the base).
+struct RigidFamily {
+  double recoil0;  // R0 of the base bat at z0: (m/M)(1 + ((z0 - z_cm)/r_g)^2)
+  double e0 = 0.5, ball_mass = 0.145;
+
+  double numerator(double s) const {
+    return (e0 * s - recoil0) * pitch + (1 + e0) * omega_ref * (z0 - centre) * std::pow(s, 1 - exponent);
+  }
+  double speed(double s) const { return numerator(s) / (s + recoil0); }
+  // d speed / ds = (N' (s + R) - N) / (s + R)^2: its numerator.
+  double slope(double s) const {
+    const double dn = e0 * pitch + (1 - exponent) * (1 + e0) * omega_ref * (z0 - centre) * std::pow(s, -exponent);
+    return dn * (s + recoil0) - numerator(s);
+  }
+  // The root of the slope by bisection, to 1e-12 relative.
+  double best_scale(double lo, double hi) const {
+    REQUIRE(slope(lo) > 0);
+    REQUIRE(slope(hi) < 0);
+    while (hi - lo > 1e-12 * hi) {
+      const double mid = (lo + hi) / 2;
+      (slope(mid) > 0 ? lo : hi) = mid;
+    }
+    return (lo + hi) / 2;
+  }
+};
+
+RigidFamily rigid_family(const BatDesign& base) {
+  const ModalBasis rigid = compute_modes(build_bat(base), BeamTheory::timoshenko, ModeRequest::rigid_only());
+  const double m = RigidFamily{}.ball_mass;
+  return {m / rigid.mass + m * (z0 - rigid.z_cm) * (z0 - rigid.z_cm) / rigid.moment_of_inertia_cm};
+}
+
+std::string read(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
+TEST_CASE("optimize finds the closed-form best density of a rigid bat swung with equal effort", "[optimize]") {
+  TempDir dir;
+  const std::string algorithm = GENERATE("cobyla", "bobyqa", "mlsl");
+  INFO(algorithm);
+  std::string text = density_problem();
+  text.replace(text.find("xtol_rel"), 0, "algorithm = \"" + algorithm + "\"\n");
+  const OptimizationProblem problem = load_optimization(dir.write("opt.toml", text));
+  const double rho0 = problem.base.material.density;
+  const RigidFamily family = rigid_family(problem.base);
+  const double best = rho0 * family.best_scale(100 / rho0, 3000 / rho0);
+  const OptimizationHistory history = optimize(problem);
+  REQUIRE(history.best >= 0);
+  const DesignEvaluation& found = history.evaluations[static_cast<std::size_t>(history.best)];
+  CHECK(found.x[0] == Approx(best).epsilon(1e-4));
+  // The collision reproduces the rigid formula (physics.md §5), so the best speed too.
+  CHECK(found.objective == Approx(family.speed(best / rho0)).epsilon(1e-8));
+  // And it is a maximum: the family is slower on both sides.
+  CHECK(family.speed(best / rho0) > family.speed(0.9 * best / rho0));
+  CHECK(family.speed(best / rho0) > family.speed(1.1 * best / rho0));
+}
+
+TEST_CASE("optimize meets an active mass window at its edge within the tolerance", "[optimize]") {
+  TempDir dir;
+  const BatDesign base = load_optimization(dir.write("free.toml", density_problem())).base;
+  const double rho0 = base.material.density, mass0 = design_mass_properties(base).mass;
+  const double best_free = rho0 * rigid_family(base).best_scale(100 / rho0, 3000 / rho0);
+  // A window whose upper edge is the mass at 80 % of the free optimum's density: the speed still
+  // rises there, so the constrained optimum is on the edge, mass proportional to density.
+  const double limit = mass0 * 0.8 * best_free / rho0;
+  std::ostringstream window;
+  window.precision(17);
+  window << "constraint_tolerance = 1e-7\n[constraints]\nmass = { min = 0.5, max = " << limit << " }\n";
+  const OptimizationProblem problem = load_optimization(dir.write("opt.toml", density_problem(window.str())));
+  const OptimizationHistory history = optimize(problem);
+  REQUIRE(history.best >= 0);
+  const DesignEvaluation& found = history.evaluations[static_cast<std::size_t>(history.best)];
+  REQUIRE(problem.constraints.size() == 2);
+  const double mass = found.constraints[1];
+  CHECK(problem.constraints[1].label() == "mass_max");
+  CHECK(mass == Approx(design_mass_properties(design_at(problem, found.x)).mass).epsilon(1e-15));
+  CHECK(mass <= limit * (1 + 1e-7));  // met within its tolerance
+  CHECK(found.x[0] == Approx(0.8 * best_free).epsilon(1e-4));
+  CHECK(feasible(problem, found));
+}
+
+TEST_CASE("optimize's spread of impact points is the normal distribution's Gauss-Hermite rule", "[optimize]") {
+  TempDir dir;
+  std::string text = density_problem();
+  const std::string one_point = "points = [0.7]\nweights = [1]";
+  text.replace(text.find(one_point), one_point.size(), "spread = { mean = 0.7, sigma = 0.03, points = 6 }");
+  const ObjectiveSpec o = load_optimization(dir.write("opt.toml", text)).objective;
+  REQUIRE(o.z.size() == 6);
+  // n points integrate polynomials to degree 2n - 1 exactly: the normal's moments up to the 11th
+  // (odd ones 0, E[(z - mean)^(2k)] = sigma^(2k) (2k - 1)!!).
+  double double_factorial = 1;
+  for (int k = 0; k <= 11; ++k) {
+    double moment = 0;
+    for (std::size_t i = 0; i < o.z.size(); ++i) moment += o.weights[i] * std::pow((o.z[i] - 0.7) / 0.03, k);
+    if (k >= 2 && k % 2 == 0) double_factorial *= k - 1;
+    CHECK(moment == Approx(k % 2 ? 0.0 : double_factorial).margin(1e-9));
+  }
+}
+
+TEST_CASE("optimize's best design is written as a bat file that reads back as the design", "[optimize]") {
+  TempDir dir;
+  const OptimizationProblem problem = load_optimization(dir.write(
+      "opt.toml", density_problem("", "barrel_diameter = { min = 0.06, max = 0.0667 }\ndensity = { min = 500, max = 900 }")));
+  BatDesign design = design_at(problem, {0.0612345678901234, 712.34567890123456});
+  design.name = "a \"quoted\" name";
+  const auto file = dir.write("best.toml", bat_design_text(design, "two\nlines"));
+  BatSource source;
+  const BatDesign back = load_bat_design(file, source);
+  CHECK(back.name == design.name);
+  CHECK(back.length == design.length);
+  CHECK(back.material_name == design.material_name);
+  for (const std::string& name : design_parameters(design)) CHECK(design_parameter(back, name) == design_parameter(design, name));
+  CHECK(back.dimensions->end == design.dimensions->end);
+  CHECK(design_mass_properties(back).mass == design_mass_properties(design).mass);
+}
+
+TEST_CASE("optimize writes every evaluation and the best bat, which certify accepts, and refuses a bad file", "[optimize][program]") {
+  TempDir dir;
+  const auto opt = dir.write("opt.toml", density_problem("[constraints]\nmass = { max = 0.9 }\n"));
+  const ProgramRun run = run_program("optimize " + opt.string() + " -o " + dir / "out.h5 --quiet");
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  const ProgramRun certified = run_program("certify " + dir / "out_best.toml --json");
+  INFO(certified.output);
+  CHECK(certified.exit_code == 0);
+  const ProgramRun struck = run_program("impact --bat " + dir / "out_best.toml" + " --z 0.7 --ball-speed 40 --center 0.09 --omega 51");
+  INFO(struck.output);
+  CHECK(struck.exit_code == 0);
+  const ProgramRun check = run_command(std::string(python) + " -c \"import h5py; f = h5py.File('" + dir / "out.h5" +
+                                       "'); b = int(f['best_evaluation'][()]); print(f['design'].shape[0], b, "
+                                       "f['feasible'][b], f['design'][b, 0] == f['best_design'][0], "
+                                       "f['constraint_value'][b, 0] <= 0.9 * (1 + 1e-6))\"");
+  INFO(check.output);
+  CHECK(check.output.find(" 1 True True") != std::string::npos);
+
+  // Bad files: one line naming the key, exit 2, nothing written.
+  const auto refused = [&](const std::string& text, std::initializer_list<std::string> fragments) {
+    const auto bad = dir.write("bad.toml", text);
+    require_refused(run_program("optimize " + bad.string() + " -o " + dir / "bad.h5"), fragments);
+    CHECK_FALSE(std::filesystem::exists(dir / "bad.h5"));
+    CHECK_FALSE(std::filesystem::exists(dir / "bad.h5.journal"));
+  };
+  refused(density_problem("", "density = { min = 900, max = 800 }"), {"free.density.max", "800", "above min"});
+  refused(density_problem("", "girth = { min = 1, max = 2 }"), {"free.girth", "unknown parameter", "barrel_diameter"});
+  refused(density_problem("", "density = { min = 800, max = 900 }"), {"free.density", "705.6", "outside"});
+  refused(density_problem("", "handle_diameter = { min = 0.02, max = 0.07 }"),
+          {"free", "handle_diameter = 0.07", "impossible bat"});
+  refused(density_problem("[constraints]\nstandard = \"bbcorr\"\n"), {"constraints.standard", "bbcorr", "bbcor"});
+  refused(density_problem("[constraints]\nmass = { max = \"heavy\" }\n"), {"constraints.mass.max", "heavy"});
+  refused(density_problem("[constraints]\nweight = { max = 1 }\n"), {"constraints.weight", "unknown key"});
+  std::string simplex = density_problem();
+  simplex.replace(simplex.find("xtol_rel"), 0, "algorithm = \"simplex\"\n");
+  refused(simplex, {"optimizer.algorithm", "simplex", "cobyla"});
+  refused(density_problem() + "[objective]\n", {"objective"});
+  std::string too_many = density_problem();
+  too_many.replace(too_many.find("modes = 0"), 9, "modes = 500");
+  refused(too_many, {"model.modes", "500", "at most the"});
+  refused("bat = \"" + source_path("studies/bats/r161.toml") + "\"\n[free]\ndensity = { min = 500, max = 900 }\n",
+          {"bat", "profile", "[dimensions]"});
+  std::string no_scan = density_problem();
+  const std::string mean = "maximize = \"mean_bbs\"\npoints = [0.7]\nweights = [1]";
+  no_scan.replace(no_scan.find(mean), mean.size(), "maximize = \"peak_bbs\"");
+  refused(no_scan, {"objective.z", "z = {"});
+  // An output that is the optimisation file itself is refused, and the file kept.
+  require_refused(run_program("optimize " + opt.string() + " -o " + opt.string()), {opt.string()});
+  CHECK(read(opt.string()).find("[free]") != std::string::npos);
+}
+
+TEST_CASE("optimize killed mid-run resumes to the same best design, and 2 ranks give the same bits", "[optimize][program]") {
+  TempDir dir;
+  // A flexible bat, two dimensions free, the sweet spot's width: about 55 evaluations of 5 ms.
+  const auto opt = dir.write(
+      "opt.toml", "bat = \"" + maple + "\"\n[free]\nbarrel_diameter = { min = 0.0603, max = 0.0667 }\n"
+                  "taper_end = { min = 0.55, max = 0.70 }\n[player]\ncenter = 0.09\nomega = 51\nball_speed = 40\n"
+                  "[objective]\nmaximize = \"sweet_spot_width\"\n"
+                  "z = { start = 0.50, stop = 0.82, step = 0.01 }\nfraction = 0.02\n"
+                  "[constraints]\ndrop = { max = 3 }\n[optimizer]\nmax_evaluations = 80\nxtol_rel = 1e-10\n");
+  const ProgramRun whole = run_program("optimize " + opt.string() + " -o " + dir / "whole.h5 --quiet");
+  INFO(whole.output);
+  REQUIRE(whole.exit_code == 0);
+  const std::string best = read(dir / "whole_best.toml");
+  REQUIRE_FALSE(best.empty());
+
+  // Killed (SIGKILL) once its journal holds 10 evaluations (56-byte header, 64-byte records).
+  const std::string out = dir / "killed.h5";
+  const ProgramRun killed = run_command(
+      "OMP_NUM_THREADS=1 " + std::string(SWEETSPOT_PROGRAM) + " optimize " + opt.string() + " -o " + out +
+      " --quiet & pid=$!; while kill -0 $pid 2>/dev/null && [ $(stat -c %s " + out +
+      ".journal 2>/dev/null || echo 0) -lt 696 ]; do sleep 0.002; done; kill -9 $pid 2>/dev/null; wait $pid; echo killed $?");
+  INFO(killed.output);
+  REQUIRE(killed.output.find("killed 137") != std::string::npos);
+  REQUIRE(std::filesystem::exists(out + ".journal"));
+  CHECK_FALSE(std::filesystem::exists(out));
+  // Without --resume the journal is refused and kept.
+  require_refused(run_program("optimize " + opt.string() + " -o " + out), {"journal", "--resume"});
+  const ProgramRun resumed = run_program("optimize " + opt.string() + " -o " + out + " --resume");
+  INFO(resumed.output);
+  REQUIRE(resumed.exit_code == 0);
+  CHECK(resumed.output.find("from the journal") != std::string::npos);
+  // The same best design and comment (objective to 17 digits, its evaluation and the count).
+  std::string resumed_best = read(dir / "killed_best.toml"), whole_best = best;
+  CHECK(resumed_best == whole_best);
+
+  const ProgramRun plot = run_command(std::string(python) + " " + source_path("scripts/plot_optimization.py") + " " +
+                                      dir / "whole.h5" + " " + dir / "whole.png");
+  INFO(plot.output);
+  CHECK(plot.exit_code == 0);
+  CHECK(std::filesystem::file_size(dir / "whole.png") > 10000);
+
+  const ProgramRun two = run_program_mpi(2, 1, "optimize " + opt.string() + " -o " + dir / "two.h5 --quiet");
+  INFO(two.output);
+  REQUIRE(two.exit_code == 0);
+  CHECK(read(dir / "two_best.toml") == best);
+  const ProgramRun same = run_command(std::string(python) + " -c \"import h5py, numpy as n; a = h5py.File('" + dir / "whole.h5" +
+                                      "'); b = h5py.File('" + dir / "two.h5" + "'); c = h5py.File('" + out +
+                                      "'); print(all(n.array_equal(a[k][()], x[k][()], equal_nan=True) for x in (b, c) "
+                                      "for k in ('design', 'objective', 'constraint_value', 'feasible')), "
+                                      "c.attrs['resumed_evaluations'] > 0)\"");
+  INFO(same.output);
+  CHECK(same.output == "True True\n");
+}
+
+TEST_CASE("every shipped optimisation loads, and its start design is feasible", "[optimize]") {
+  int found = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(source_path("studies"))) {
+    if (!entry.path().filename().string().starts_with("optimize_")) continue;
+    INFO(entry.path());
+    ++found;
+    const OptimizationProblem problem = load_optimization(entry.path());
+    CHECK(problem.text.starts_with('#'));  // each says what it searches for
+    std::vector<double> start;
+    for (const FreeParameter& p : problem.free) start.push_back(p.start);
+    const DesignEvaluation e = evaluate_design(problem, start, serial_map);
+    INFO(e.message);
+    CHECK(e.status == EvaluationStatus::ok);
+    CHECK(feasible(problem, e));
+  }
+  CHECK(found >= 1);
+  // The README's study: five dimensions of a 33-in maple, BBCOR and drop constrained, the sweet
+  // spot's width at equal effort.
+  const OptimizationProblem maple = load_optimization(source_path("studies/optimize_maple.toml"));
+  CHECK(maple.free.size() == 5);
+  CHECK(maple.base.length == Approx(33 * 0.0254));
+  CHECK(maple.base.material_name == "maple");
+  CHECK(maple.player.equal_effort);
+  CHECK(maple.objective.kind == ObjectiveKind::sweet_spot_width);
+  std::vector<std::string> labels;
+  for (const Constraint& c : maple.constraints) labels.push_back(c.label());
+  CHECK(std::ranges::count(labels, "bbcor_max") == 1);
+  CHECK(std::ranges::count(labels, "drop_max") == 1);
+  CHECK(std::ranges::count(labels, "drop_min") == 1);
+}
+
+TEST_CASE("optimize's BBCOR constraint is certify's maximum over the barrel, and the rules are certify's", "[optimize]") {
+  TempDir dir;
+  const auto file = dir.write(
+      "opt.toml", "bat = \"" + maple + "\"\n[free]\nbarrel_diameter = { min = 0.0603, max = 0.0667 }\n"
+                  "[player]\ncenter = 0.09\nomega = 51\nball_speed = 40\n[objective]\nmaximize = \"peak_bbs\"\n"
+                  "z = { start = 0.55, stop = 0.80, step = 0.01 }\n[constraints]\nstandard = \"bbcor\"\n");
+  const OptimizationProblem problem = load_optimization(file);
+  const DesignEvaluation e = evaluate_design(problem, {0.0655}, serial_map);
+  REQUIRE(e.status == EvaluationStatus::ok);
+  const Certification c = certify(design_at(problem, {0.0655}), problem.standard, CertifyOptions{});
+  std::vector<std::string> labels;
+  for (const Constraint& k : problem.constraints) labels.push_back(k.label());
+  CHECK(labels == std::vector<std::string>{"bbcor_max", "barrel_diameter_max", "drop_max", "length_max"});
+  // The optimiser solves the modes its impacts ask (auto, a partial solve), certify all of them:
+  // the measure agrees to the auto modes' stated error.
+  CHECK(e.constraints[0] == Approx(c.measure).epsilon(1e-5));
+  for (std::size_t i = 1; i < c.checks.size(); ++i) {
+    INFO(c.checks[i].rule);
+    CHECK(e.constraints[i] == c.checks[i].value);
+    CHECK(problem.constraints[i].limit == c.checks[i].limit);
+  }
+  CHECK(feasible(problem, e) == c.pass);
+}
