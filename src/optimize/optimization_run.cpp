@@ -215,9 +215,10 @@ void run_optimization(const OptimizationProblem& problem, const OptimizeOptions&
   std::unique_ptr<OutputClaim> claim = claim_output(problem, options, rank);
   if (rank != 0) return serve(problem);
 
-  spdlog::info("optimising {} ({} free parameters, {}, at most {} evaluations) on {} ranks x {} threads",
+  spdlog::info("optimising {} ({} free parameters, {}, at most {} evaluations) on {} rank{} x {} thread{}",
                problem.file.string(), problem.free.size(), to_string(problem.optimizer.algorithm),
-               problem.optimizer.max_evaluations, ranks, omp_get_max_threads());
+               problem.optimizer.max_evaluations, ranks, ranks == 1 ? "" : "s", omp_get_max_threads(),
+               omp_get_max_threads() == 1 ? "" : "s");
   JournaledEvaluator evaluator(problem, claim->journal, options.verbosity);
   OptimizationHistory history;
   try {
@@ -247,8 +248,9 @@ void run_optimization(const OptimizationProblem& problem, const OptimizeOptions&
     for (std::size_t i = 0; i < best.x.size(); ++i) design += fmt::format(" {}={:.9g}", problem.free[i].name, best.x[i]);
     spdlog::info("best: evaluation {}:{} -> {} {:.9g}", history.best, design, to_string(problem.objective.kind), best.objective);
   }
-  spdlog::info("{} evaluations in {:.2f} s on {} ranks x {} threads ({}); wrote {}", history.evaluations.size(),
-               info.wall_time, ranks, omp_get_max_threads(), history.stop_reason, options.output.string());
+  spdlog::info("{} evaluations in {:.2f} s on {} rank{} x {} thread{} ({}); wrote {}",
+               history.evaluations.size(), info.wall_time, ranks, ranks == 1 ? "" : "s", omp_get_max_threads(),
+               omp_get_max_threads() == 1 ? "" : "s", history.stop_reason, options.output.string());
 }
 
 }  // namespace sweetspot
