@@ -110,7 +110,7 @@ TEST_CASE("Hoop frequency of a uniform thin tube is the ring's n = 2 closed form
   }
 }
 
-TEST_CASE("A solid bat has no wall; a hollow one's impact reports its hoop frequency", "[barrel]") {
+TEST_CASE("A solid bat has no wall, and a hollow one's impact reports its hoop frequency", "[barrel]") {
   const ModalBasis wood = compute_modes(load_bat(source_path("studies/bats/r161.toml")), BeamTheory::timoshenko);
   CHECK(wood.wall.empty());
   const ImpactResult r = simulate_impact(wood, barrel_scene(0.72));
