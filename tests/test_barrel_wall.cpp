@@ -124,6 +124,21 @@ TEST_CASE("A solid bat has no wall, and a hollow one's impact reports its hoop f
   CHECK(hollow.energy.barrel > 0);
 }
 
+TEST_CASE("A wooden cup is no tube: a bore shorter than the ovaling's spread has no wall mode", "[barrel]") {
+  // maple_271's cupped end: 1 in deep, half the barrel wide. Its wall would spread an ovaling over
+  // more than its depth, so the beam alone takes the ball there, as on any wooden bat.
+  const Bat maple = load_bat(source_path("studies/bats/maple_271.toml"));
+  REQUIRE(maple.hollow());
+  const ModalBasis basis = compute_modes(maple, BeamTheory::timoshenko, ModeRequest::rigid_only());
+  for (const double z : {0.815, 0.825, 0.835}) CHECK(basis.wall_at(z) == nullptr);
+  const WallMode cup = wall_mode(maple.outer_diameter.back(), maple.inner_diameter.back(), maple.material);
+  CHECK(cup.spread > 0.0254);
+  // The alloy bat's bore runs its whole length, far longer than its barrel's spread (about 17 cm).
+  const ModalBasis alloy = compute_modes(build_bat(design_of(alloy_file)), BeamTheory::timoshenko,
+                                         ModeRequest::rigid_only());
+  for (const double z : {0.6, 0.7, 0.8, 0.835}) CHECK(alloy.wall_at(z) != nullptr);
+}
+
 TEST_CASE("Wooden bats are bitwise what the beam alone gives, by every integrator", "[barrel]") {
   // A solid bat's basis has no wall: the same scene on a hollow bat's basis stripped of its wall
   // is the beam-only path, and a wooden bat must take exactly that path.

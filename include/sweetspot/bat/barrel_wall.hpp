@@ -19,6 +19,9 @@
 // Assumptions: thin wall (h << a), no Poisson coupling (a ring, not a plate strip), a tube long
 // against 2 / beta on both sides of the impact (the open barrel end is not modelled), a point
 // load (the ball's contact patch is not), one mode (n = 2) standing for the wall's whole yield.
+// A bore shorter than the largest spread 2 / beta of its sections (a wooden bat's cupped end: 1 in
+// deep, a wall half the radius thick, 2 / beta 4.4 cm) is no tube that can oval: its slices have
+// no wall mode, and the beam alone takes the ball there.
 #include <numbers>
 #include <vector>
 
@@ -41,13 +44,16 @@ struct WallMode {
   double mass = 0;         // kg: the mode's mass at the contact point, k_w / omega^2
   double loss_factor = 0;  // the wall's material loss factor eta (Material::wall_loss_factor)
 
+  double spread = 0;        // m: 2 / beta, the length of tube the ovaling takes up
+
   double frequency_hz() const { return omega / (2 * std::numbers::pi); }
 };
 
 // The wall mode of a section of these diameters (inner < outer, both > 0) and material.
 WallMode wall_mode(double outer_diameter, double inner_diameter, const Material& material);
 
-// One wall mode per slice, a solid slice's (no bore) with mass 0; empty for a solid bat.
+// One wall mode per slice, with mass 0 where the slice is solid or its bore (the run of hollow
+// slices it lies in) is shorter than the largest spread along it; empty for a solid bat.
 std::vector<WallMode> barrel_wall(const Bat& bat);
 
 }  // namespace sweetspot
