@@ -250,6 +250,24 @@ TEST_CASE("The energy balance closes with the wall at default settings", "[barre
   }
 }
 
+TEST_CASE("rk4, exact and dopri integrate the wall mode alike", "[barrel]") {
+  const ModalBasis alloy = compute_modes(build_bat(design_of(alloy_file)), BeamTheory::timoshenko);
+  ImpactScene scene = barrel_scene(0.68);
+  scene.accuracy = 1e-7;  // each method's step (or tolerance) chosen for the pulse and the wall
+  double vf[3];
+  int i = 0;
+  for (const Method method : {Method::rk4, Method::exact, Method::dopri}) {
+    scene.integrator.method = method;
+    const ImpactResult r = simulate_impact(alloy, scene);
+    REQUIRE(r.status == CollisionStatus::ok);
+    CHECK(r.energy.barrel > 0);
+    CHECK(std::abs(r.energy.residual) <= 1e-6 * r.energy.initial);
+    vf[i++] = r.vf;
+  }
+  CHECK(vf[0] == Approx(vf[1]).epsilon(1e-6));
+  CHECK(vf[2] == Approx(vf[1]).epsilon(1e-6));
+}
+
 TEST_CASE("A wall far stiffer than the pulse gives the beam-only result within 0.5 %", "[barrel]") {
   BatDesign thick = design_of(alloy_file);
   set_design_parameter(thick, "wall_thickness", 0.011);

@@ -79,10 +79,12 @@ void validate_history(const HistoryRequest& h, double length) {
 
 // The wall's ovaling as one more mode of the contact (barrel_wall.hpp): mass-normalised, its
 // shape at the contact point is 1 / sqrt(m_w); it starts at rest, whatever the bat's swing. A bat
-// kept rigid (no vibrational mode) has no wall either.
+// kept rigid (no vibrational mode) has no wall either, though its section has a hoop frequency.
 void add_wall_mode(const ImpactScene& scene, const ModalBasis& basis, SceneGeometry& g) {
   const WallMode* wall = basis.wall_at(g.z);
-  if (!wall || scene.vibrational_modes == 0) return;
+  if (!wall) return;
+  g.hoop_frequency = wall->frequency_hz();
+  if (scene.vibrational_modes == 0) return;
   ModalContact& c = g.contact;
   const int n = c.count();
   c.omega.conservativeResize(n + 1);
@@ -92,7 +94,6 @@ void add_wall_mode(const ImpactScene& scene, const ModalBasis& basis, SceneGeome
   c.psi(n) = 1 / std::sqrt(wall->mass);
   c.velocity0(n) = 0;
   g.wall = n;
-  g.hoop_frequency = wall->frequency_hz();
 }
 
 }  // namespace
