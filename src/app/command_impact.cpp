@@ -35,6 +35,7 @@ Json energy_json(const ImpactEnergy& e) {
       .add("bat_rotation", e.bat_rotation)
       .add("vibration", e.vibration)
       .add("ball_dissipated", e.ball_dissipated)
+      .add("barrel", e.barrel)
       .add("residual", e.residual);
 }
 
@@ -51,6 +52,7 @@ void print_json(const ImpactResult& r) {
       .add("peak_force", r.peak_force)
       .add("impulse", r.impulse)
       .add("bat_speed", r.bat_speed)
+      .add("hoop_frequency", r.hoop_frequency)  // null where the struck section is solid
       .add("e_a", r.rig.e_a)
       .add("bbcor", r.rig.bbcor)  // these three null for a free bat: no rig holds it
       .add("besr", r.rig.besr)
@@ -77,8 +79,14 @@ void print_text(const ImpactResult& r) {
   const ImpactEnergy& e = r.energy;
   std::printf("energy/J        initial %.6g = ball %.6g + bat translation %.6g + rotation %.6g\n", e.initial, e.ball,
               e.bat_translation, e.bat_rotation);
-  std::printf("                + vibration %.6g + dissipated in the ball %.6g + residual %.3g\n", e.vibration,
-              e.ball_dissipated, e.residual);
+  if (std::isfinite(r.hoop_frequency)) {  // a hollow struck section: its wall takes a share
+    std::printf("                + vibration %.6g + dissipated in the ball %.6g + barrel wall %.6g\n", e.vibration,
+                e.ball_dissipated, e.barrel);
+    std::printf("                + residual %.3g; the wall's hoop frequency %.5g Hz\n", e.residual, r.hoop_frequency);
+  } else {
+    std::printf("                + vibration %.6g + dissipated in the ball %.6g + residual %.3g\n", e.vibration,
+                e.ball_dissipated, e.residual);
+  }
   std::printf("vibration/J by mode:");
   for (std::size_t n = 0; n < r.mode_energy.size(); ++n)
     std::printf("%s%d: %.4g", n % 6 ? ", " : "\n  ", r.modes_kept[n], r.mode_energy[n]);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "sweetspot/bat/barrel_wall.hpp"
 #include "sweetspot/bat/material_presets.hpp"
 #include "sweetspot/input_error.hpp"
 #include "toml_values.hpp"
@@ -26,6 +27,13 @@ constexpr std::array<MaterialField, 4> material_fields = {{
     {"shear_coefficient", "", &Material::shear_coefficient},
 }};
 
+// The wall's constants (barrel_wall.hpp), study axes like the others but with rules of their own:
+// a hoop modulus of 0 stands for the isotropic wall (youngs_modulus), a loss factor lies in [0, 1).
+constexpr std::array<MaterialField, 2> wall_fields = {{
+    {"hoop_modulus", "Pa", &Material::hoop_modulus},
+    {"wall_loss_factor", "", &Material::wall_loss_factor},
+}};
+
 std::string with_unit(double value, std::string_view unit) {
   std::string text = format_number(value);
   if (!unit.empty()) text.append(" ").append(unit);
@@ -35,6 +43,18 @@ std::string with_unit(double value, std::string_view unit) {
 std::optional<RuleBreak> positive_rule_break(std::string_view name, double value, std::string_view unit) {
   if (std::isfinite(value) && value > 0) return std::nullopt;
   return RuleBreak{std::string(name), std::string(name) + " " + with_unit(value, unit) + " is not a positive, finite number"};
+}
+
+std::optional<RuleBreak> wall_material_rule_break(const Material& m) {
+  if (!(std::isfinite(m.hoop_modulus) && m.hoop_modulus >= 0))
+    return RuleBreak{"hoop_modulus", "hoop_modulus " + with_unit(m.hoop_modulus, "Pa") +
+                                         " is not a positive, finite number (or 0 for youngs_modulus)"};
+  if (!(m.wall_loss_factor >= 0 && m.wall_loss_factor < 1))
+    return RuleBreak{"wall_loss_factor", "wall_loss_factor " + format_number(m.wall_loss_factor) + " is not in [0, 1)"};
+  if (m.wall_loss_factor != 0)
+    return RuleBreak{"wall_loss_factor", "wall_loss_factor " + format_number(m.wall_loss_factor) + ": " +
+                                             wall_damping_missing};
+  return std::nullopt;
 }
 
 // A knot profile keeps its knots when the length changes: they must stay on the bat.
@@ -56,6 +76,8 @@ template <class Design>
 auto find_parameter(Design& d, std::string_view name) -> decltype(&d.length) {
   if (name == "length") return &d.length;
   for (const MaterialField& f : material_fields)
+    if (name == f.name) return &(d.material.*f.value);
+  for (const MaterialField& f : wall_fields)
     if (name == f.name) return &(d.material.*f.value);
   if (d.dimensions)
     for (const DimensionField& f : dimension_fields)
@@ -92,6 +114,7 @@ Bat build_bat(const BatDesign& design) {
 std::vector<std::string> design_parameters(const BatDesign& design) {
   std::vector<std::string> names = {"length"};
   for (const MaterialField& f : material_fields) names.emplace_back(f.name);
+  for (const MaterialField& f : wall_fields) names.emplace_back(f.name);
   if (design.dimensions)
     for (const DimensionField& f : dimension_fields) names.emplace_back(f.name);
   return names;
@@ -106,6 +129,9 @@ void set_design_parameter(BatDesign& design, std::string_view name, double value
                      "' lists one diameter per slice (z_center_m), which fixes its length at " +
                      format_number(design.length) + " m; expected " + format_number(design.length) +
                      ", or a bat of knots (z_m) or [dimensions] to vary the length");
+  // 0 stands for "as youngs_modulus" only where a bat file leaves the key out: a value set is a modulus.
+  if (name == "hoop_modulus" && !(value > 0 && std::isfinite(value)))
+    throw InputError("bat parameter 'hoop_modulus' = " + format_number(value) + ": expected a positive, finite modulus (Pa)");
   *parameter = value;
 }
 
@@ -139,6 +165,7 @@ std::optional<RuleBreak> rule_break(const BatDesign& design) {
   if (auto rule = positive_rule_break("length", design.length, "m")) return rule;
   for (const MaterialField& f : material_fields)
     if (auto rule = positive_rule_break(f.name, design.material.*f.value, f.unit)) return rule;
+  if (auto rule = wall_material_rule_break(design.material)) return rule;
   if (design.dimensions) return dimensions_rule_break(*design.dimensions, design.length);
   return knot_rule_break(design);
 }

@@ -16,6 +16,7 @@
 
 #include <toml++/toml.h>
 
+#include "sweetspot/bat/barrel_wall.hpp"
 #include "sweetspot/bat/bat_design.hpp"
 #include "sweetspot/bat/dimensions.hpp"
 #include "sweetspot/bat/profile.hpp"
@@ -146,6 +147,15 @@ struct Section {
          "value " + describe(node) + " must be a " + (nan_or_inf ? "finite " : "") + number);
   }
 
+  // A finite number in [0, 1), `fallback` when the key is absent: a loss factor.
+  double fraction(std::string_view key, double fallback) const {
+    if (!table.contains(key)) return fallback;
+    const toml::node& node = *table.get(key);
+    const auto x = node.is_number() ? node.value<double>() : std::nullopt;
+    if (x && *x >= 0 && *x < 1) return *x;
+    fail(where(key), "value " + describe(node) + " must be a number in [0, 1)");
+  }
+
   // A finite number of at least 0, 0 when the key is absent (a dimension the bat does not have).
   double non_negative(std::string_view key, std::string_view unit) const {
     if (!table.contains(key)) return 0;
@@ -187,7 +197,8 @@ toml::table parse_toml(const fs::path& file, const std::string& text) {
 
 // The wood's constants as given, or a preset's with any of them given overriding it.
 void read_material(const Section& s, BatDesign& design) {
-  s.reject_unknown({"preset", "density", "youngs_modulus", "shear_modulus", "shear_coefficient"});
+  s.reject_unknown(
+      {"preset", "density", "youngs_modulus", "shear_modulus", "shear_coefficient", "hoop_modulus", "wall_loss_factor"});
   if (s.table.contains("preset")) {
     const std::string name = s.text("preset");
     try {
@@ -202,6 +213,11 @@ void read_material(const Section& s, BatDesign& design) {
   m.youngs_modulus = s.positive("youngs_modulus", "Pa", preset(m.youngs_modulus));
   m.shear_modulus = s.positive("shear_modulus", "Pa", preset(m.shear_modulus));
   m.shear_coefficient = s.positive("shear_coefficient", "dimensionless", 1.0);
+  // A hollow barrel's wall (barrel_wall.hpp): absent, the hoop modulus is youngs_modulus (0).
+  m.hoop_modulus = s.positive("hoop_modulus", "Pa", 0.0);
+  m.wall_loss_factor = s.fraction("wall_loss_factor", default_wall_loss_factor);
+  if (m.wall_loss_factor != 0)
+    fail(s.where("wall_loss_factor"), "value " + format_number(m.wall_loss_factor) + ": " + wall_damping_missing);
 }
 
 // [dimensions] (dimensions.hpp): lengths in m; end and its depth and the wall optional.

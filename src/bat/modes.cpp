@@ -1,5 +1,6 @@
 #include "sweetspot/bat/modes.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -124,7 +125,15 @@ ModalBasis compute_modes(const Bat& bat, BeamTheory theory, ModeRequest request)
   if (partial && !basis.complete())
     basis.solved_below = request.vibrational > 0 ? basis.omega(basis.count() - 1) : request.below_omega;
   if (!request.is_rigid_only()) basis.flexibility = vibrational_flexibility_band(s, basis.vectors.leftCols(2));
+  basis.wall = barrel_wall(bat);
   return basis;
+}
+
+const WallMode* ModalBasis::wall_at(double z) const {
+  if (wall.empty()) return nullptr;
+  const int n = static_cast<int>(wall.size());
+  const int slice = std::clamp(static_cast<int>(std::floor(z / length() * n)), 0, n - 1);
+  return wall[slice].mass > 0 ? &wall[slice] : nullptr;
 }
 
 double ModalBasis::vibrational_compliance_at(double z) const {

@@ -82,6 +82,7 @@ Certification certify(const BatDesign& design, const Standard& standard, const C
   c.z_max = peak.x;
   c.measure = peak.value;
   c.at_max = rig_hit(basis, rig, peak.x);
+  if (const WallMode* wall = basis.wall_at(peak.x)) c.hoop_frequency = wall->frequency_hz();
   c.evaluations = peak.evaluations + 1;
   const MassProperties exact = design_mass_properties(design);
   c.mass = exact.mass;

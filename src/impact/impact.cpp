@@ -24,10 +24,12 @@ int rigid_modes(const ImpactScene& scene) { return scene.pivoted ? 1 : 2; }
 void bat_energies(const ImpactScene& scene, const SceneGeometry& g, const ModalBasis& basis, const Collision& c,
                   ImpactResult& r) {
   const int rigid = rigid_modes(scene);
-  for (int n = rigid; n < g.contact.count(); ++n) {
+  const int beam = g.wall >= 0 ? g.wall : g.contact.count();  // the wall mode is last
+  for (int n = rigid; n < beam; ++n) {
     r.mode_energy.push_back(c.mode_energy(g.contact, n));
     r.energy.vibration += r.mode_energy.back();
   }
+  if (g.wall >= 0) r.energy.barrel = c.mode_energy(g.contact, g.wall);
   if (scene.pivoted) {
     const double arm = basis.z_cm - g.pivot;
     const double translation_share = basis.mass * arm * arm / (basis.moment_of_inertia_cm + basis.mass * arm * arm);
@@ -61,7 +63,7 @@ void add_force_analyses(const ImpactScene& scene, const ModalBasis& basis, const
   }
   if (scene.mode_response) {
     const std::vector<double> all = mode_responses(g.contact, scene.ball.mass, c.force);
-    r.mode_response.assign(all.begin() + rigid_modes(scene), all.end());
+    r.mode_response.assign(all.begin() + rigid_modes(scene), g.wall >= 0 ? all.begin() + g.wall : all.end());
   }
 }
 
@@ -75,7 +77,8 @@ std::vector<double> force_response_grid() {
 
 void close_balance(ImpactResult& r) {
   ImpactEnergy& e = r.energy;
-  e.residual = e.initial - (e.ball + e.bat_translation + e.bat_rotation + e.vibration + e.ball_dissipated);
+  // The barrel's term last: 0 for a solid section, so a wooden bat's sum is what it always was.
+  e.residual = e.initial - (e.ball + e.bat_translation + e.bat_rotation + e.vibration + e.ball_dissipated + e.barrel);
   if (r.status != CollisionStatus::ok || std::abs(e.residual) <= balance_limit * e.initial) return;  // NaN: not
   char text[200];
   std::snprintf(text, sizeof text,
@@ -107,7 +110,8 @@ const char* first_non_finite(const ImpactResult& r, const AskedValues& asked) {
       {"vf_rigid", asked.vf_rigid ? r.vf_rigid : 0.0},
       {"vf_van_zandt", asked.vf_van_zandt ? r.vf_van_zandt : 0.0},
       {"bbs_linear", asked.bbs_linear ? r.bbs_linear : 0.0},
-      {"energy", e.initial + e.ball + e.bat_translation + e.bat_rotation + e.vibration + e.ball_dissipated + e.residual},
+      {"energy", e.initial + e.ball + e.bat_translation + e.bat_rotation + e.vibration + e.ball_dissipated + e.residual +
+                     e.barrel},
   };
   for (const auto& [name, value] : scalars)
     if (!std::isfinite(value)) return name;
@@ -185,12 +189,14 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& given) 
   if (!scene.integrator.record_force) r.force.clear();  // recorded for this function's use alone
   r.z = g.z;
   r.bat_speed = g.bat_speed;
+  r.hoop_frequency = g.hoop_frequency;
   r.modes_kept = g.modes_kept;
   r.modes_error = g.modes_error;
   if (c.status == CollisionStatus::refused_step) return r;
   if (c.status == CollisionStatus::no_contact) {  // nothing happened: no result
     r.e_eff = std::nan("");
-    r.energy = {std::nan(""), std::nan(""), std::nan(""), std::nan(""), std::nan(""), std::nan(""), std::nan("")};
+    r.energy = {std::nan(""), std::nan(""), std::nan(""), std::nan(""), std::nan(""), std::nan(""), std::nan(""),
+                std::nan("")};
     return r;
   }
   if (scene.rigid_comparison) r.vf_rigid = rigid_exit_speed(scene.ball.e0, g.recoil, scene.ball_speed, g.bat_speed);

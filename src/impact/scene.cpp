@@ -77,11 +77,33 @@ void validate_history(const HistoryRequest& h, double length) {
     if (!lies_on_bat(z, length)) reject("probes", z, "must lie on the bat (0 to " + std::to_string(length) + " m)");
 }
 
+// The wall's ovaling as one more mode of the contact (barrel_wall.hpp): mass-normalised, its
+// shape at the contact point is 1 / sqrt(m_w); it starts at rest, whatever the bat's swing. A bat
+// kept rigid (no vibrational mode) has no wall either, though its section has a hoop frequency.
+void add_wall_mode(const ImpactScene& scene, const ModalBasis& basis, SceneGeometry& g) {
+  const WallMode* wall = basis.wall_at(g.z);
+  if (!wall) return;
+  g.hoop_frequency = wall->frequency_hz();
+  if (scene.vibrational_modes == 0) return;
+  ModalContact& c = g.contact;
+  const int n = c.count();
+  c.omega.conservativeResize(n + 1);
+  c.psi.conservativeResize(n + 1);
+  c.velocity0.conservativeResize(n + 1);
+  c.omega(n) = wall->omega;
+  c.psi(n) = 1 / std::sqrt(wall->mass);
+  c.velocity0(n) = 0;
+  g.wall = n;
+}
+
 }  // namespace
 
 Eigen::VectorXd SceneGeometry::shapes_at(const ModalBasis& basis, double z) const {
   const Eigen::VectorXd free = basis.shapes_at(z)(kept);
-  return held.size() ? Eigen::VectorXd(held.transpose() * free) : free;
+  Eigen::VectorXd shapes = held.size() ? Eigen::VectorXd(held.transpose() * free) : free;
+  // The wall's ovaling is local: it moves no other point of the bat's axis.
+  if (wall >= 0) shapes.conservativeResizeLike(Eigen::VectorXd::Zero(wall + 1));
+  return shapes;
 }
 
 void validate(const ImpactScene& scene, const ModalBasis& basis) {
@@ -168,6 +190,7 @@ SceneGeometry scene_geometry(const ImpactScene& scene, const ModalBasis& basis) 
     g.contact = constrained_modes(free, basis.shapes_at(g.pivot)(kept), g.held);
     g.contact.residual_compliance = free.residual_compliance;
   }
+  add_wall_mode(scene, basis, g);
   return g;
 }
 

@@ -46,12 +46,12 @@ py::dict result_dict(const ImpactResult& r) {
   if (!r.message.empty()) d["message"] = r.message;
   d["z"] = r.z, d["vf"] = r.vf, d["e_eff"] = r.e_eff, d["contact_time"] = r.contact_time;
   d["collision_time"] = r.collision_time, d["u_max"] = r.u_max, d["peak_force"] = r.peak_force;
-  d["impulse"] = r.impulse, d["bat_speed"] = r.bat_speed, d["e_a"] = r.rig.e_a, d["bbcor"] = r.rig.bbcor;
+  d["impulse"] = r.impulse, d["bat_speed"] = r.bat_speed, d["hoop_frequency"] = r.hoop_frequency, d["e_a"] = r.rig.e_a, d["bbcor"] = r.rig.bbcor;
   d["besr"] = r.rig.besr, d["bpf"] = r.rig.bpf;
   py::dict e;
   e["initial"] = r.energy.initial, e["ball"] = r.energy.ball, e["bat_translation"] = r.energy.bat_translation;
   e["bat_rotation"] = r.energy.bat_rotation, e["vibration"] = r.energy.vibration;
-  e["ball_dissipated"] = r.energy.ball_dissipated, e["residual"] = r.energy.residual;
+  e["ball_dissipated"] = r.energy.ball_dissipated, e["barrel"] = r.energy.barrel, e["residual"] = r.energy.residual;
   d["energy"] = e;
   d["mode_energy"] = array(r.mode_energy);
   d["modes_kept"] = py::array_t<int>(r.modes_kept.size(), r.modes_kept.data());
@@ -65,7 +65,7 @@ const std::vector<std::string> impacts_outputs = {
     "vf",     "e_eff",       "bat_speed",      "e_a",         "bbcor",      "besr",
     "bpf",    "contact_time", "collision_time", "u_max",      "peak_force", "impulse",
     "energy_initial", "energy_ball", "energy_bat_translation", "energy_bat_rotation", "energy_vibration",
-    "energy_ball_dissipated", "energy_residual", "modes_error"};
+    "energy_ball_dissipated", "energy_residual", "modes_error", "hoop_frequency", "energy_barrel"};
 
 void fill_row(const ImpactResult& r, double* row) {
   const double values[] = {r.vf,
@@ -87,7 +87,9 @@ void fill_row(const ImpactResult& r, double* row) {
                            r.energy.vibration,
                            r.energy.ball_dissipated,
                            r.energy.residual,
-                           r.modes_error};
+                           r.modes_error,
+                           r.hoop_frequency,
+                           r.energy.barrel};
   std::copy(std::begin(values), std::end(values), row);
 }
 

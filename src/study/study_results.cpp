@@ -58,6 +58,8 @@ const std::map<std::string, Description>& descriptions() {
       {"energy_vibration", {"J", "final vibrational energy of the bat"}},
       {"energy_ball_dissipated", {"J", "energy dissipated in the ball"}},
       {"energy_residual", {"J", "energy balance residual (integration error)"}},
+      {"energy_barrel", {"J", "final energy of the barrel wall's ovaling (hollow barrels)"}},
+      {"hoop_frequency", {"Hz", "lowest hoop (ovaling) frequency of the struck section's wall; NaN where solid"}},
       {"mode_energy", {"J", "final energy of each vibrational mode"}},
       {"mode_response", {"1", "response R_n = m psi_n^2 g(omega_n) of each kept vibrational mode"}},
       {"force_response", {"1", "g(omega tau) = |integral of F(t)/impulse exp(i omega t) dt|^2 of the force profile"}},
@@ -121,6 +123,7 @@ double energy_value(const ImpactEnergy& e, const std::string& name) {
   if (name == "energy_bat_rotation") return e.bat_rotation;
   if (name == "energy_vibration") return e.vibration;
   if (name == "energy_ball_dissipated") return e.ball_dissipated;
+  if (name == "energy_barrel") return e.barrel;
   return e.residual;
 }
 
@@ -129,6 +132,7 @@ double scalar_value(const ImpactResult& r, const std::string& name) {
   if (r.status != CollisionStatus::ok) return missing;
   if (name == "vf" || name == "bbs") return r.vf;  // the ball's exit speed is the batted-ball speed
   if (name == "bat_speed") return r.bat_speed;
+  if (name == "hoop_frequency") return r.hoop_frequency;
   if (name == "bbs_linear") return r.bbs_linear;
   if (name == "vf_rigid") return r.vf_rigid;
   if (name == "vf_van_zandt") return r.vf_van_zandt;

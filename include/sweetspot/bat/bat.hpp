@@ -14,6 +14,12 @@ struct Material {
   double youngs_modulus = 0;     // Pa
   double shear_modulus = 0;      // Pa
   double shear_coefficient = 1;  // kappa; N2000 folds it into S (kappa = 1)
+  // A hollow barrel's wall (barrel_wall.hpp). youngs_modulus is the axial modulus; a composite
+  // wall's hoop (circumferential) modulus may differ: 0 means an isotropic wall (youngs_modulus).
+  double hoop_modulus = 0;      // Pa
+  double wall_loss_factor = 0;  // eta of the wall's ovaling, in [0, 1)
+
+  double wall_hoop_modulus() const { return hoop_modulus > 0 ? hoop_modulus : youngs_modulus; }
 };
 
 // The slice counts a bat may have, from its profile or resampled (--slices, `slices`): fewer

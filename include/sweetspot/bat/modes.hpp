@@ -6,6 +6,7 @@
 #include <limits>
 #include <vector>
 
+#include "sweetspot/bat/barrel_wall.hpp"
 #include "sweetspot/bat/bat.hpp"
 #include "sweetspot/bat/beam_layout.hpp"
 
@@ -36,6 +37,8 @@ struct ModalBasis {
   // not, near its diagonal: flexibility(i, d) = G(i, i + d), d = 0..3 (beam_flexibility.hpp).
   // Empty for a rigid-only basis.
   Eigen::MatrixXd flexibility;
+  // The barrel wall's hoop mode per slice (barrel_wall.hpp); empty for a solid bat.
+  std::vector<WallMode> wall;
 
   int count() const { return static_cast<int>(omega.size()); }
   // Every mode of the discretisation solved (rigid-only bases are not).
@@ -50,6 +53,8 @@ struct ModalBasis {
   // The part of it that the unsolved modes carry (0 for a complete basis): the total minus the
   // solved modes' psi^2 / omega^2, never below 0.
   double unsolved_compliance_at(double z) const;
+  // The wall mode of the slice holding z, or nullptr where that slice is solid.
+  const WallMode* wall_at(double z) const;
   // Vibrational frequencies in Hz (modes 2, 3, ...), ascending.
   std::vector<double> vibrational_frequencies_hz() const;
   // Zeros of psi_n between slice centres, found by linear interpolation, m from the knob.

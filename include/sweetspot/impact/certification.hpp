@@ -2,6 +2,7 @@
 // A bat certified in the virtual rig (README "Certification"): the standard's measure scanned
 // over the barrel, its maximum located between scan points, and the standard's rules checked.
 // Physics and rules only; `sweetspot certify` prints it and the certification study stores it.
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,6 +48,8 @@ struct Certification {
   double z_max = 0;      // m from the knob, where the measure peaks
   double measure = 0;    // the standard's measure there
   RigMeasures at_max;    // every measure there
+  // The lowest hoop frequency of the wall there (barrel_wall.hpp), Hz; NaN for a solid section.
+  double hoop_frequency = std::numeric_limits<double>::quiet_NaN();
   // The designer's numbers, exact for the designed shape (design_mass_properties), not summed
   // over slices: mass, MOI about the pivot, drop, length, the largest outer diameter.
   double mass = 0, moi_pivot = 0, drop = 0, length = 0, barrel_diameter = 0;

@@ -15,7 +15,7 @@
 namespace sweetspot {
 
 // Energies in J. initial = ball + bat_translation + bat_rotation + vibration + ball_dissipated +
-// residual; the residual measures the integration error.
+// barrel + residual; the residual measures the integration error.
 struct ImpactEnergy {
   double initial = 0;
   double ball = 0;
@@ -24,6 +24,9 @@ struct ImpactEnergy {
   double vibration = 0;
   double ball_dissipated = 0;
   double residual = 0;
+  // A hollow barrel's wall (barrel_wall.hpp): the energy its ovaling holds after the collision
+  // (0 where the struck slice is solid). It is a normal mode of its own, apart from `vibration`.
+  double barrel = 0;
 };
 
 struct ImpactResult {
@@ -38,6 +41,8 @@ struct ImpactResult {
   double peak_force = 0;      // N
   double impulse = 0;         // N s
   double bat_speed = 0;       // m/s: the struck point's speed toward the ball at first touch
+  // The struck slice's lowest hoop frequency (barrel_wall.hpp), Hz; NaN where it is solid.
+  double hoop_frequency = std::numeric_limits<double>::quiet_NaN();
   // The rules' linear estimate of vf (batted_ball.hpp), NaN unless the scene asks for it.
   double bbs_linear = std::numeric_limits<double>::quiet_NaN();
   // Exit speeds to compare with vf (physics.md §5), NaN unless the scene asks for them: the rigid

@@ -3,6 +3,7 @@
 // bat is pivoted, which modes are kept and how the collision is integrated.
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include "sweetspot/bat/inch_pound.hpp"
@@ -101,6 +102,9 @@ struct SceneGeometry {
   double modes_error = 0;       // auto_modes: estimated relative vf error of those dropped
   std::vector<int> kept;        // the basis's modes behind `contact` (0, 1 rigid)
   Eigen::MatrixXd held;         // pivoted: the held bat's modes in the kept ones; empty if free
+  // A hollow struck slice's wall mode (barrel_wall.hpp), the contact's last mode; -1 for none.
+  int wall = -1;
+  double hoop_frequency = std::numeric_limits<double>::quiet_NaN();  // Hz of the struck slice's wall
 
   // The shapes of the contact's modes at any point z of the bat (ModalBasis::shapes_at).
   Eigen::VectorXd shapes_at(const ModalBasis& basis, double z) const;
