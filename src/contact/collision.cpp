@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "contact/contact_state.hpp"
+#include "contact/damped_mode.hpp"
 #include "contact/dopri_stepper.hpp"
 #include "contact/exact_stepper.hpp"
 #include "contact/rk4_stepper.hpp"
@@ -22,7 +23,8 @@ using detail::ContactState;
 
 constexpr int max_contacts = 50;  // more than this is chatter, not a collision
 
-// Free flight: the ball coasts, every mode oscillates in closed form (rigid modes drift).
+// Free flight: the ball coasts, every mode oscillates in closed form (rigid modes drift, damped
+// ones decay, and what they lose is added to the dissipated energy, y's last entry).
 void evolve_free(const ModalContact& body, const VectorXd& y, double tau, VectorXd& out) {
   const int n = body.count();
   out = y;
@@ -31,6 +33,13 @@ void evolve_free(const ModalContact& body, const VectorXd& y, double tau, Vector
     const double w = body.omega(i), a = y(2 + i), v = y(2 + n + i);
     if (w == 0) {
       out(2 + i) = a + v * tau;
+      continue;
+    }
+    if (const double zeta = body.damping(i); zeta != 0) {
+      const detail::FreeEvolution e = detail::damped_free_evolution(w, zeta, tau);
+      out(2 + i) = e.aa * a + e.av * v;
+      out(2 + n + i) = e.va * a + e.vv * v;
+      out(2 + 2 * n) += detail::free_decay_loss(w, a, v, out(2 + i), out(2 + n + i));
       continue;
     }
     const double c = std::cos(w * tau), s = std::sin(w * tau);
@@ -55,13 +64,14 @@ std::string format(const char* pattern, double x, double y) {
 
 // Free rotations of every mode over 1 us, 2 us, 4 us, ... 8 ms: the free-flight search jumps
 // by these. The same for every impact that keeps the same modes, so each thread keeps them.
+// a -> c a + sn v, a' -> cv a' - w2sn a; cv = c but for damped modes (damped_mode.hpp).
 struct FreeRotations {
   static constexpr double base_step = 1e-6;
   struct Power {
     double step;
-    Eigen::ArrayXd c, sn, w2sn;
+    Eigen::ArrayXd c, sn, w2sn, cv;
   };
-  Eigen::ArrayXd omega;
+  Eigen::ArrayXd omega, damping;
   std::vector<Power> powers;
 
   // The longest rotation not longer than `jump` (the shortest when none is).
@@ -72,23 +82,39 @@ struct FreeRotations {
   }
 };
 
-const FreeRotations& free_rotations(const VectorXd& omega) {
+// The damped modes' entries of a rotation: their free evolution (damped_mode.hpp).
+void damp_rotation(const FreeRotations& r, FreeRotations::Power& p) {
+  for (Eigen::Index i = 0; i < r.damping.size(); ++i) {
+    if (r.damping(i) == 0) continue;
+    const detail::FreeEvolution e = detail::damped_free_evolution(r.omega(i), r.damping(i), p.step);
+    p.c(i) = e.aa, p.sn(i) = e.av, p.w2sn(i) = -e.va, p.cv(i) = e.vv;
+  }
+}
+
+const FreeRotations& free_rotations(const ModalContact& body) {
+  const VectorXd& omega = body.omega;
+  const Eigen::ArrayXd damping = body.damped() ? Eigen::ArrayXd(body.damping_ratio.array()) : Eigen::ArrayXd();
   std::size_t key = omega.size();
   for (double w : omega) key = key * 1099511628211ull ^ std::hash<double>()(w);
+  for (double zeta : damping) key = key * 1099511628211ull ^ std::hash<double>()(zeta);
   thread_local std::unordered_multimap<std::size_t, FreeRotations> cache;
   thread_local std::size_t stored = 0;
   const auto [first, last] = cache.equal_range(key);
   for (auto it = first; it != last; ++it)
-    if (it->second.omega.size() == omega.size() && (it->second.omega == omega.array()).all()) return it->second;
-  if (stored > 4'000'000) cache.clear(), stored = 0;  // doubles held: about 32 MB per thread at most
+    if (it->second.omega.size() == omega.size() && (it->second.omega == omega.array()).all() &&
+        it->second.damping.size() == damping.size() && (it->second.damping == damping).all())
+      return it->second;
+  if (stored > 4'000'000) cache.clear(), stored = 0;  // doubles held: about 40 MB per thread at most
   FreeRotations r;
   r.omega = omega.array();
+  r.damping = damping;
   for (double step = FreeRotations::base_step; step <= 8.2e-3; step *= 2) {
-    const Eigen::ArrayXd sine = (omega.array() * step).sin();
-    r.powers.push_back({step, (omega.array() * step).cos(), (omega.array() == 0).select(step, sine / omega.array()),
-                        omega.array() * sine});
+    const Eigen::ArrayXd sine = (omega.array() * step).sin(), cosine = (omega.array() * step).cos();
+    r.powers.push_back({step, cosine, (omega.array() == 0).select(step, sine / omega.array()), omega.array() * sine,
+                        cosine});
+    damp_rotation(r, r.powers.back());
   }
-  stored += 3 * r.powers.size() * omega.size();
+  stored += 4 * r.powers.size() * omega.size();
   return cache.emplace(key, std::move(r))->second;
 }
 
@@ -97,11 +123,11 @@ class CollisionRun {
  public:
   CollisionRun(const ModalContact& body, const Ball& ball, double ball_speed, const CollisionOptions& options)
       : body_(body), ball_(ball), options_(options), state_(body, ball),
-        stepper_(make_stepper(ball_speed)), y_(2 + 2 * body.count()) {
+        stepper_(make_stepper(ball_speed)), y_(state_.size()) {
     y_.setZero();
     y_(1) = -ball_speed;
     if (keeps_samples()) samples_.reserve(256);  // a contact's steps, mostly, without reallocation
-    y_.tail(body.count()) = body.velocity0;
+    y_.segment(2 + body.count(), body.count()) = body.velocity0;
   }
 
   Collision run() {
@@ -138,7 +164,7 @@ class CollisionRun {
     std::snprintf(text, sizeof text, "ball and bat never approach: closing speed %g m/s at the impact point", closing);
     result_.message = text;
     result_.ball_velocity = result_.contact_time = result_.collision_time = nan;
-    result_.u_max = result_.peak_force = result_.impulse = result_.dissipated = nan;
+    result_.u_max = result_.peak_force = result_.impulse = result_.dissipated = result_.damping_dissipated = nan;
     return result_;
   }
 
@@ -239,7 +265,7 @@ class CollisionRun {
     // Where the bounds allow only tiny jumps (a grazing approach), sample at least every 1 us:
     // a touch shorter than that may pass unseen. Jumps are whole powers of two of that, whose
     // rotations are kept, so a sample costs a few products per mode and no trigonometry.
-    const FreeRotations& rotations = free_rotations(body_.omega);
+    const FreeRotations& rotations = free_rotations(body_);
     const int n = body_.count();
     Eigen::ArrayXd a = y_.segment(2, n).array(), v = y_.segment(2 + n, n).array(), next_a(n);
     const auto psi = body_.psi.array();
@@ -255,7 +281,7 @@ class CollisionRun {
       previous = tau;
       const FreeRotations::Power& r = rotations.largest_within(std::max(-u / slope, FreeRotations::base_step));
       next_a = r.c * a + r.sn * v;
-      v = r.c * v - r.w2sn * a;
+      v = r.cv * v - r.w2sn * a;
       a.swap(next_a);
       s += y_(1) * r.step;
       tau += r.step;
@@ -288,6 +314,7 @@ class CollisionRun {
     result_.ball_velocity = y_(1);
     result_.a = y_.segment(2, n);
     result_.a_dot = y_.segment(2 + n, n);
+    if (const int k = state_.dissipated_index(); k >= 0) result_.damping_dissipated = y_(k);
     if (!options_.find_collision_time) result_.collision_time = std::nan("");
     else if (result_.status == CollisionStatus::ok) result_.collision_time = impulse_time(samples_, 0.99);
     if (options_.record_force) result_.force = std::move(samples_);

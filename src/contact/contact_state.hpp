@@ -1,9 +1,12 @@
 #pragma once
 // Internal: the state of ball and modes during a collision, shared by the steppers.
-// y = [s, v, a_0..a_{n-1}, a_0'..a_{n-1}'], s the ball's displacement from first touch (+y).
+// y = [s, v, a_0..a_{n-1}, a_0'..a_{n-1}'], s the ball's displacement from first touch (+y); with
+// damped modes one more entry, the energy their damping has dissipated (J), int 2 zeta w a'^2 dt,
+// integrated with the rest. Without damping y is exactly what it always was.
 #include <Eigen/Dense>
 #include <array>
 #include <cmath>
+#include <vector>
 
 #include "sweetspot/contact/ball.hpp"
 #include "sweetspot/contact/collision.hpp"
@@ -14,10 +17,21 @@ class ContactState {
  public:
   ContactState(const ModalContact& body, const Ball& ball)
       : body_(body), n_(body.count()), mass_(ball.mass), omega2_(body.omega.array().square()),
-        compliance_(body.residual_compliance), mobility_(1 / ball.mass + body.psi.squaredNorm()) {}
+        compliance_(body.residual_compliance), mobility_(1 / ball.mass + body.psi.squaredNorm()) {
+    for (int i = 0; i < n_; ++i)
+      if (body.damping(i) != 0) damped_.push_back({i, 2 * body.damping(i) * body.omega(i)});
+  }
 
   int modes() const { return n_; }
-  int size() const { return 2 + 2 * n_; }
+  int size() const { return 2 + 2 * n_ + (damped_.empty() ? 0 : 1); }
+  // The index of the dissipated energy in y, or -1 without damped modes.
+  int dissipated_index() const { return damped_.empty() ? -1 : 2 + 2 * n_; }
+  // A damped mode and its rate 2 zeta omega (the damping force per unit velocity).
+  struct DampedMode {
+    int mode;
+    double rate;
+  };
+  const std::vector<DampedMode>& damped() const { return damped_; }
   double ball_mass() const { return mass_; }
   const ModalContact& body() const { return body_; }
   const Eigen::ArrayXd& omega2() const { return omega2_; }
@@ -68,9 +82,12 @@ class ContactState {
     return law(ball_compression(compression(y), law));
   }
   // u'' = sum psi_n a_n'' - s'' = -sum psi_n omega_n^2 a_n - F (sum psi_n^2 + 1/m).
+  // Damped modes add -sum psi_n 2 zeta_n omega_n a_n'.
   double compression_acceleration(const Eigen::VectorXd& y, const ContactForce& law) const {
+    double damping = 0;
+    for (const DampedMode& d : damped_) damping += body_.psi(d.mode) * d.rate * y(2 + n_ + d.mode);
     return -(body_.psi.array() * omega2_ * y.segment(2, n_).array()).sum() -
-           force(y, law) * (body_.psi.squaredNorm() + 1 / mass_);
+           force(y, law) * (body_.psi.squaredNorm() + 1 / mass_) - damping;
   }
   // The frequency at which the contact itself rings: the ball's stiffness F'(u) (in series with
   // the residual compliance) against the mobility 1/m + sum psi_n^2 of ball and kept modes. On
@@ -95,6 +112,14 @@ class ContactState {
     dy(1) = force / mass_;
     dy.segment(2, n_) = y.segment(2 + n_, n_);
     dy.segment(2 + n_, n_) = -(omega2_ * y.segment(2, n_).array()).matrix() - force * body_.psi;
+    if (damped_.empty()) return;
+    double power = 0;  // the damping's dissipation rate, sum 2 zeta w a'^2
+    for (const DampedMode& d : damped_) {
+      const double v = y(2 + n_ + d.mode);
+      dy(2 + n_ + d.mode) -= d.rate * v;
+      power += d.rate * v * v;
+    }
+    dy(2 + 2 * n_) = power;
   }
 
  private:
@@ -104,11 +129,12 @@ class ContactState {
   Eigen::ArrayXd omega2_;
   double compliance_;
   double mobility_;
+  std::vector<DampedMode> damped_;
   mutable double last_u_ = -1, last_ball_u_ = 0, last_u_max_ = 0;
   // The state remembered (ball position and speed, first and last modal coordinates) and its u, u'.
   using Key = std::array<double, 4>;
   Key key(const Eigen::VectorXd& y) const {
-    return {y(0), y(1), n_ ? y(2) : 0.0, n_ ? y(y.size() - 1) : 0.0};
+    return {y(0), y(1), n_ ? y(2) : 0.0, n_ ? y(1 + 2 * n_) : 0.0};
   }
   bool known(const Eigen::VectorXd& y) const { return known_key_ == key(y); }
   mutable Key known_key_ = {std::nan(""), 0, 0, 0};

@@ -21,7 +21,9 @@ class DopriStepper {
     const double v = std::max(std::abs(ball_speed), 1e-3);
     scale_ = Eigen::VectorXd::Constant(state.size(), v * 1e-3);
     scale_(1) = v;
-    scale_.tail(n).setConstant(v);
+    scale_.segment(2 + n, n).setConstant(v);
+    // The damping's dissipated energy, on the scale of the ball's kinetic energy.
+    if (const int k = state.dissipated_index(); k >= 0) scale_(k) = 0.5 * state.ball_mass() * v * v;
   }
 
   double first_step() const { return h0_; }

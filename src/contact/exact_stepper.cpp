@@ -5,6 +5,8 @@
 #include <unordered_map>
 #include <cmath>
 
+#include "contact/damped_mode.hpp"
+
 namespace sweetspot::detail {
 
 namespace {
@@ -51,6 +53,49 @@ void monomial_responses(double w, double h, double cos_x, double sin_x, double p
   }
 }
 
+// The damped mode's P_k = int_0^tau G(tau - t) t^k dt and Q_k = int_0^tau G'(tau - t) t^k dt
+// (damped_mode.hpp; zeta = 0 gives the undamped P_k, Q_k above). By parts, Q_0 = G(tau),
+// Q_k = k P_{k-1}, and from G'' + 2 sigma G' + w^2 G = 0,
+//   P_k = (tau^k - k Q_{k-1} - 2 sigma Q_k) / w^2,  P_0 = (1 - G'(tau) - 2 sigma G(tau)) / w^2,
+// which is the undetermined coefficients' particular polynomial plus the fitted homogeneous part,
+// solved from the bottom up. It cancels for w tau < 4 as the undamped recursion does, and there
+// the Taylor series of G (beta_m = G^(m)(0) tau^m: beta_0 = 0, beta_1 = tau, beta_(m+2) =
+// -2 sigma tau beta_(m+1) - (w tau)^2 beta_m) integrates term by term, exactly:
+//   P_k = k! tau^(k+1) sum_m beta_m / (k + m + 1)!.
+void damped_monomial_responses(double w, double zeta, double tau, const ImpulseResponse& g, double p[powers],
+                               double q[powers]) {
+  const double x = w * tau, sigma = zeta * w;
+  double tau_power[powers + 1] = {1};
+  for (int k = 1; k <= powers; ++k) tau_power[k] = tau_power[k - 1] * tau;
+  if (x >= 4) {
+    const double w2 = w * w;
+    q[0] = g.g;
+    p[0] = (1 - g.g_rate - 2 * sigma * g.g) / w2;
+    for (int k = 1; k < powers; ++k) {
+      q[k] = k * p[k - 1];
+      p[k] = (tau_power[k] - k * q[k - 1] - 2 * sigma * q[k]) / w2;
+    }
+    return;
+  }
+  constexpr int terms = 48;  // (w tau)^m / m! < 1e-28 of the leading term by m = 48 at w tau = 4
+  double beta[terms] = {0, tau};
+  for (int m = 0; m + 2 < terms; ++m) beta[m + 2] = -2 * sigma * tau * beta[m + 1] - x * x * beta[m];
+  double factorial = 1;  // k!
+  for (int k = 0; k < powers; ++k) {
+    if (k > 0) factorial *= k;
+    double inverse = 1;  // 1 / (k + m + 1)!, from m = 0
+    for (int j = 2; j <= k + 1; ++j) inverse /= j;
+    double sum = 0;
+    for (int m = 0; m < terms; ++m) {
+      sum += beta[m] * inverse;
+      inverse /= k + m + 2;
+    }
+    p[k] = factorial * tau_power[k + 1] * sum;
+  }
+  q[0] = g.g;
+  for (int k = 1; k < powers; ++k) q[k] = k * p[k - 1];
+}
+
 // An interpolant's basis: row j is the polynomial (coefficients of t^0..t^5) that datum j
 // weights.
 using Basis = Eigen::Matrix<double, data_count, powers>;
@@ -87,20 +132,57 @@ Basis interpolant_basis(double past_ratio, double h) {
   return b;
 }
 
-// One mode's closed-form response over a step: c, sn, w2sn, then d and q for each datum.
-using ModeCoefficients = std::array<double, 3 + 2 * data_count>;
+// One mode's closed-form response over a step: c, sn, w2sn, cv, then d and q for each datum.
+constexpr int free_count = 4;
+using ModeCoefficients = std::array<double, free_count + 2 * data_count>;
+
+void add_forced(const Basis& b, const double p[powers], const double q[powers], ModeCoefficients& m) {
+  for (int j = 0; j < data_count; ++j)
+    for (int k = 0; k < powers; ++k) {
+      m[free_count + j] += b(j, k) * p[k];
+      m[free_count + data_count + j] += b(j, k) * q[k];
+    }
+}
 
 ModeCoefficients mode_coefficients(double w, double h, const Basis& b) {
   const double cos_x = std::cos(w * h), sin_x = std::sin(w * h);
   double p[powers], q[powers];
   monomial_responses(w, h, cos_x, sin_x, p, q);
-  ModeCoefficients m = {cos_x, w == 0 ? h : sin_x / w, w * sin_x};
-  for (int j = 0; j < data_count; ++j)
-    for (int k = 0; k < powers; ++k) {
-      m[3 + j] += b(j, k) * p[k];
-      m[3 + data_count + j] += b(j, k) * q[k];
-    }
+  ModeCoefficients m = {cos_x, w == 0 ? h : sin_x / w, w * sin_x, cos_x};
+  add_forced(b, p, q, m);
   return m;
+}
+
+// A damped mode's response at time tau into a step whose force data the basis b weights (tau = h
+// for the step's end, a Gauss node for the dissipation's quadrature).
+ModeCoefficients damped_mode_coefficients(double w, double zeta, double tau, const Basis& b) {
+  const ImpulseResponse g = damped_impulse_response(w, zeta, tau);
+  const FreeEvolution e = damped_free_evolution(w, zeta, tau);
+  double p[powers], q[powers];
+  damped_monomial_responses(w, zeta, tau, g, p, q);
+  ModeCoefficients m = {e.aa, e.av, -e.va, e.vv};
+  add_forced(b, p, q, m);
+  return m;
+}
+
+// Gauss-Legendre nodes and weights of 8 points on [-1, 1] (Abramowitz & Stegun, table 25.4).
+constexpr double gauss_nodes[DampedQuadrature::nodes / 2] = {0.1834346424956498, 0.5255324099163290,
+                                                             0.7966664774136267, 0.9602898564975363};
+constexpr double gauss_weights[DampedQuadrature::nodes / 2] = {0.3626837833783620, 0.3137066458778873,
+                                                               0.2223810344533745, 0.1012285362903763};
+
+DampedQuadrature damped_quadrature(int mode, double w, double zeta, double h, const Basis& b) {
+  DampedQuadrature d;
+  d.mode = mode, d.rate = 2 * zeta * w;
+  for (int i = 0; i < DampedQuadrature::nodes; ++i) {
+    const int k = i < DampedQuadrature::nodes / 2 ? i : i - DampedQuadrature::nodes / 2;
+    const double x = i < DampedQuadrature::nodes / 2 ? -gauss_nodes[k] : gauss_nodes[k];
+    const ModeCoefficients m = damped_mode_coefficients(w, zeta, h * (1 + x) / 2, b);
+    d.weight[i] = h * gauss_weights[k] / 2;
+    d.va[i] = -m[2], d.vv[i] = m[3];
+    for (int j = 0; j < data_count; ++j) d.q[i][j] = m[free_count + data_count + j];
+  }
+  return d;
 }
 
 // Steps of the lengths a run reuses (nominal, split) meet the same frequencies again and again
@@ -125,21 +207,27 @@ const ModeCoefficients& memoized_coefficients(double w, double h, double past_ra
 
 }  // namespace
 
-ModeResponse::ModeResponse(const Eigen::ArrayXd& w, double step, double ball_mass, double past, bool memoize)
-    : h(step), past_ratio(past), omega(w) {
+ModeResponse::ModeResponse(const Eigen::ArrayXd& w, const Eigen::ArrayXd& zeta, double step, double ball_mass,
+                           double past, bool memoize)
+    : h(step), past_ratio(past), omega(w), damping(zeta) {
   const int n = static_cast<int>(omega.size());
-  c.resize(n), sn.resize(n), w2sn.resize(n), d.resize(n, data_count), q.resize(n, data_count);
+  c.resize(n), sn.resize(n), w2sn.resize(n), cv.resize(n), d.resize(n, data_count), q.resize(n, data_count);
   const Basis b = interpolant_basis(past_ratio, h);
   for (int i = 0; i < n; ++i) {
-    const ModeCoefficients computed = memoize ? ModeCoefficients{} : mode_coefficients(omega(i), h, b);
-    const ModeCoefficients& m = memoize ? memoized_coefficients(omega(i), h, past_ratio, b) : computed;
-    c(i) = m[0], sn(i) = m[1], w2sn(i) = m[2];
-    for (int j = 0; j < data_count; ++j) d(i, j) = m[3 + j], q(i, j) = m[3 + data_count + j];
+    const bool damped_mode = damping.size() && damping(i) != 0;
+    const ModeCoefficients computed = damped_mode ? damped_mode_coefficients(omega(i), damping(i), h, b)
+                                      : memoize   ? ModeCoefficients{}
+                                                  : mode_coefficients(omega(i), h, b);
+    const ModeCoefficients& m =
+        memoize && !damped_mode ? memoized_coefficients(omega(i), h, past_ratio, b) : computed;
+    c(i) = m[0], sn(i) = m[1], w2sn(i) = m[2], cv(i) = m[3];
+    for (int j = 0; j < data_count; ++j) d(i, j) = m[free_count + j], q(i, j) = m[free_count + data_count + j];
+    if (damped_mode) damped.push_back(damped_quadrature(i, omega(i), damping(i), h, b));
   }
   const ModeCoefficients ball = mode_coefficients(0, h, b);
   for (int j = 0; j < data_count; ++j) {
-    ball_d[j] = ball[3 + j] / ball_mass;
-    ball_q[j] = ball[3 + data_count + j] / ball_mass;
+    ball_d[j] = ball[free_count + j] / ball_mass;
+    ball_q[j] = ball[free_count + data_count + j] / ball_mass;
   }
 }
 
@@ -162,8 +250,9 @@ namespace {
 // them, keyed by step, past ratio, ball mass and frequencies. With modes = auto the kept set
 // varies from impact to impact, and event steps vary too; the cache starts over when it grows
 // large.
-std::shared_ptr<const ModeResponse> cached_response(const Eigen::ArrayXd& omega, std::size_t omega_key, double h,
-                                                    double ball_mass, double past_ratio) {
+std::shared_ptr<const ModeResponse> cached_response(const Eigen::ArrayXd& omega, const Eigen::ArrayXd& damping,
+                                                    std::size_t omega_key, double h, double ball_mass,
+                                                    double past_ratio) {
   const std::size_t key = omega_key ^ std::hash<double>()(h) ^ (std::hash<double>()(ball_mass) << 1) ^
                           (std::hash<double>()(past_ratio) << 2);
   thread_local std::unordered_multimap<std::size_t, std::pair<double, std::shared_ptr<const ModeResponse>>> cache;
@@ -171,28 +260,32 @@ std::shared_ptr<const ModeResponse> cached_response(const Eigen::ArrayXd& omega,
   for (auto it = first; it != last; ++it) {
     const auto& [mass, response] = it->second;
     if (response->h == h && response->past_ratio == past_ratio && mass == ball_mass &&
-        response->omega.size() == omega.size() && (response->omega == omega).all())
+        response->omega.size() == omega.size() && (response->omega == omega).all() &&
+        response->damping.size() == damping.size() && (response->damping == damping).all())
       return response;
   }
   thread_local std::size_t stored = 0;  // doubles held: at most about 32 MB per thread
   if (stored > 4'000'000) cache.clear(), stored = 0;
-  stored += (3 + 2 * data_count) * omega.size();
-  auto response = std::make_shared<const ModeResponse>(omega, h, ball_mass, past_ratio, true);
+  stored += (free_count + 2 * data_count) * omega.size();
+  auto response = std::make_shared<const ModeResponse>(omega, damping, h, ball_mass, past_ratio, true);
   cache.emplace(key, std::make_pair(ball_mass, response));
   return response;
 }
 
 }  // namespace
 
-std::size_t ExactStepper::frequencies_key(const Eigen::ArrayXd& omega) {
+std::size_t ExactStepper::frequencies_key(const Eigen::ArrayXd& omega, const Eigen::ArrayXd& damping) {
   std::size_t key = omega.size();
   for (double w : omega) key = key * 1099511628211ull ^ std::hash<double>()(w);
+  for (double zeta : damping) key = key * 1099511628211ull ^ std::hash<double>()(zeta);
   return key;
 }
 
 ExactStepper::ExactStepper(const ContactState& state, const CollisionOptions& options)
     : state_(state), options_(options), psi_(state.body().psi.array()), psi2_(psi_.square()),
-      psi_w2_(psi_ * state.omega2()), omega_key_(frequencies_key(state.body().omega.array())), nominal_(options.dt),
+      psi_w2_(psi_ * state.omega2()),
+      damping_(state.body().damped() ? Eigen::ArrayXd(state.body().damping_ratio.array()) : Eigen::ArrayXd()),
+      omega_key_(frequencies_key(state.body().omega.array(), damping_)), nominal_(options.dt),
       quarter_(state.size()), half_(state.size()) {
   kept_.reserve(16);  // a contact's usual lengths: split, nominal, halved and event steps
 }
@@ -200,8 +293,9 @@ ExactStepper::ExactStepper(const ContactState& state, const CollisionOptions& op
 const StepCoefficients& ExactStepper::coefficients(double h, double past_ratio) {
   for (const StepCoefficients& k : kept_)
     if (k.h() == h && k.past_ratio() == past_ratio) return k;
-  kept_.emplace_back(cached_response(state_.body().omega.array(), omega_key_, h, state_.ball_mass(), past_ratio),
-                     psi2_, state_.compliance());
+  kept_.emplace_back(
+      cached_response(state_.body().omega.array(), damping_, omega_key_, h, state_.ball_mass(), past_ratio), psi2_,
+      state_.compliance());
   return kept_.back();
 }
 
@@ -317,6 +411,24 @@ double end_compression(const StepCoefficients& k, const ContactForce& law, doubl
   return u;
 }
 
+// The damped modes' a'(t) at the step's Gauss nodes is linear in the start state and the data the
+// interpolant weights, all known once the end force is: int 2 zeta w a'^2 dt by the quadrature.
+double ExactStepper::damped_dissipation(const ModeResponse& m, const Eigen::VectorXd& y,
+                                        const double (&data)[data_count]) const {
+  const int n = state_.modes();
+  double energy = 0;
+  for (const DampedQuadrature& d : m.damped) {
+    const double a = y(2 + d.mode), v = y(2 + n + d.mode), psi = psi_(d.mode);
+    for (int i = 0; i < DampedQuadrature::nodes; ++i) {
+      double forced = 0;
+      for (int j = 0; j < data_count; ++j) forced += data[j] * d.q[i][j];
+      const double rate = d.va[i] * a + d.vv[i] * v - psi * forced;
+      energy += d.weight[i] * d.rate * rate * rate;
+    }
+  }
+  return energy;
+}
+
 // One pass over the modes for what is known before the end force (free rotation plus the
 // response to the past and start data), summing the contact's u and u' on the way; a second adds
 // the response to F1 and F1'. Plain loops: Eigen would make a pass per expression and one per sum.
@@ -327,7 +439,8 @@ void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, 
   out.resize(y.size());
   const double *a = y.data() + 2, *v = a + n;
   double *out_a = out.data() + 2, *out_v = out_a + n;
-  const double *c = m.c.data(), *sn = m.sn.data(), *w2sn = m.w2sn.data(), *psi = psi_.data(), *psi_w2 = psi_w2_.data();
+  const double *c = m.c.data(), *sn = m.sn.data(), *w2sn = m.w2sn.data(), *cv = m.cv.data(), *psi = psi_.data(),
+               *psi_w2 = psi_w2_.data();
   const auto d = [&m](Datum j) { return m.d.col(j).data(); };
   const auto q = [&m](Datum j) { return m.q.col(j).data(); };
 
@@ -344,7 +457,7 @@ void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, 
 #pragma omp simd reduction(+ : psi_a, psi_v, psi_w2a)
   for (int i = 0; i < n; ++i) {
     const double a_known = c[i] * a[i] + sn[i] * v[i] - psi[i] * (fp * dP[i] + rp * dQ[i] + f0 * dA[i] + r0 * dB[i]);
-    const double v_known = c[i] * v[i] - w2sn[i] * a[i] - psi[i] * (fp * qP[i] + rp * qQ[i] + f0 * qA[i] + r0 * qB[i]);
+    const double v_known = cv[i] * v[i] - w2sn[i] * a[i] - psi[i] * (fp * qP[i] + rp * qQ[i] + f0 * qA[i] + r0 * qB[i]);
     out_a[i] = a_known, out_v[i] = v_known;
     psi_a += psi[i] * a_known, psi_v += psi[i] * v_known, psi_w2a += psi_w2[i] * a[i];
   }
@@ -369,6 +482,8 @@ void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, 
     out_a[i] -= psi[i] * (f1 * dC[i] + r1 * dD[i]);
     out_v[i] -= psi[i] * (f1 * qC[i] + r1 * qD[i]);
   }
+  if (const int k = state_.dissipated_index(); k >= 0)
+    out(k) = y(k) + damped_dissipation(m, y, {fp, rp, f0, r0, f1, r1});
   // The end's u and u' follow from the sums already made, without another pass over the modes.
   // The geometric u is the ball's own plus the residual compliance's yield (equal to the sums to
   // round-off, and exactly consistent with u1, whose force is known).

@@ -22,20 +22,34 @@ namespace sweetspot::detail {
 // only), at the start, at the end.
 enum Datum { past_force, past_rate, start_force, start_rate, end_force, end_rate, data_count };
 
-// The closed-form response of every mode over a step of length h: the free rotation (c, sn,
-// w2sn) and the displacement (d) and velocity (q) driven by a unit weight of each datum's basis
-// function (one column per Datum; zero for the past data of the cubic). Depends on the
-// frequencies, h and the past ratio only.
+// A damped mode's velocity at the Gauss-Legendre nodes of a step, each linear in the step's start
+// state and data (a' = va a + vv a' - psi sum_j datum_j q[j]), with the nodes' weights: the
+// energy its damping dissipates over the step is sum_i weight_i rate a'(t_i)^2, rate = 2 zeta w.
+struct DampedQuadrature {
+  static constexpr int nodes = 8;  // exact for polynomials of degree 15
+  int mode = 0;
+  double rate = 0;
+  double weight[nodes] = {};
+  double va[nodes] = {}, vv[nodes] = {}, q[nodes][data_count] = {};
+};
+
+// The closed-form response of every mode over a step of length h: the free evolution
+// (a -> c a + sn a', a' -> cv a' - w2sn a; cv = c for an undamped mode) and the displacement (d)
+// and velocity (q) driven by a unit weight of each datum's basis function (one column per Datum;
+// zero for the past data of the cubic). Depends on the frequencies, damping ratios (empty: none),
+// h and the past ratio only. Damped modes (damped_mode.hpp) also carry their quadrature.
 struct ModeResponse {
   double h = 0;
   double past_ratio = 0;
-  Eigen::ArrayXd omega;
-  Eigen::ArrayXd c, sn, w2sn;
+  Eigen::ArrayXd omega, damping;
+  Eigen::ArrayXd c, sn, w2sn, cv;
   Eigen::ArrayXXd d, q;
   double ball_d[data_count] = {}, ball_q[data_count] = {};  // the ball (omega = 0, times 1/m)
+  std::vector<DampedQuadrature> damped;
 
   // memoize: take each mode's coefficients from (and add them to) this thread's memory.
-  ModeResponse(const Eigen::ArrayXd& omega, double h, double ball_mass, double past_ratio, bool memoize = false);
+  ModeResponse(const Eigen::ArrayXd& omega, const Eigen::ArrayXd& damping, double h, double ball_mass,
+               double past_ratio, bool memoize = false);
 };
 
 // A response with the sums over the contact point's mode shapes that tie the ball's compression
@@ -93,12 +107,15 @@ class ExactStepper {
   double past_ratio(const Eigen::VectorXd& y, double h, const ContactForce& law) const;
   void advance(const StepCoefficients& k, const Eigen::VectorXd& y, const ContactForce& law, Eigen::VectorXd& out);
   const StepCoefficients& coefficients(double h, double past_ratio);
-  // Responses are kept per thread by frequencies and step; the frequencies' hash is made once.
-  static std::size_t frequencies_key(const Eigen::ArrayXd& omega);
+  // Responses are kept per thread by frequencies, damping and step; the hash is made once.
+  static std::size_t frequencies_key(const Eigen::ArrayXd& omega, const Eigen::ArrayXd& damping);
+  // The energy the damped modes dissipate over the step from y, given the data it weighted.
+  double damped_dissipation(const ModeResponse& m, const Eigen::VectorXd& y, const double (&data)[data_count]) const;
 
   const ContactState& state_;
   CollisionOptions options_;
   Eigen::ArrayXd psi_, psi2_, psi_w2_;  // mode shapes at the contact, squared, and times omega^2
+  Eigen::ArrayXd damping_;              // the modes' damping ratios, empty when none is damped
   std::size_t omega_key_;
   double nominal_;
   std::vector<StepCoefficients> kept_;  // this impact's steps so far, by length and past ratio

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <complex>
 
+#include "contact/damped_mode.hpp"
+
 namespace sweetspot {
 
 namespace {
@@ -74,12 +76,18 @@ std::vector<double> mode_responses(const ModalContact& body, double ball_mass, c
 
 double van_zandt_exit_speed(const ModalContact& body, const Ball& ball, double recoil, double ball_speed,
                             double bat_speed, const std::vector<ForceSample>& force) {
-  // A mode at rest driven by -Fhat psi_n moves at -psi_n int Fhat(t) cos(omega (tau - t)) dt at tau.
+  // A mode at rest driven by -Fhat psi_n moves at -psi_n int Fhat(t) cos(omega (tau - t)) dt at tau;
+  // a damped one (the barrel wall) at -psi_n int Fhat(t) G'(tau - t) dt, G its impulse response.
   const double tau = force.back().t, j = impulse(force);
   double a_vib = 0;
   for (int n = 0; n < body.count(); ++n) {
-    const double w = body.omega(n);
+    const double w = body.omega(n), zeta = body.damping(n);
     if (w == 0) continue;
+    if (zeta != 0) {
+      const auto kernel = [&](double t) { return detail::damped_impulse_response(w, zeta, tau - t).g_rate; };
+      a_vib += body.psi(n) * body.psi(n) * integrate(force, kernel) / j;
+      continue;
+    }
     a_vib += body.psi(n) * body.psi(n) * integrate(force, [&](double t) { return std::cos(w * (tau - t)); }) / j;
   }
   return rigid_exit_speed(ball.e0, recoil + ball.mass * a_vib, ball_speed, bat_speed);

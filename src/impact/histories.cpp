@@ -31,8 +31,12 @@ Histories impact_histories(const ModalBasis& basis, const SceneGeometry& g, cons
   const ModalContact& body = g.contact;
   const int n = body.count();
   const std::size_t samples = request.samples();
-  const detail::ModeResponse response(body.omega.array(), request.step, ball.mass, 0);  // cubic
+  // The damped wall mode (if any) in closed form too: its free evolution and forced response.
+  const Eigen::ArrayXd damping = body.damped() ? Eigen::ArrayXd(body.damping_ratio.array()) : Eigen::ArrayXd();
+  const detail::ModeResponse response(body.omega.array(), damping, request.step, ball.mass, 0);  // cubic
   const Eigen::ArrayXd psi = body.psi.array(), omega2 = body.omega.array().square();
+  // 2 zeta omega of each mode (0: undamped), for the accelerations.
+  const Eigen::ArrayXd damping_rate = damping.size() ? Eigen::ArrayXd(2 * damping * body.omega.array()) : damping;
   const Eigen::ArrayXd vibrating = (body.omega.array() > 0).cast<double>();
 
   std::vector<Eigen::ArrayXd> probe_shapes;
@@ -48,7 +52,8 @@ Histories impact_histories(const ModalBasis& basis, const SceneGeometry& g, cons
   ForceSample f0 = force_at(force, 0);
   for (std::size_t j = 0; j < samples; ++j) {
     const double t = j * request.step;
-    const Eigen::ArrayXd acceleration = -omega2 * a - psi * f0.force;
+    Eigen::ArrayXd acceleration = -omega2 * a - psi * f0.force;
+    if (damping.size()) acceleration -= damping_rate * v;
     h.time.push_back(t);
     h.force.push_back(f0.force);
     // The ball's own compression: the bat's local and residual compliance yields c F of the approach.
@@ -71,7 +76,7 @@ Histories impact_histories(const ModalBasis& basis, const SceneGeometry& g, cons
              f1.force * r.col(detail::end_force) + f1.rate * r.col(detail::end_rate);
     };
     const Eigen::ArrayXd a_next = response.c * a + response.sn * v - psi * forcing(response.d);
-    v = response.c * v - response.w2sn * a - psi * forcing(response.q);
+    v = response.cv * v - response.w2sn * a - psi * forcing(response.q);
     a = a_next;
     const auto ball = [&](const double* r) {
       return f0.force * r[detail::start_force] + f0.rate * r[detail::start_rate] + f1.force * r[detail::end_force] +

@@ -1,6 +1,7 @@
 #pragma once
 // The collision of a ball with a modal system (physics.md §4): the ball's nonlinear spring drives
-// modes a_n'' + omega_n^2 a_n = -F psi_n. The same integrator serves the bat (its kept modes at
+// modes a_n'' + 2 zeta_n omega_n a_n' + omega_n^2 a_n = -F psi_n (zeta_n = 0 but for a hollow
+// barrel's wall, README "Hollow barrels"). The same integrator serves the bat (its kept modes at
 // the impact point), the rigid immovable wall (no modes at all) and the toy model of N2000 App. A.
 #include <Eigen/Dense>
 #include <string>
@@ -19,8 +20,15 @@ struct ModalContact {
   // Static (residual) flexibility of the modes left out, sum psi_n^2 / omega_n^2 over them: they
   // are too fast for the pulse to excite and follow the force quasi-statically, yielding c F.
   double residual_compliance = 0;
+  // Viscous damping ratio zeta_n of each mode, in [0, 1): empty when every mode is undamped (a
+  // solid bat's beam modes). Only a hollow barrel's wall mode is damped, by zeta = eta / 2 of its
+  // loss factor. Undamped modes follow the undamped code paths bit for bit; a damped mode needs
+  // omega_n > 0.
+  Eigen::VectorXd damping_ratio;
 
   int count() const { return static_cast<int>(omega.size()); }
+  double damping(int n) const { return damping_ratio.size() ? damping_ratio(n) : 0.0; }
+  bool damped() const { return damping_ratio.size() && (damping_ratio.array() != 0).any(); }
 };
 
 // How the contact phase is integrated (see README, "Numerics"):
@@ -87,10 +95,14 @@ struct Collision {
   double peak_force = 0;       // N
   double impulse = 0;          // N s delivered to the ball
   double dissipated = 0;       // J lost in the ball (loop areas of all contacts)
+  // J dissipated by the damped modes (the barrel wall), int sum 2 zeta_n omega_n a_n'^2 dt from
+  // first touch to the last separation (contacts and the free flights between them), integrated
+  // alongside the modes, not inferred from the balance; 0 without damping.
+  double damping_dissipated = 0;
   int contacts = 0;
   std::vector<ForceSample> force;  // only with record_force
 
-  // Energy of mode n: 1/2 (a_n'^2 + omega_n^2 a_n^2).
+  // Energy of mode n: 1/2 (a_n'^2 + omega_n^2 a_n^2) (what it holds, damped or not).
   double mode_energy(const ModalContact& body, int n) const;
 };
 
