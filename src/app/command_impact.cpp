@@ -36,6 +36,7 @@ Json energy_json(const ImpactEnergy& e) {
       .add("vibration", e.vibration)
       .add("ball_dissipated", e.ball_dissipated)
       .add("barrel", e.barrel)
+      .add("barrel_dissipated", e.barrel_dissipated)
       .add("residual", e.residual);
 }
 
@@ -82,6 +83,7 @@ void print_text(const ImpactResult& r) {
   if (std::isfinite(r.hoop_frequency)) {  // a hollow struck section: its wall takes a share
     std::printf("                + vibration %.6g + dissipated in the ball %.6g + barrel wall %.6g\n", e.vibration,
                 e.ball_dissipated, e.barrel);
+    std::printf("                + dissipated in the wall %.6g\n", e.barrel_dissipated);
     std::printf("                + residual %.3g; the wall's hoop frequency %.5g Hz\n", e.residual, r.hoop_frequency);
   } else {
     std::printf("                + vibration %.6g + dissipated in the ball %.6g + residual %.3g\n", e.vibration,

@@ -30,6 +30,7 @@ void bat_energies(const ImpactScene& scene, const SceneGeometry& g, const ModalB
     r.energy.vibration += r.mode_energy.back();
   }
   if (g.wall >= 0) r.energy.barrel = c.mode_energy(g.contact, g.wall);
+  r.energy.barrel_dissipated = c.damping_dissipated;  // only the wall is damped
   if (scene.pivoted) {
     const double arm = basis.z_cm - g.pivot;
     const double translation_share = basis.mass * arm * arm / (basis.moment_of_inertia_cm + basis.mass * arm * arm);
@@ -77,8 +78,9 @@ std::vector<double> force_response_grid() {
 
 void close_balance(ImpactResult& r) {
   ImpactEnergy& e = r.energy;
-  // The barrel's term last: 0 for a solid section, so a wooden bat's sum is what it always was.
-  e.residual = e.initial - (e.ball + e.bat_translation + e.bat_rotation + e.vibration + e.ball_dissipated + e.barrel);
+  // The barrel's terms last: 0 for a solid section, so a wooden bat's sum is what it always was.
+  e.residual = e.initial - (e.ball + e.bat_translation + e.bat_rotation + e.vibration + e.ball_dissipated + e.barrel +
+                            e.barrel_dissipated);
   if (r.status != CollisionStatus::ok || std::abs(e.residual) <= balance_limit * e.initial) return;  // NaN: not
   char text[200];
   std::snprintf(text, sizeof text,
@@ -111,7 +113,7 @@ const char* first_non_finite(const ImpactResult& r, const AskedValues& asked) {
       {"vf_van_zandt", asked.vf_van_zandt ? r.vf_van_zandt : 0.0},
       {"bbs_linear", asked.bbs_linear ? r.bbs_linear : 0.0},
       {"energy", e.initial + e.ball + e.bat_translation + e.bat_rotation + e.vibration + e.ball_dissipated + e.residual +
-                     e.barrel},
+                     e.barrel + e.barrel_dissipated},
   };
   for (const auto& [name, value] : scalars)
     if (!std::isfinite(value)) return name;
@@ -196,7 +198,7 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& given) 
   if (c.status == CollisionStatus::no_contact) {  // nothing happened: no result
     r.e_eff = std::nan("");
     r.energy = {std::nan(""), std::nan(""), std::nan(""), std::nan(""), std::nan(""), std::nan(""), std::nan(""),
-                std::nan("")};
+                std::nan(""), std::nan("")};
     return r;
   }
   if (scene.rigid_comparison) r.vf_rigid = rigid_exit_speed(scene.ball.e0, g.recoil, scene.ball_speed, g.bat_speed);

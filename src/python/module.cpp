@@ -51,7 +51,8 @@ py::dict result_dict(const ImpactResult& r) {
   py::dict e;
   e["initial"] = r.energy.initial, e["ball"] = r.energy.ball, e["bat_translation"] = r.energy.bat_translation;
   e["bat_rotation"] = r.energy.bat_rotation, e["vibration"] = r.energy.vibration;
-  e["ball_dissipated"] = r.energy.ball_dissipated, e["barrel"] = r.energy.barrel, e["residual"] = r.energy.residual;
+  e["ball_dissipated"] = r.energy.ball_dissipated, e["barrel"] = r.energy.barrel,
+  e["barrel_dissipated"] = r.energy.barrel_dissipated, e["residual"] = r.energy.residual;
   d["energy"] = e;
   d["mode_energy"] = array(r.mode_energy);
   d["modes_kept"] = py::array_t<int>(r.modes_kept.size(), r.modes_kept.data());
@@ -65,7 +66,8 @@ const std::vector<std::string> impacts_outputs = {
     "vf",     "e_eff",       "bat_speed",      "e_a",         "bbcor",      "besr",
     "bpf",    "contact_time", "collision_time", "u_max",      "peak_force", "impulse",
     "energy_initial", "energy_ball", "energy_bat_translation", "energy_bat_rotation", "energy_vibration",
-    "energy_ball_dissipated", "energy_residual", "modes_error", "hoop_frequency", "energy_barrel"};
+    "energy_ball_dissipated", "energy_residual", "modes_error", "hoop_frequency", "energy_barrel",
+    "energy_barrel_dissipated"};
 
 void fill_row(const ImpactResult& r, double* row) {
   const double values[] = {r.vf,
@@ -89,7 +91,8 @@ void fill_row(const ImpactResult& r, double* row) {
                            r.energy.residual,
                            r.modes_error,
                            r.hoop_frequency,
-                           r.energy.barrel};
+                           r.energy.barrel,
+                           r.energy.barrel_dissipated};
   std::copy(std::begin(values), std::end(values), row);
 }
 

@@ -59,6 +59,7 @@ const std::map<std::string, Description>& descriptions() {
       {"energy_ball_dissipated", {"J", "energy dissipated in the ball"}},
       {"energy_residual", {"J", "energy balance residual (integration error)"}},
       {"energy_barrel", {"J", "final energy of the barrel wall's ovaling (hollow barrels)"}},
+      {"energy_barrel_dissipated", {"J", "energy dissipated by the barrel wall's damping (its loss factor)"}},
       {"hoop_frequency", {"Hz", "lowest hoop (ovaling) frequency of the struck section's wall; NaN where solid"}},
       {"mode_energy", {"J", "final energy of each vibrational mode"}},
       {"mode_response", {"1", "response R_n = m psi_n^2 g(omega_n) of each kept vibrational mode"}},
@@ -124,6 +125,7 @@ double energy_value(const ImpactEnergy& e, const std::string& name) {
   if (name == "energy_vibration") return e.vibration;
   if (name == "energy_ball_dissipated") return e.ball_dissipated;
   if (name == "energy_barrel") return e.barrel;
+  if (name == "energy_barrel_dissipated") return e.barrel_dissipated;
   return e.residual;
 }
 
