@@ -305,8 +305,10 @@ TEST_CASE("Bad wall input is refused with the file, key and value", "[barrel]") 
       {"shear_coefficient = 0.5", "shear_coefficient = 0.5\nwall_loss_factor = -0.01", "material.wall_loss_factor",
        "-0.01", "[0, 1)"},
       {"youngs_modulus = 7.0e10", "youngs_modulus = -7.0e10", "material.youngs_modulus", "-7", "positive"},
-      {"shear_coefficient = 0.5", "shear_coefficient = 0.5\nwall_loss_factor = 0.01", "material.wall_loss_factor",
-       "0.01", "not modelled"},
+      {"shear_coefficient = 0.5", "shear_coefficient = 0.5\nwall_loss_factor = -0.1", "material.wall_loss_factor",
+       "-0.1", "[0, 1)"},
+      {"shear_coefficient = 0.5", "shear_coefficient = 0.5\nwall_loss_factor = 1.5", "material.wall_loss_factor",
+       "1.5", "[0, 1)"},
       {"wall_thickness = 0.0026", "wall_thickness = 0.02", "dimensions.wall_thickness", "0.02", "radius"},
       {"wall_thickness = 0.0026", "wall_thickness = -0.0026", "dimensions.wall_thickness", "-0.0026", "at least 0"},
   };

@@ -51,9 +51,6 @@ std::optional<RuleBreak> wall_material_rule_break(const Material& m) {
                                          " is not a positive, finite number (or 0 for youngs_modulus)"};
   if (!(m.wall_loss_factor >= 0 && m.wall_loss_factor < 1))
     return RuleBreak{"wall_loss_factor", "wall_loss_factor " + format_number(m.wall_loss_factor) + " is not in [0, 1)"};
-  if (m.wall_loss_factor != 0)
-    return RuleBreak{"wall_loss_factor", "wall_loss_factor " + format_number(m.wall_loss_factor) + ": " +
-                                             wall_damping_missing};
   return std::nullopt;
 }
 

@@ -216,8 +216,6 @@ void read_material(const Section& s, BatDesign& design) {
   // A hollow barrel's wall (barrel_wall.hpp): absent, the hoop modulus is youngs_modulus (0).
   m.hoop_modulus = s.positive("hoop_modulus", "Pa", 0.0);
   m.wall_loss_factor = s.fraction("wall_loss_factor", default_wall_loss_factor);
-  if (m.wall_loss_factor != 0)
-    fail(s.where("wall_loss_factor"), "value " + format_number(m.wall_loss_factor) + ": " + wall_damping_missing);
 }
 
 // [dimensions] (dimensions.hpp): lengths in m; end and its depth and the wall optional.

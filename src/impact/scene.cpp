@@ -93,6 +93,12 @@ void add_wall_mode(const ImpactScene& scene, const ModalBasis& basis, SceneGeome
   c.omega(n) = wall->omega;
   c.psi(n) = 1 / std::sqrt(wall->mass);
   c.velocity0(n) = 0;
+  // Its loss factor eta as viscous damping, zeta = eta / 2 (equal loss per cycle at resonance,
+  // barrel_wall.hpp); a lossless wall leaves every mode undamped, the undamped code paths.
+  if (wall->loss_factor > 0) {
+    c.damping_ratio = Eigen::VectorXd::Zero(n + 1);
+    c.damping_ratio(n) = wall->loss_factor / 2;
+  }
   g.wall = n;
 }
 

@@ -9,6 +9,11 @@
 
 namespace sweetspot {
 
+// A hollow barrel's wall loss factor unless a bat gives one (barrel_wall.hpp, README "Hollow
+// barrels"): aluminium alloys', the default material of hollow bats, of order 1e-4 (Cremer, Heckl
+// & Petersson, "Structure-Borne Sound", table of material loss factors).
+inline constexpr double default_wall_loss_factor = 1e-4;
+
 struct Material {
   double density = 0;            // kg/m^3
   double youngs_modulus = 0;     // Pa
@@ -17,7 +22,7 @@ struct Material {
   // A hollow barrel's wall (barrel_wall.hpp). youngs_modulus is the axial modulus; a composite
   // wall's hoop (circumferential) modulus may differ: 0 means an isotropic wall (youngs_modulus).
   double hoop_modulus = 0;      // Pa
-  double wall_loss_factor = 0;  // eta of the wall's ovaling, in [0, 1)
+  double wall_loss_factor = default_wall_loss_factor;  // eta of the wall's ovaling, in [0, 1)
 
   double wall_hoop_modulus() const { return hoop_modulus > 0 ? hoop_modulus : youngs_modulus; }
 };
