@@ -1,0 +1,200 @@
+// The barrel wall's damping (README "Hollow barrels", barrel_wall.hpp): a loss factor eta makes
+// the wall mode a viscously damped oscillator, zeta = eta / 2. Checked against a closed-form
+// linear reference (a linear lossless ball on a damped wall over an immovable bat is a linear
+// two-degree-of-freedom system, solved here by its eigen-decomposition), by every integrator;
+// the dissipated energy against that reference's energy loss; the energy balance with damping;
+// zero damping is the undamped path bit for bit; more damping dissipates more.
+#include <catch2/catch.hpp>
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <string>
+
+#include "program.hpp"
+#include "sweetspot/bat/bat_design.hpp"
+#include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/contact/collision.hpp"
+#include "sweetspot/impact/bat_test_rig.hpp"
+#include "sweetspot/impact/impact.hpp"
+
+using namespace sweetspot;
+
+namespace {
+
+// A linear ball (a = 1) with e0 = 1 is lossless: both branches are k1 u.
+Ball lossless_linear_ball() {
+  Ball ball;
+  ball.a = 1;
+  ball.k1 = 2e6;  // N/m
+  ball.e0 = 1;
+  return ball;
+}
+
+// The wall alone over an immovable bat: one damped mode of mass m_w at f Hz.
+ModalContact damped_wall(double m_wall, double f, double zeta) {
+  ModalContact wall;
+  wall.omega = Eigen::VectorXd::Constant(1, 2 * std::numbers::pi * f);
+  wall.psi = Eigen::VectorXd::Constant(1, 1 / std::sqrt(m_wall));
+  wall.velocity0 = Eigen::VectorXd::Zero(1);
+  wall.damping_ratio = Eigen::VectorXd::Constant(1, zeta);
+  return wall;
+}
+
+// The closed-form collision of the linear ball with the damped wall: z = (s, s', x, x') with the
+// wall's displacement x = psi a obeys z' = A z while x > s; the exit state is z at the first
+// root of x - s after touch. Returns the ball's exit speed and what the damping took (the
+// initial energy less the ball's and the wall's at separation: nothing else loses energy).
+struct LinearReference {
+  double exit_speed, dissipated;
+};
+
+LinearReference linear_reference(const Ball& ball, double m_wall, double omega, double zeta, double speed) {
+  Eigen::Matrix4d a = Eigen::Matrix4d::Zero();
+  const double k = ball.k1;
+  a(0, 1) = 1;
+  a(1, 0) = -k / ball.mass, a(1, 2) = k / ball.mass;
+  a(2, 3) = 1;
+  a(3, 0) = k / m_wall, a(3, 2) = -omega * omega - k / m_wall, a(3, 3) = -2 * zeta * omega;
+  const Eigen::EigenSolver<Eigen::Matrix4d> eigen(a);
+  const Eigen::Matrix4cd v = eigen.eigenvectors();
+  const Eigen::Vector4cd lambda = eigen.eigenvalues();
+  const Eigen::Vector4cd c = v.inverse() * Eigen::Vector4cd(0, -speed, 0, 0);
+  const auto state = [&](double t) {
+    return Eigen::Vector4d((v * (lambda.array() * t).exp().matrix().cwiseProduct(c)).real());
+  };
+  const auto compression = [&](double t) {
+    const Eigen::Vector4d z = state(t);
+    return z(2) - z(0);
+  };
+  double lo = 1e-9, hi = lo;  // scan for the sign change, then bisect
+  while (compression(hi) > 0) lo = hi, hi += 1e-6;
+  for (int i = 0; i < 200 && hi - lo > 1e-16; ++i) (compression((lo + hi) / 2) > 0 ? lo : hi) = (lo + hi) / 2;
+  const Eigen::Vector4d z = state(hi);
+  const double wall = 0.5 * m_wall * (z(3) * z(3) + omega * omega * z(2) * z(2));
+  return {z(1), 0.5 * ball.mass * (speed * speed - z(1) * z(1)) - wall};
+}
+
+// Fine enough for 1e-8: exact stepping converges at second order here, where the linear ball's
+// force leaves at a finite slope (k1 u'), with or without damping (1e-5 of 40 m/s at 1 us).
+CollisionOptions options_for(Method method) {
+  CollisionOptions options;
+  options.method = method;
+  options.dt = method == Method::exact ? 1e-8 : method == Method::rk4 ? 1e-6 : 1e-7;
+  options.tolerance = 1e-12;
+  return options;
+}
+
+BatDesign alloy_with_loss(double eta) {
+  BatSource source;
+  BatDesign design = load_bat_design(source_path("studies/bats/alloy_bbcor.toml"), source);
+  set_design_parameter(design, "wall_loss_factor", eta);
+  return design;
+}
+
+ImpactScene barrel_scene(double z) {
+  ImpactScene scene;
+  scene.z = z;
+  scene.ball_speed = 40;
+  scene.swing.cm_speed = 24;
+  scene.swing.omega = 51;
+  return scene;
+}
+
+}  // namespace
+
+TEST_CASE("A linear ball on a damped wall: every integrator gives the closed form's exit speed and loss",
+          "[barrel][damping]") {
+  const Ball ball = lossless_linear_ball();
+  const double m_wall = 0.15, f = 1500, speed = 40;
+  for (const double zeta : {0.0, 0.005, 0.05}) {
+    const LinearReference reference = linear_reference(ball, m_wall, 2 * std::numbers::pi * f, zeta, speed);
+    REQUIRE(reference.dissipated > -1e-9);
+    for (const Method method : {Method::rk4, Method::exact, Method::dopri}) {
+      INFO("zeta " << zeta << ", " << to_string(method));
+      const Collision c = collide(damped_wall(m_wall, f, zeta), ball, speed, options_for(method));
+      REQUIRE(c.status == CollisionStatus::ok);
+      CHECK(c.dissipated == Approx(0).margin(1e-12));  // the lossless ball: only the wall loses
+      CHECK(c.ball_velocity == Approx(reference.exit_speed).epsilon(1e-8));
+      CHECK(c.damping_dissipated == Approx(reference.dissipated).epsilon(1e-6).margin(1e-12 * speed * speed));
+    }
+  }
+}
+
+TEST_CASE("Zero damping is the undamped path bit for bit, and vanishing damping tends to it", "[barrel][damping]") {
+  const Ball ball;  // N2000's nonlinear, lossy ball
+  for (const Method method : {Method::rk4, Method::exact, Method::dopri}) {
+    INFO(to_string(method));
+    CollisionOptions options;
+    options.method = method;
+    options.dt = default_step(method);
+    ModalContact undamped = damped_wall(0.15, 1500, 0);
+    undamped.damping_ratio.resize(0);
+    const Collision a = collide(undamped, ball, 40, options);
+    const Collision b = collide(damped_wall(0.15, 1500, 0), ball, 40, options);  // zeros spelt out
+    CHECK(a.ball_velocity == b.ball_velocity);
+    CHECK(a.a_dot(0) == b.a_dot(0));
+    CHECK(b.damping_dissipated == 0);
+    // The damped closed forms (exact stepping, free flight) at zeta = 1e-12 against the undamped;
+    // Dormand-Prince, whose error norm now counts the dissipated energy too, steps differently
+    // and agrees within its tolerance.
+    const Collision c = collide(damped_wall(0.15, 1500, 1e-12), ball, 40, options);
+    CHECK(c.ball_velocity == Approx(a.ball_velocity).epsilon(method == Method::dopri ? 1e-8 : 1e-11));
+    CHECK(c.damping_dissipated == Approx(0).margin(1e-9));
+  }
+}
+
+TEST_CASE("The energy balance closes with a damped wall, free and pivoted", "[barrel][damping]") {
+  for (const double eta : {1e-4, 1e-2}) {
+    const ModalBasis alloy = compute_modes(build_bat(alloy_with_loss(eta)), BeamTheory::timoshenko);
+    for (const double z : {0.62, 0.7, 0.78}) {
+      for (const bool pivoted : {false, true}) {
+        INFO("eta " << eta << ", z " << z << (pivoted ? ", pivoted" : ", free"));
+        const ImpactScene scene = pivoted ? rig_scene(RigSettings{Ball{}, 60, rig_pivot, auto_modes, {}}, z)
+                                          : barrel_scene(z);
+        const ImpactResult r = simulate_impact(alloy, scene);
+        REQUIRE(r.status == CollisionStatus::ok);
+        CHECK(r.energy.barrel_dissipated > 0);
+        CHECK(std::abs(r.energy.residual) <= 1e-6 * r.energy.initial);
+      }
+    }
+  }
+}
+
+TEST_CASE("rk4, exact and dopri agree on a damped wall's exit speed and loss", "[barrel][damping]") {
+  const ModalBasis alloy = compute_modes(build_bat(alloy_with_loss(1e-2)), BeamTheory::timoshenko);
+  ImpactScene scene = barrel_scene(0.68);
+  scene.accuracy = 1e-7;
+  ImpactResult r[3];
+  int i = 0;
+  for (const Method method : {Method::rk4, Method::exact, Method::dopri}) {
+    scene.integrator.method = method;
+    r[i] = simulate_impact(alloy, scene);
+    REQUIRE(r[i].status == CollisionStatus::ok);
+    ++i;
+  }
+  CHECK(r[0].vf == Approx(r[1].vf).epsilon(1e-6));
+  CHECK(r[2].vf == Approx(r[1].vf).epsilon(1e-6));
+  CHECK(r[0].energy.barrel_dissipated == Approx(r[1].energy.barrel_dissipated).epsilon(1e-5));
+  CHECK(r[2].energy.barrel_dissipated == Approx(r[1].energy.barrel_dissipated).epsilon(1e-5));
+}
+
+TEST_CASE("More wall damping dissipates more and lowers the rig's BBCOR, slightly", "[barrel][damping]") {
+  double previous_bbcor = 0, previous_loss = -1;
+  for (const double eta : {0.0, 1e-4, 1e-3, 1e-2}) {
+    INFO("eta " << eta);
+    const ModalBasis alloy = compute_modes(build_bat(alloy_with_loss(eta)), BeamTheory::timoshenko);
+    const ImpactResult r = simulate_impact(alloy, rig_scene(RigSettings{Ball{}, 60, rig_pivot, auto_modes, {}}, 0.7));
+    REQUIRE(r.status == CollisionStatus::ok);
+    if (eta == 0) CHECK(r.energy.barrel_dissipated == 0);
+    if (eta > 0) {
+      CHECK(r.energy.barrel_dissipated > previous_loss);
+      CHECK(r.rig.bbcor < previous_bbcor);
+      // Slightly: the wall's loss is a small share of what it holds, and the trampoline stays.
+      CHECK(r.energy.barrel_dissipated < 0.1 * r.energy.barrel);
+      CHECK(r.rig.bbcor > Ball{}.e0);
+    }
+    previous_bbcor = r.rig.bbcor, previous_loss = r.energy.barrel_dissipated;
+  }
+}
