@@ -13,6 +13,8 @@
 #include <string>
 
 #include "program.hpp"
+#include "temp_dir.hpp"
+#include "sweetspot/bat/bat_design_text.hpp"
 #include "sweetspot/bat/bat_design.hpp"
 #include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/contact/collision.hpp"
@@ -220,4 +222,17 @@ TEST_CASE("More wall damping dissipates more and lowers the rig's BBCOR, slightl
     }
     previous_bbcor = r.rig.bbcor, previous_loss = r.energy.barrel_dissipated;
   }
+}
+
+TEST_CASE("A hollow design written back as a bat file keeps its wall's hoop modulus and loss factor",
+          "[barrel][damping]") {
+  BatSource source;
+  const BatDesign composite = load_bat_design(source_path("studies/bats/composite_bbcor.toml"), source);
+  REQUIRE(composite.material.wall_loss_factor != default_wall_loss_factor);
+  const TempDir dir;
+  const auto file = dir.write("best.toml", bat_design_text(composite, "written back"));
+  BatSource again;
+  const BatDesign read = load_bat_design(file, again);
+  CHECK(read.material.hoop_modulus == composite.material.hoop_modulus);
+  CHECK(read.material.wall_loss_factor == composite.material.wall_loss_factor);
 }

@@ -46,6 +46,10 @@ std::string bat_design_text(const BatDesign& design, const std::string& comment)
       << "youngs_modulus = " << exact(m.youngs_modulus) << "  # Pa\n"
       << "shear_modulus = " << exact(m.shear_modulus) << "  # Pa\n"
       << "shear_coefficient = " << exact(m.shear_coefficient) << "\n";
+  // A hollow wall's constants, where they are not what an absent key reads as (0: the axial
+  // modulus; the default loss factor), so that a wooden bat's text is what it always was.
+  if (m.hoop_modulus > 0) out << "hoop_modulus = " << exact(m.hoop_modulus) << "  # Pa\n";
+  if (m.wall_loss_factor != default_wall_loss_factor) out << "wall_loss_factor = " << exact(m.wall_loss_factor) << "\n";
   out << "\n[dimensions]  # m\n";
   const Dimensions& d = *design.dimensions;
   for (const DimensionField& f : dimension_fields)
