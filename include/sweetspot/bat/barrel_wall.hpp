@@ -36,7 +36,7 @@ namespace sweetspot {
 // resonance, 2 pi eta of the mode's energy (Cremer, Heckl & Petersson, "Structure-Borne Sound",
 // ch. 3; Nashif, Jones & Henderson, "Vibration Damping", ch. 2). Over a ~0.6 ms collision at 1.5
 // kHz the alloy's 1e-4 takes under 0.1 % of what the wall holds; a carbon/epoxy wall's 1e-3 to
-// 1e-2 (Chandra, Singh & Gupta, Compos. Struct. 46, 41 (1999)) up to about 5 %. A loss factor
+// 1e-2 (Chandra, Singh & Gupta, Compos. Struct. 46, 41 (1999)) up to about 10 %. A loss factor
 // outside [0, 1) is refused.
 struct WallMode {
   double omega = 0;        // rad/s, the lowest hoop (n = 2) mode of the section
