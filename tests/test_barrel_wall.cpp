@@ -311,7 +311,8 @@ TEST_CASE("Bad wall input is refused with the file, key and value", "[barrel]") 
       {"shear_coefficient = 0.5", "shear_coefficient = 0.5\nwall_loss_factor = 1.5", "material.wall_loss_factor",
        "1.5", "[0, 1)"},
       {"wall_thickness = 0.0026", "wall_thickness = 0.02", "dimensions.wall_thickness", "0.02", "radius"},
-      {"wall_thickness = 0.0026", "wall_thickness = -0.0026", "dimensions.wall_thickness", "-0.0026", "at least 0"},
+      {"wall_thickness = 0.0026", "wall_thickness = -0.0026", "dimensions.wall_thickness", "-0.0026", "positive"},
+      {"wall_thickness = 0.0026", "wall_thickness = 0", "dimensions.wall_thickness", "0", "positive"},
   };
   for (const auto& c : cases) {
     DYNAMIC_SECTION(c.to) {

@@ -453,7 +453,7 @@ TEST_CASE("bat file: bad named dimensions, a shape given twice or not at all", "
       {"an impossible bat", "barrel_diameter = 0.064", "barrel_diameter = 0.02",
        {"bat.toml", "key 'dimensions.barrel_diameter'", "barrel_diameter 0.02 m", "less than handle_diameter 0.025 m"}},
       {"a negative wall", "taper_end = 0.6", "taper_end = 0.6\nwall_thickness = -0.002",
-       {"bat.toml", "key 'dimensions.wall_thickness'", "-0.002", "at least 0"}},
+       {"bat.toml", "key 'dimensions.wall_thickness'", "-0.002", "positive"}},
       {"an interpolation other than the frustums'", "length = 0.84", "length = 0.84\ninterpolation = \"pchip\"",
        {"bat.toml", "key 'interpolation'", "pchip", "[dimensions]"}},
       {"both profile and [dimensions]", "length = 0.84", "length = 0.84\nprofile = \"profile.csv\"",

@@ -129,6 +129,10 @@ void set_design_parameter(BatDesign& design, std::string_view name, double value
   // 0 stands for "as youngs_modulus" only where a bat file leaves the key out: a value set is a modulus.
   if (name == "hoop_modulus" && !(value > 0 && std::isfinite(value)))
     throw InputError("bat parameter 'hoop_modulus' = " + format_number(value) + ": expected a positive, finite modulus (Pa)");
+  // 0 stands for "solid" only where a bat file leaves the wall out: a wall set is a wall.
+  if (name == wall_thickness_key && !(value > 0))
+    throw InputError("bat parameter 'wall_thickness' = " + format_number(value) +
+                     ": expected a wall thicker than 0 m (a solid bat has no wall_thickness)");
   *parameter = value;
 }
 

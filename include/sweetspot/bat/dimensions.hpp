@@ -38,6 +38,8 @@ struct DimensionField {
   double Dimensions::*value;
   bool optional = false;
 };
+// The one dimension that makes a bat hollow: given, it must be positive.
+inline constexpr std::string_view wall_thickness_key = "wall_thickness";
 inline constexpr std::array<DimensionField, 8> dimension_fields = {{
     {"knob_diameter", &Dimensions::knob_diameter},
     {"knob_length", &Dimensions::knob_length},

@@ -35,12 +35,14 @@ def _from_knots(name, length, z, outer_diameter, inner_diameter=None, *, interpo
 
 
 def _from_dimensions(name, length, *, knob_diameter, knob_length, handle_diameter, taper_start, taper_end,
-                     barrel_diameter, end="flat", end_depth=0.0, wall_thickness=0.0, slices=None, material="maple",
+                     barrel_diameter, end="flat", end_depth=0.0, wall_thickness=None, slices=None, material="maple",
                      density=None, youngs_modulus=None, shear_modulus=None, shear_coefficient=None):
     """A bat from the named dimensions of a bat file's [dimensions] (README, "Bat files"), m."""
     dimensions = dict(knob_diameter=knob_diameter, knob_length=knob_length, handle_diameter=handle_diameter,
                       taper_start=taper_start, taper_end=taper_end, barrel_diameter=barrel_diameter,
-                      end_depth=end_depth, wall_thickness=wall_thickness)
+                      end_depth=end_depth)
+    if wall_thickness is not None:  # a hollow bat's wall; a solid bat has none (0 is refused)
+        dimensions["wall_thickness"] = wall_thickness
     return Bat._from_dimensions(name, float(length), {k: float(v) for k, v in dimensions.items()}, end, slices,
                                 material, dict(density=density, youngs_modulus=youngs_modulus,
                                                shear_modulus=shear_modulus, shear_coefficient=shear_coefficient))
