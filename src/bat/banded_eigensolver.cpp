@@ -77,80 +77,64 @@ int count_below(const Tridiagonal& t, double x) {
   return count;
 }
 
-// All of T's eigenvalues, ascending, by the root-free QL/QR iteration (dsterf, O(n^2)
+// The lowest `count` eigenvalues. All of T's by the root-free QL/QR iteration (dsterf, O(n^2)
 // with a small constant, no vectors), which costs less than bisecting even for 18 of 168 (dstebz
 // took 1.9 M instructions there, dsterf a third of that, and bisection's cost grows with the count).
 // Its error is absolute, eps ||T||, as the reduction's own and the dense solve's are.
-VectorXd all_eigenvalues(const Tridiagonal& t) {
+VectorXd lowest_eigenvalues(const Tridiagonal& t, int count) {
   VectorXd d = t.d, e = t.e;
   check(LAPACKE_dsterf_work(static_cast<lapack_int>(d.size()), d.data(), e.data()), "dsterf");
-  return d;
+  return d.head(std::min<Eigen::Index>(count, d.size()));
 }
 
-// K - shift M by rows: row i holds columns i - kd to i + 2 kd (room for the fill-in of row
-// exchanges), so that each elimination and each solve's sum runs over contiguous entries. It is
-// LU-factored with partial pivoting as dgbtf2 does, inline: at kd = 3 LAPACK's per-column BLAS
-// calls (idamax, dswap, dscal, dger) cost five times the arithmetic. The matrix is padded with
-// 2 kd rows and columns of the identity, so that every loop runs over kd or 2 kd entries, known
-// when compiling (the padding is never chosen as a pivot: its entries in the matrix's columns are
-// zero). Inverse iteration then costs O(n kd) per step.
+// K - shift M in general band storage (entry (i, j) at ab[2 kd + i - j + j ld], room above for
+// the fill-in of row exchanges), LU-factored with partial pivoting as dgbtf2 does, inline: at
+// kd = 3 LAPACK's per-column BLAS calls (idamax, dswap, dscal, dger) cost five times the
+// arithmetic. Inverse iteration then costs O(n kd) per step.
 class ShiftedPencil {
  public:
-  explicit ShiftedPencil(const BeamSystem& s)
-      : n_(static_cast<int>(s.mass.rows())), k_(rows(s.stiffness)), m_(rows(s.mass)), lu_(k_.size()), pivots_(n_) {
-    for (int j = n_; j < n_ + pad; ++j) k_[index(j, j)] = 1;
-  }
-  // Factors K - shift M, overwriting the previous shift's factors.
-  void factor(double shift) {
-    for (std::size_t i = 0; i < lu_.size(); ++i) lu_[i] = k_[i] - shift * m_[i];
+  ShiftedPencil(const BeamSystem& s, double shift) : n_(static_cast<int>(s.mass.rows())), ab_(ld * n_, 0.0), pivots_(n_) {
+    for (int j = 0; j < n_; ++j)
+      for (int i = std::max(0, j - kd); i <= std::min(n_ - 1, j + kd); ++i)
+        at(i, j) = s.stiffness(i, j) - shift * s.mass(i, j);
     // A shift exactly on an eigenvalue gives a zero pivot: nudged, so that the solve below only
     // needs to be finite.
     const double nudge = std::numeric_limits<double>::epsilon() * std::abs(shift);
     for (int j = 0; j < n_; ++j) {
+      const int below = std::min(kd, n_ - 1 - j), right = std::min(n_ - 1, j + 2 * kd);
       int p = j;
-      for (int i = j + 1; i <= j + kd; ++i)
+      for (int i = j + 1; i <= j + below; ++i)
         if (std::abs(at(i, j)) > std::abs(at(p, j))) p = i;
       pivots_[j] = p;
-      if (p != j) std::swap_ranges(&at(j, j), &at(j, j) + 2 * kd + 1, &at(p, j));
+      if (p != j)
+        for (int c = j; c <= right; ++c) std::swap(at(j, c), at(p, c));
       if (at(j, j) == 0) at(j, j) = nudge;
       const double inverse = 1 / at(j, j);
-      const double* pivot_row = &at(j, j + 1);
-      for (int i = j + 1; i <= j + kd; ++i) {
-        const double l = at(i, j) *= inverse;
-        double* row = &at(i, j + 1);
-        for (int c = 0; c < 2 * kd; ++c) row[c] -= l * pivot_row[c];
+      for (int i = j + 1; i <= j + below; ++i) {
+        const double l = at(i, j) * inverse;
+        at(i, j) = l;
+        for (int c = j + 1; c <= right; ++c) at(i, c) -= l * at(j, c);
       }
     }
   }
-  // Solves in place; b has n + pad entries, the last pad of them zero (and zero on return).
   void solve(VectorXd& b) const {
     for (int j = 0; j < n_; ++j) {
-      std::swap(b(j), b(pivots_[j]));
-      for (int i = j + 1; i <= j + kd; ++i) b(i) -= at(i, j) * b(j);
+      if (pivots_[j] != j) std::swap(b(j), b(pivots_[j]));
+      for (int i = j + 1; i <= std::min(n_ - 1, j + kd); ++i) b(i) -= at(i, j) * b(j);
     }
     for (int j = n_ - 1; j >= 0; --j) {
-      const double* row = &at(j, j + 1);
       double sum = b(j);
-      for (int c = 0; c < 2 * kd; ++c) sum -= row[c] * b(j + 1 + c);
+      for (int c = j + 1; c <= std::min(n_ - 1, j + 2 * kd); ++c) sum -= at(j, c) * b(c);
       b(j) = sum / at(j, j);
     }
   }
-  static constexpr int pad = 2 * kd;
 
  private:
-  static constexpr int width = 3 * kd + 1;
-  static std::size_t index(int i, int j) { return static_cast<std::size_t>(i * width + j - i + kd); }
-  double& at(int i, int j) { return lu_[index(i, j)]; }
-  const double& at(int i, int j) const { return lu_[index(i, j)]; }
-  // The band of one of the beam's matrices in this storage, its padding zero.
-  std::vector<double> rows(const MatrixXd& a) const {
-    std::vector<double> r(width * (n_ + pad), 0.0);
-    for (int i = 0; i < n_; ++i)
-      for (int j = std::max(0, i - kd); j <= std::min(n_ - 1, i + kd); ++j) r[index(i, j)] = a(i, j);
-    return r;
-  }
+  static constexpr int ld = 3 * kd + 1;
+  double& at(int i, int j) { return ab_[2 * kd + i - j + j * ld]; }
+  double at(int i, int j) const { return ab_[2 * kd + i - j + j * ld]; }
   int n_;
-  std::vector<double> k_, m_, lu_;
+  std::vector<double> ab_;
   std::vector<int> pivots_;
 };
 
@@ -162,34 +146,39 @@ VectorXd start_vector(int n, int seed) {
   return x;
 }
 
-// Inverse iteration at an eigenvalue accurate to round-off, eps ||T||: each step divides the
-// other modes by their distance from it over its error, so two steps leave a vector whose
-// components along mode j are about eps ||T|| / |w_k - w_j|. As LAPACK's dstein does, modes
-// closer than 1e-3 ||T|| are kept M-orthogonal to those already found within each step (modified
-// Gram-Schmidt against M x_j); farther ones are then orthogonal to eps / 1e-3, 2e-13, already.
+// Inverse iteration at an eigenvalue accurate to round-off: each step divides the other modes by
+// their distance from it over its own error (at least 1e-3 / 1e-12 here), so two steps leave
+// round-off. Modes closer than
+// 1e-3 in relative frequency (the top of the bending branch crowds) are kept M-orthogonal to
+// those already found, as LAPACK's dstein does.
 constexpr int steps = 2;
-constexpr double cluster_gap = 1e-3;
 
-struct Found {
-  MatrixXd& vectors;  // x_j, M-orthonormal
-  MatrixXd mass_vectors;  // M x_j
-};
-
-VectorXd eigenvector(ShiftedPencil& pencil, const Eigen::SparseMatrix<double>& mass, const VectorXd& w, int k,
-                     const Found& found) {
-  const int n = static_cast<int>(mass.rows());
-  pencil.factor(w(k));
-  const double gap = cluster_gap * std::max(std::abs(w(0)), std::abs(w(w.size() - 1)));
-  VectorXd x = start_vector(n, k), b(n + ShiftedPencil::pad);
+VectorXd eigenvector(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass, const VectorXd& w, int k,
+                     const MatrixXd& found) {
+  const ShiftedPencil pencil(s, w(k));
+  VectorXd x = start_vector(static_cast<int>(s.mass.rows()), k);
   for (int step = 0; step < steps; ++step) {
-    b << mass * x, VectorXd::Zero(ShiftedPencil::pad);
+    VectorXd b = mass * x;
     pencil.solve(b);
-    x = b.head(n);
-    for (int j = k - 1; j >= 2 && w(k) - w(j) <= gap; --j)
-      x -= found.mass_vectors.col(j).dot(x) * found.vectors.col(j);
-    x /= std::sqrt(x.dot(mass * x));
+    for (int j = k - 1; j >= 2 && w(k) - w(j) <= 1e-3 * w(k); --j) b -= found.col(j).dot(mass * b) * found.col(j);
+    x = b / std::sqrt(b.dot(mass * b));
   }
   return x;
+}
+
+// Inverse iteration leaves two modes M-orthogonal only to eps w_max^2 over their gap, 5e-10 for
+// Euler-Bernoulli at N = 168 (its w_max grows as N^2): one Gram-Schmidt pass in the M inner
+// product, O(n k^2), makes the basis orthonormal to round-off.
+void orthonormalise(const Eigen::SparseMatrix<double>& mass, MatrixXd& vectors) {
+  // Modified Gram-Schmidt, each projection against M x_j (formed once per column).
+  MatrixXd mx(vectors.rows(), vectors.cols());
+  for (int k = 2; k < vectors.cols(); ++k) {
+    for (int j = 2; j < k; ++j) vectors.col(k) -= mx.col(j).dot(vectors.col(k)) * vectors.col(j);
+    mx.col(k) = mass * vectors.col(k);
+    const double norm = std::sqrt(vectors.col(k).dot(mx.col(k)));
+    vectors.col(k) /= norm;
+    mx.col(k) /= norm;
+  }
 }
 
 }  // namespace
@@ -201,15 +190,10 @@ bool solve_lowest(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass, 
   // The two rigid modes always (they lie at 0 however low the frequency asked).
   const int count = std::max(2, request.count >= 0 ? request.count : count_below(t, request.upper));
   if (count > dofs * max_banded_share) return false;
-  omega_squared = all_eigenvalues(t);
+  omega_squared = lowest_eigenvalues(t, count);
   vectors = MatrixXd::Zero(dofs, count);
-  Found found{vectors, MatrixXd::Zero(dofs, count)};
-  ShiftedPencil pencil(s);
-  for (int k = 2; k < count; ++k) {
-    vectors.col(k) = eigenvector(pencil, mass, omega_squared, k, found);
-    found.mass_vectors.col(k) = mass * vectors.col(k);
-  }
-  omega_squared.conservativeResize(count);
+  for (int k = 2; k < count; ++k) vectors.col(k) = eigenvector(s, mass, omega_squared, k, vectors);
+  orthonormalise(mass, vectors);
   return true;
 }
 

@@ -36,11 +36,11 @@ void solve(const BeamSystem& s, bool diagonal_mass, VectorXd& omega_squared, Mat
 }
 
 // Replaces the two near-zero modes by the exact rigid ones and makes every vibrational mode
-// exactly M-orthogonal to them, so that rigid motion stays in the rigid modes to round-off. M is
-// banded: its sparse copy makes a product per mode O(n), where the dense one made the dense
-// solve's whole step O(n^3), as costly as the eigen-decomposition itself.
-void set_rigid_modes(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass, ModalBasis& basis,
-                     VectorXd& omega_squared, MatrixXd& x) {
+// exactly M-orthogonal to them, so that rigid motion stays in the rigid modes to round-off.
+// `mass` is s.mass (the dense solve, as it always was) or its sparse copy (a partial solve, where
+// a dense product per mode would cost more than the solve).
+template <class Mass>
+void set_rigid_modes(const BeamSystem& s, const Mass& mass, ModalBasis& basis, VectorXd& omega_squared, MatrixXd& x) {
   const VectorXd& t = s.translation;
   basis.mass = t.dot(mass * t);
   basis.z_cm = t.dot(mass * s.rotation_knob) / basis.mass;
@@ -61,10 +61,11 @@ void set_rigid_modes(const BeamSystem& s, const Eigen::SparseMatrix<double>& mas
   basis.rotation(0) = 0;
 }
 
-// The banded solve of a partial request, its rigid modes set; false, with
+// The banded solve of a partial request, with the rigid modes set from the sparse M; false, with
 // nothing done, when the request reaches past max_banded_share and the dense solve is cheaper.
-bool solve_partial(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass, bool timoshenko, ModeRequest request,
-                   ModalBasis& basis, VectorXd& omega_squared, MatrixXd& x) {
+bool solve_partial(const BeamSystem& s, bool timoshenko, ModeRequest request, ModalBasis& basis,
+                   VectorXd& omega_squared, MatrixXd& x) {
+  const Eigen::SparseMatrix<double> mass = s.mass.sparseView();
   const BandedRequest banded{request.vibrational > 0 ? request.vibrational + 2 : -1,
                              request.below_omega * request.below_omega, timoshenko};
   if (!solve_lowest(s, mass, banded, omega_squared, x)) return false;
@@ -103,11 +104,10 @@ ModalBasis compute_modes(const Bat& bat, BeamTheory theory, ModeRequest request)
   for (int i = 0; i < bat.slices(); ++i) basis.z.push_back(bat.slice_center(i));
   VectorXd omega_squared = VectorXd::Zero(2);
   MatrixXd x(dofs, 2);
-  const Eigen::SparseMatrix<double> mass = s.mass.sparseView();
-  if (partial) partial = solve_partial(s, mass, timoshenko, request, basis, omega_squared, x);
+  if (partial) partial = solve_partial(s, timoshenko, request, basis, omega_squared, x);
   if (!partial) {
     if (!request.is_rigid_only()) solve(s, timoshenko, omega_squared, x);
-    set_rigid_modes(s, mass, basis, omega_squared, x);
+    set_rigid_modes(s, s.mass, basis, omega_squared, x);
   }
   basis.omega = omega_squared.cwiseMax(0.0).cwiseSqrt();
   // A fixed sign (barrel end moving +y) makes mode shapes reproducible across solvers.
