@@ -203,7 +203,7 @@ OptimizerSettings read_optimizer(const Where& top, const toml::table& doc) {
 OptimizationProblem load_optimization(const fs::path& file) {
   OptimizationProblem problem;
   problem.file = file;
-  problem.text = study_detail::read_text(file);
+  problem.text = study_detail::read_text(file, "optimisation file");
   const toml::table doc = study_detail::parse_toml(file, problem.text);
   const Where top{&problem.file, "", 0};
   reject_unknown(top, doc, {"title", "bat", "free", "player", "model", "objective", "constraints", "optimizer"});

@@ -401,14 +401,14 @@ double read_sweet_spot_fraction(const Where& top, const toml::table& doc) {
 
 // ---- The file ----------------------------------------------------------------------------------
 
-std::string read_text(const fs::path& file) {
+std::string read_text(const fs::path& file, std::string_view what) {
   std::error_code ignored;  // a status we cannot get reads as "not found"
   if (!fs::is_regular_file(file, ignored))
-    throw InputError(file.string() + ": study file not found (or not a regular file)");
+    throw InputError(file.string() + ": " + std::string(what) + " not found (or not a regular file)");
   std::ifstream in(file, std::ios::binary);
   std::ostringstream text;
   text << in.rdbuf();
-  if (!in) throw InputError(file.string() + ": cannot read the study file");
+  if (!in) throw InputError(file.string() + ": cannot read the " + std::string(what));
   return text.str();
 }
 

@@ -68,7 +68,8 @@ struct Settings {
 double default_mode_count(const Settings& s);
 
 // ---- Reading (study_reading.cpp) ----
-std::string read_text(const fs::path& file);
+// The text of a study (or, `what`, an optimisation) file; InputError when it cannot be read.
+std::string read_text(const fs::path& file, std::string_view what = "study file");
 toml::table parse_toml(const fs::path& file, const std::string& text);
 // Unknown keys are errors: a misspelt optional key would otherwise be silently ignored.
 void reject_unknown(const Where& at, const toml::table& table, std::initializer_list<std::string_view> known);
