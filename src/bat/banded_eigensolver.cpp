@@ -87,54 +87,70 @@ VectorXd lowest_eigenvalues(const Tridiagonal& t, int count) {
   return d.head(std::min<Eigen::Index>(count, d.size()));
 }
 
-// K - shift M in general band storage (entry (i, j) at ab[2 kd + i - j + j ld], room above for
-// the fill-in of row exchanges), LU-factored with partial pivoting as dgbtf2 does, inline: at
-// kd = 3 LAPACK's per-column BLAS calls (idamax, dswap, dscal, dger) cost five times the
-// arithmetic. Inverse iteration then costs O(n kd) per step.
+// K - shift M by rows: row i holds columns i - kd to i + 2 kd (room for the fill-in of row
+// exchanges), so that each elimination and each solve's sum runs over contiguous entries. It is
+// LU-factored with partial pivoting as dgbtf2 does, inline: at kd = 3 LAPACK's per-column BLAS
+// calls (idamax, dswap, dscal, dger) cost five times the arithmetic. The matrix is padded with
+// 2 kd rows and columns of the identity, so that every loop runs over kd or 2 kd entries, known
+// when compiling (the padding is never chosen as a pivot: its entries in the matrix's columns are
+// zero). Inverse iteration then costs O(n kd) per step.
 class ShiftedPencil {
  public:
-  ShiftedPencil(const BeamSystem& s, double shift) : n_(static_cast<int>(s.mass.rows())), ab_(ld * n_, 0.0), pivots_(n_) {
-    for (int j = 0; j < n_; ++j)
-      for (int i = std::max(0, j - kd); i <= std::min(n_ - 1, j + kd); ++i)
-        at(i, j) = s.stiffness(i, j) - shift * s.mass(i, j);
+  explicit ShiftedPencil(const BeamSystem& s)
+      : n_(static_cast<int>(s.mass.rows())), k_(rows(s.stiffness)), m_(rows(s.mass)), lu_(k_.size()), pivots_(n_) {
+    for (int j = n_; j < n_ + pad; ++j) k_[index(j, j)] = 1;
+  }
+  // Factors K - shift M, overwriting the previous shift's factors.
+  void factor(double shift) {
+    for (std::size_t i = 0; i < lu_.size(); ++i) lu_[i] = k_[i] - shift * m_[i];
     // A shift exactly on an eigenvalue gives a zero pivot: nudged, so that the solve below only
     // needs to be finite.
     const double nudge = std::numeric_limits<double>::epsilon() * std::abs(shift);
     for (int j = 0; j < n_; ++j) {
-      const int below = std::min(kd, n_ - 1 - j), right = std::min(n_ - 1, j + 2 * kd);
       int p = j;
-      for (int i = j + 1; i <= j + below; ++i)
+      for (int i = j + 1; i <= j + kd; ++i)
         if (std::abs(at(i, j)) > std::abs(at(p, j))) p = i;
       pivots_[j] = p;
-      if (p != j)
-        for (int c = j; c <= right; ++c) std::swap(at(j, c), at(p, c));
+      if (p != j) std::swap_ranges(&at(j, j), &at(j, j) + 2 * kd + 1, &at(p, j));
       if (at(j, j) == 0) at(j, j) = nudge;
       const double inverse = 1 / at(j, j);
-      for (int i = j + 1; i <= j + below; ++i) {
-        const double l = at(i, j) * inverse;
-        at(i, j) = l;
-        for (int c = j + 1; c <= right; ++c) at(i, c) -= l * at(j, c);
+      const double* pivot_row = &at(j, j + 1);
+      for (int i = j + 1; i <= j + kd; ++i) {
+        const double l = at(i, j) *= inverse;
+        double* row = &at(i, j + 1);
+        for (int c = 0; c < 2 * kd; ++c) row[c] -= l * pivot_row[c];
       }
     }
   }
+  // Solves in place; b has n + pad entries, the last pad of them zero (and zero on return).
   void solve(VectorXd& b) const {
     for (int j = 0; j < n_; ++j) {
-      if (pivots_[j] != j) std::swap(b(j), b(pivots_[j]));
-      for (int i = j + 1; i <= std::min(n_ - 1, j + kd); ++i) b(i) -= at(i, j) * b(j);
+      std::swap(b(j), b(pivots_[j]));
+      for (int i = j + 1; i <= j + kd; ++i) b(i) -= at(i, j) * b(j);
     }
     for (int j = n_ - 1; j >= 0; --j) {
+      const double* row = &at(j, j + 1);
       double sum = b(j);
-      for (int c = j + 1; c <= std::min(n_ - 1, j + 2 * kd); ++c) sum -= at(j, c) * b(c);
+      for (int c = 0; c < 2 * kd; ++c) sum -= row[c] * b(j + 1 + c);
       b(j) = sum / at(j, j);
     }
   }
+  static constexpr int pad = 2 * kd;
 
  private:
-  static constexpr int ld = 3 * kd + 1;
-  double& at(int i, int j) { return ab_[2 * kd + i - j + j * ld]; }
-  double at(int i, int j) const { return ab_[2 * kd + i - j + j * ld]; }
+  static constexpr int width = 3 * kd + 1;
+  static std::size_t index(int i, int j) { return static_cast<std::size_t>(i * width + j - i + kd); }
+  double& at(int i, int j) { return lu_[index(i, j)]; }
+  const double& at(int i, int j) const { return lu_[index(i, j)]; }
+  // The band of one of the beam's matrices in this storage, its padding zero.
+  std::vector<double> rows(const MatrixXd& a) const {
+    std::vector<double> r(width * (n_ + pad), 0.0);
+    for (int i = 0; i < n_; ++i)
+      for (int j = std::max(0, i - kd); j <= std::min(n_ - 1, i + kd); ++j) r[index(i, j)] = a(i, j);
+    return r;
+  }
   int n_;
-  std::vector<double> ab_;
+  std::vector<double> k_, m_, lu_;
   std::vector<int> pivots_;
 };
 
@@ -153,15 +169,17 @@ VectorXd start_vector(int n, int seed) {
 // those already found, as LAPACK's dstein does.
 constexpr int steps = 2;
 
-VectorXd eigenvector(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass, const VectorXd& w, int k,
+VectorXd eigenvector(ShiftedPencil& pencil, const Eigen::SparseMatrix<double>& mass, const VectorXd& w, int k,
                      const MatrixXd& found) {
-  const ShiftedPencil pencil(s, w(k));
-  VectorXd x = start_vector(static_cast<int>(s.mass.rows()), k);
+  const int n = static_cast<int>(mass.rows());
+  pencil.factor(w(k));
+  VectorXd x = start_vector(n, k), b(n + ShiftedPencil::pad);
   for (int step = 0; step < steps; ++step) {
-    VectorXd b = mass * x;
+    b << mass * x, VectorXd::Zero(ShiftedPencil::pad);
     pencil.solve(b);
-    for (int j = k - 1; j >= 2 && w(k) - w(j) <= 1e-3 * w(k); --j) b -= found.col(j).dot(mass * b) * found.col(j);
-    x = b / std::sqrt(b.dot(mass * b));
+    VectorXd y = b.head(n);
+    for (int j = k - 1; j >= 2 && w(k) - w(j) <= 1e-3 * w(k); --j) y -= found.col(j).dot(mass * y) * found.col(j);
+    x = y / std::sqrt(y.dot(mass * y));
   }
   return x;
 }
@@ -192,7 +210,8 @@ bool solve_lowest(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass, 
   if (count > dofs * max_banded_share) return false;
   omega_squared = lowest_eigenvalues(t, count);
   vectors = MatrixXd::Zero(dofs, count);
-  for (int k = 2; k < count; ++k) vectors.col(k) = eigenvector(s, mass, omega_squared, k, vectors);
+  ShiftedPencil pencil(s);
+  for (int k = 2; k < count; ++k) vectors.col(k) = eigenvector(pencil, mass, omega_squared, k, vectors);
   orthonormalise(mass, vectors);
   return true;
 }
