@@ -215,6 +215,18 @@ TEST_CASE("optimize writes every evaluation and the best bat, which certify acce
   CHECK(read(opt.string()).find("[free]") != std::string::npos);
 }
 
+TEST_CASE("optimize refuses a bound no design can take, naming the file and the key", "[optimize]") {
+  // A hoop modulus or a wall of 0 is none (a bat file's 0 means "as youngs_modulus", "solid"):
+  // refused at the bound, not as a bare "bat parameter" line without the file.
+  TempDir dir;
+  const auto hoop = dir.write("hoop.toml", density_problem("", "hoop_modulus = { min = 0, max = 1e11, start = 5e10 }"));
+  REQUIRE_THROWS_WITH(load_optimization(hoop),
+                      Catch::Contains("hoop.toml") && Catch::Contains("free.hoop_modulus.min") && Catch::Contains("positive"));
+  const auto wall = dir.write("wall.toml", density_problem("", "wall_thickness = { min = -0.001, max = 0.004, start = 0.002 }"));
+  REQUIRE_THROWS_WITH(load_optimization(wall),
+                      Catch::Contains("wall.toml") && Catch::Contains("free.wall_thickness.min") && Catch::Contains("-0.001"));
+}
+
 TEST_CASE("optimize killed mid-run resumes to the same best design, and 2 ranks give the same bits", "[optimize][program]") {
   TempDir dir;
   // A flexible bat, two dimensions free, the sweet spot's width: about 55 evaluations of 5 ms.

@@ -26,6 +26,16 @@ BatDesign read_bat(const Where& at, const fs::path& file, const std::string& nam
 
 // ---- [free] --------------------------------------------------------------------------------
 
+// A bound the design takes as its parameter's value (a hoop modulus or a wall of 0 is none).
+void check_bound(const Where& at, const BatDesign& base, const std::string& name, double value) {
+  BatDesign design = base;
+  try {
+    set_design_parameter(design, name, value);
+  } catch (const InputError& e) {
+    reject(at, format_number(value), e.what());
+  }
+}
+
 FreeParameter read_free_parameter(const Where& at, const toml::node& node, const std::string& name,
                                   const BatDesign& base) {
   const std::vector<std::string> known = design_parameters(base);
@@ -38,6 +48,8 @@ FreeParameter read_free_parameter(const Where& at, const toml::node& node, const
                   required_number(at, t, "max", finite, "a finite upper bound"), 0};
   if (!(p.lower < p.upper))
     reject(at.child("max", *t.get("max")), format_number(p.upper), "expected a bound above min = " + format_number(p.lower));
+  check_bound(at.child("min", *t.get("min")), base, name, p.lower);
+  check_bound(at.child("max", *t.get("max")), base, name, p.upper);
   const double base_value = design_parameter(base, name);
   const auto inside = [&](double v) { return v >= p.lower && v <= p.upper; };
   if (t.get("start"))
