@@ -200,6 +200,10 @@ TEST_CASE("optimize writes every evaluation and the best bat, which certify acce
   std::string simplex = density_problem();
   simplex.replace(simplex.find("xtol_rel"), 0, "algorithm = \"simplex\"\n");
   refused(simplex, {"optimizer.algorithm", "simplex", "cobyla"});
+  // BOBYQA's first step must fit twice in each range: NLopt's invalid argument, refused before any work.
+  std::string wide_step = density_problem();
+  wide_step.replace(wide_step.find("xtol_rel"), 0, "algorithm = \"bobyqa\"\ninitial_step = 0.8\n");
+  refused(wide_step, {"optimizer.initial_step", "0.8", "0.5", "bobyqa"});
   refused(density_problem() + "[objective]\n", {"objective"});
   std::string too_many = density_problem();
   too_many.replace(too_many.find("modes = 0"), 9, "modes = 500");

@@ -204,6 +204,10 @@ OptimizerSettings read_optimizer(const Where& top, const toml::table& doc) {
   o.xtol_rel = number_key(at, t, "xtol_rel", o.xtol_rel, [](double v) { return v > 0 && v < 1; }, "a tolerance in (0, 1)");
   o.initial_step = number_key(at, t, "initial_step", o.initial_step, [](double v) { return v > 0 && v <= 1; },
                               "a fraction of each parameter's range in (0, 1]");
+  // BOBYQA (alone, or MLSL's local search) needs its first trust region to fit twice in each range.
+  if (o.algorithm != Algorithm::cobyla && o.initial_step > 0.5)
+    reject(at.child("initial_step", *t.get("initial_step")), format_number(o.initial_step),
+           "expected a fraction in (0, 0.5] with algorithm = \"" + algorithm + "\" (BOBYQA's first step must fit twice in each range)");
   o.constraint_tolerance = number_key(at, t, "constraint_tolerance", o.constraint_tolerance,
                                       [](double v) { return v >= 0 && v < 1; }, "a relative tolerance in [0, 1)");
   o.seed = static_cast<std::uint32_t>(number_key(at, t, "seed", o.seed, whole(0, 4294967295.0), "an integer from 0 to 2^32 - 1"));
