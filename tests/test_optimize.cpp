@@ -214,6 +214,10 @@ TEST_CASE("optimize writes every evaluation and the best bat, which certify acce
   const std::string mean = "maximize = \"mean_bbs\"\npoints = [0.7]\nweights = [1]";
   no_scan.replace(no_scan.find(mean), mean.size(), "maximize = \"peak_bbs\"");
   refused(no_scan, {"objective.z", "z = {"});
+  // A tolerance below the spacing of doubles near the bat would keep the golden section going forever.
+  std::string fine_peak = no_scan;
+  fine_peak.replace(fine_peak.find("[optimizer]"), 0, "z = { start = 0.5, stop = 0.8, step = 0.05 }\ntolerance = 1e-300\n");
+  refused(fine_peak, {"objective.tolerance", "1e-300", "1e-12"});
   // An output that is the optimisation file itself is refused, and the file kept.
   require_refused(run_program("optimize " + opt.string() + " -o " + opt.string()), {opt.string()});
   CHECK(read(opt.string()).find("[free]") != std::string::npos);
