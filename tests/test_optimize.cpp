@@ -200,6 +200,10 @@ TEST_CASE("optimize writes every evaluation and the best bat, which certify acce
   std::string simplex = density_problem();
   simplex.replace(simplex.find("xtol_rel"), 0, "algorithm = \"simplex\"\n");
   refused(simplex, {"optimizer.algorithm", "simplex", "cobyla"});
+  // BOBYQA's first step must fit twice in each range: NLopt's invalid argument, refused before any work.
+  std::string wide_step = density_problem();
+  wide_step.replace(wide_step.find("xtol_rel"), 0, "algorithm = \"bobyqa\"\ninitial_step = 0.8\n");
+  refused(wide_step, {"optimizer.initial_step", "0.8", "0.5", "bobyqa"});
   refused(density_problem() + "[objective]\n", {"objective"});
   std::string too_many = density_problem();
   too_many.replace(too_many.find("modes = 0"), 9, "modes = 500");
@@ -210,9 +214,25 @@ TEST_CASE("optimize writes every evaluation and the best bat, which certify acce
   const std::string mean = "maximize = \"mean_bbs\"\npoints = [0.7]\nweights = [1]";
   no_scan.replace(no_scan.find(mean), mean.size(), "maximize = \"peak_bbs\"");
   refused(no_scan, {"objective.z", "z = {"});
+  // A tolerance below the spacing of doubles near the bat would keep the golden section going forever.
+  std::string fine_peak = no_scan;
+  fine_peak.replace(fine_peak.find("[optimizer]"), 0, "z = { start = 0.5, stop = 0.8, step = 0.05 }\ntolerance = 1e-300\n");
+  refused(fine_peak, {"objective.tolerance", "1e-300", "1e-12"});
   // An output that is the optimisation file itself is refused, and the file kept.
   require_refused(run_program("optimize " + opt.string() + " -o " + opt.string()), {opt.string()});
   CHECK(read(opt.string()).find("[free]") != std::string::npos);
+}
+
+TEST_CASE("optimize refuses a bound no design can take, naming the file and the key", "[optimize]") {
+  // A hoop modulus or a wall of 0 is none (a bat file's 0 means "as youngs_modulus", "solid"):
+  // refused at the bound, not as a bare "bat parameter" line without the file.
+  TempDir dir;
+  const auto hoop = dir.write("hoop.toml", density_problem("", "hoop_modulus = { min = 0, max = 1e11, start = 5e10 }"));
+  REQUIRE_THROWS_WITH(load_optimization(hoop),
+                      Catch::Contains("hoop.toml") && Catch::Contains("free.hoop_modulus.min") && Catch::Contains("positive"));
+  const auto wall = dir.write("wall.toml", density_problem("", "wall_thickness = { min = -0.001, max = 0.004, start = 0.002 }"));
+  REQUIRE_THROWS_WITH(load_optimization(wall),
+                      Catch::Contains("wall.toml") && Catch::Contains("free.wall_thickness.min") && Catch::Contains("-0.001"));
 }
 
 TEST_CASE("optimize killed mid-run resumes to the same best design, and 2 ranks give the same bits", "[optimize][program]") {

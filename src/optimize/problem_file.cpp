@@ -26,6 +26,16 @@ BatDesign read_bat(const Where& at, const fs::path& file, const std::string& nam
 
 // ---- [free] --------------------------------------------------------------------------------
 
+// A bound the design takes as its parameter's value (a hoop modulus or a wall of 0 is none).
+void check_bound(const Where& at, const BatDesign& base, const std::string& name, double value) {
+  BatDesign design = base;
+  try {
+    set_design_parameter(design, name, value);
+  } catch (const InputError& e) {
+    reject(at, format_number(value), e.what());
+  }
+}
+
 FreeParameter read_free_parameter(const Where& at, const toml::node& node, const std::string& name,
                                   const BatDesign& base) {
   const std::vector<std::string> known = design_parameters(base);
@@ -38,6 +48,8 @@ FreeParameter read_free_parameter(const Where& at, const toml::node& node, const
                   required_number(at, t, "max", finite, "a finite upper bound"), 0};
   if (!(p.lower < p.upper))
     reject(at.child("max", *t.get("max")), format_number(p.upper), "expected a bound above min = " + format_number(p.lower));
+  check_bound(at.child("min", *t.get("min")), base, name, p.lower);
+  check_bound(at.child("max", *t.get("max")), base, name, p.upper);
   const double base_value = design_parameter(base, name);
   const auto inside = [&](double v) { return v >= p.lower && v <= p.upper; };
   if (t.get("start"))
@@ -192,6 +204,10 @@ OptimizerSettings read_optimizer(const Where& top, const toml::table& doc) {
   o.xtol_rel = number_key(at, t, "xtol_rel", o.xtol_rel, [](double v) { return v > 0 && v < 1; }, "a tolerance in (0, 1)");
   o.initial_step = number_key(at, t, "initial_step", o.initial_step, [](double v) { return v > 0 && v <= 1; },
                               "a fraction of each parameter's range in (0, 1]");
+  // BOBYQA (alone, or MLSL's local search) needs its first trust region to fit twice in each range.
+  if (o.algorithm != Algorithm::cobyla && o.initial_step > 0.5)
+    reject(at.child("initial_step", *t.get("initial_step")), format_number(o.initial_step),
+           "expected a fraction in (0, 0.5] with algorithm = \"" + algorithm + "\" (BOBYQA's first step must fit twice in each range)");
   o.constraint_tolerance = number_key(at, t, "constraint_tolerance", o.constraint_tolerance,
                                       [](double v) { return v >= 0 && v < 1; }, "a relative tolerance in [0, 1)");
   o.seed = static_cast<std::uint32_t>(number_key(at, t, "seed", o.seed, whole(0, 4294967295.0), "an integer from 0 to 2^32 - 1"));

@@ -107,7 +107,10 @@ ObjectiveSpec read_objective(const Where& top, const toml::table& doc, double le
   if (kind == "peak_bbs") {
     o.kind = ObjectiveKind::peak_bbs;
     reject_unknown(at, t, {"maximize", "z", "tolerance"});
-    o.tolerance = number_key(at, t, "tolerance", 1e-5, positive, "a tolerance > 0 (m) for where the peak is");
+    // The golden section narrows its bracket to the tolerance: below about 1e-12 m it would reach
+    // the spacing of doubles near the bat and never end.
+    o.tolerance = number_key(at, t, "tolerance", 1e-5, [](double v) { return v >= 1e-12; },
+                             "a tolerance >= 1e-12 (m) for where the peak is");
     read_scan(at, t, o, length);
   } else if (kind == "sweet_spot_width") {
     o.kind = ObjectiveKind::sweet_spot_width;
