@@ -154,6 +154,22 @@ class ShiftedPencil {
   std::vector<int> pivots_;
 };
 
+// M applied to a vector: Timoshenko's lumped M by its diagonal, the same products as the sparse
+// product's (0 + m x) without its per-entry bookkeeping; Euler-Bernoulli's consistent M sparse.
+class MassProduct {
+ public:
+  MassProduct(const Eigen::SparseMatrix<double>& mass, bool diagonal)
+      : mass_(mass), diagonal_(diagonal ? VectorXd(mass.diagonal()) : VectorXd()) {}
+  template <class Vector>
+  VectorXd operator*(const Vector& x) const {
+    return diagonal_.size() ? VectorXd(diagonal_.cwiseProduct(x)) : VectorXd(mass_ * x);
+  }
+
+ private:
+  const Eigen::SparseMatrix<double>& mass_;
+  VectorXd diagonal_;
+};
+
 // A fixed pseudo-random start (the same on every run), with a component along every mode.
 VectorXd start_vector(int n, int seed) {
   std::minstd_rand engine(static_cast<unsigned>(seed) + 1);
@@ -169,9 +185,9 @@ VectorXd start_vector(int n, int seed) {
 // those already found, as LAPACK's dstein does.
 constexpr int steps = 2;
 
-VectorXd eigenvector(ShiftedPencil& pencil, const Eigen::SparseMatrix<double>& mass, const VectorXd& w, int k,
+VectorXd eigenvector(ShiftedPencil& pencil, const MassProduct& mass, const VectorXd& w, int k,
                      const MatrixXd& found) {
-  const int n = static_cast<int>(mass.rows());
+  const int n = static_cast<int>(found.rows());
   pencil.factor(w(k));
   VectorXd x = start_vector(n, k), b(n + ShiftedPencil::pad);
   for (int step = 0; step < steps; ++step) {
@@ -187,7 +203,7 @@ VectorXd eigenvector(ShiftedPencil& pencil, const Eigen::SparseMatrix<double>& m
 // Inverse iteration leaves two modes M-orthogonal only to eps w_max^2 over their gap, 5e-10 for
 // Euler-Bernoulli at N = 168 (its w_max grows as N^2): one Gram-Schmidt pass in the M inner
 // product, O(n k^2), makes the basis orthonormal to round-off.
-void orthonormalise(const Eigen::SparseMatrix<double>& mass, MatrixXd& vectors) {
+void orthonormalise(const MassProduct& mass, MatrixXd& vectors) {
   // Modified Gram-Schmidt, each projection against M x_j (formed once per column).
   MatrixXd mx(vectors.rows(), vectors.cols());
   for (int k = 2; k < vectors.cols(); ++k) {
@@ -211,8 +227,9 @@ bool solve_lowest(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass, 
   omega_squared = lowest_eigenvalues(t, count);
   vectors = MatrixXd::Zero(dofs, count);
   ShiftedPencil pencil(s);
-  for (int k = 2; k < count; ++k) vectors.col(k) = eigenvector(pencil, mass, omega_squared, k, vectors);
-  orthonormalise(mass, vectors);
+  const MassProduct m(mass, request.diagonal_mass);
+  for (int k = 2; k < count; ++k) vectors.col(k) = eigenvector(pencil, m, omega_squared, k, vectors);
+  orthonormalise(m, vectors);
   return true;
 }
 

@@ -61,7 +61,8 @@ void set_rigid_modes(const BeamSystem& s, const Mass& mass, ModalBasis& basis, V
   basis.rotation(0) = 0;
 }
 
-// The banded solve of a partial request, with the rigid modes set from the sparse M; false, with
+// The banded solve of a partial request, with the rigid modes set from the sparse M (Timoshenko's
+// lumped one as a diagonal: the same products, without the sparse one's bookkeeping); false, with
 // nothing done, when the request reaches past max_banded_share and the dense solve is cheaper.
 bool solve_partial(const BeamSystem& s, bool timoshenko, ModeRequest request, ModalBasis& basis,
                    VectorXd& omega_squared, MatrixXd& x) {
@@ -69,7 +70,8 @@ bool solve_partial(const BeamSystem& s, bool timoshenko, ModeRequest request, Mo
   const BandedRequest banded{request.vibrational > 0 ? request.vibrational + 2 : -1,
                              request.below_omega * request.below_omega, timoshenko};
   if (!solve_lowest(s, mass, banded, omega_squared, x)) return false;
-  set_rigid_modes(s, mass, basis, omega_squared, x);
+  if (timoshenko) set_rigid_modes(s, Eigen::DiagonalMatrix<double, Eigen::Dynamic>(mass.diagonal()), basis, omega_squared, x);
+  else set_rigid_modes(s, mass, basis, omega_squared, x);
   return true;
 }
 
