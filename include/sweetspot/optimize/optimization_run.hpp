@@ -13,11 +13,8 @@
 
 namespace sweetspot {
 
-struct OptimizeOptions {
-  std::filesystem::path output;  // the dataset; OUT.journal and OUT.lock beside it while running
-  bool resume = false;
-  Verbosity verbosity = Verbosity::normal;
-};
+// The dataset, resume and verbosity: a study run's options (parallel.hpp), the same in meaning.
+using OptimizeOptions = RunOptions;
 
 // The best design's bat file: OUT_best.toml beside OUT (its extension replaced).
 std::filesystem::path best_bat_path(const std::filesystem::path& output);
