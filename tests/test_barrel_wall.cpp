@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "barrel_scene.hpp"
 #include "program.hpp"
 #include "refusal.hpp"
 #include "temp_dir.hpp"
@@ -77,15 +78,6 @@ double final_energy(const ModalContact& body, const Collision& c, const Ball& ba
   double e = 0.5 * ball.mass * c.ball_velocity * c.ball_velocity;
   for (int n = 0; n < body.count(); ++n) e += c.mode_energy(body, n);
   return e;
-}
-
-ImpactScene barrel_scene(double z) {
-  ImpactScene scene;
-  scene.z = z;
-  scene.ball_speed = 40;
-  scene.swing.cm_speed = 24;
-  scene.swing.omega = 51;
-  return scene;
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <numbers>
 #include <string>
 
+#include "barrel_scene.hpp"
 #include "program.hpp"
 #include "temp_dir.hpp"
 #include "sweetspot/bat/bat_design_text.hpp"
@@ -93,15 +94,6 @@ BatDesign alloy_with_loss(double eta) {
   BatDesign design = load_bat_design(source_path("studies/bats/alloy_bbcor.toml"), source);
   set_design_parameter(design, "wall_loss_factor", eta);
   return design;
-}
-
-ImpactScene barrel_scene(double z) {
-  ImpactScene scene;
-  scene.z = z;
-  scene.ball_speed = 40;
-  scene.swing.cm_speed = 24;
-  scene.swing.omega = 51;
-  return scene;
 }
 
 }  // namespace

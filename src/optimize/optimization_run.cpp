@@ -100,11 +100,7 @@ std::unique_ptr<OutputClaim> claim_output(const OptimizationProblem& p, const Op
     } catch (const InputError& e) {
       refusal = e.what();
     }
-  int length = static_cast<int>(refusal.size());
-  MPI_Bcast(&length, 1, MPI_INT, 0, MPI_COMM_WORLD);
-  refusal.resize(static_cast<std::size_t>(length));
-  MPI_Bcast(refusal.data(), length, MPI_CHAR, 0, MPI_COMM_WORLD);
-  if (!refusal.empty()) throw RunRefused(refusal);
+  share_refusal(refusal);
   return claim;
 }
 

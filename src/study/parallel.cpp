@@ -355,7 +355,7 @@ struct OutputClaim {
 };
 
 // Rank 0 claims the output; every rank learns whether it did, and all throw RunRefused with rank
-// 0's reason if not (a rank that went on alone would wait for the others forever).
+// 0's reason if not.
 std::unique_ptr<OutputClaim> claim_output(const Study& study, const OutputLayout& layout, const RunOptions& options,
                                           int rank) {
   std::unique_ptr<OutputClaim> claim;
@@ -366,11 +366,7 @@ std::unique_ptr<OutputClaim> claim_output(const Study& study, const OutputLayout
     } catch (const InputError& e) {
       refusal = e.what();
     }
-  int length = static_cast<int>(refusal.size());
-  MPI_Bcast(&length, 1, MPI_INT, 0, MPI_COMM_WORLD);
-  refusal.resize(static_cast<std::size_t>(length));
-  MPI_Bcast(refusal.data(), length, MPI_CHAR, 0, MPI_COMM_WORLD);
-  if (!refusal.empty()) throw RunRefused(refusal);
+  share_refusal(refusal);
   return claim;
 }
 
@@ -494,6 +490,14 @@ void work(const Study& study, const OutputLayout& layout, int rank) {
 }
 
 }  // namespace
+
+void share_refusal(std::string refusal) {
+  int length = static_cast<int>(refusal.size());
+  MPI_Bcast(&length, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  refusal.resize(static_cast<std::size_t>(length));
+  MPI_Bcast(refusal.data(), length, MPI_CHAR, 0, MPI_COMM_WORLD);
+  if (!refusal.empty()) throw RunRefused(refusal);
+}
 
 void run_study(const Study& study, const RunOptions& options) {
   int rank = 0, ranks = 1;

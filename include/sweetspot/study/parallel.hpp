@@ -33,6 +33,10 @@ class RunRefused : public InputError {
   using InputError::InputError;
 };
 
+// Every rank learns rank 0's refusal (empty: none) and, if there is one, throws RunRefused with it
+// (a rank that went on alone would wait for the others forever). Call on every rank.
+void share_refusal(std::string refusal);
+
 // Call between MPI_Init_thread and MPI_Finalize on every rank. Rank 0 checks the output, locks
 // it for the run, reads the journal, and writes the dataset.
 void run_study(const Study& study, const RunOptions& options);
