@@ -338,13 +338,13 @@ TEST_CASE("A journal is refused and kept when the study, a bat, a profile or the
 
   write_bytes(bat, with(bat_text, "density = 649", "density = 700"));
   k.require_refused_kept(k.resume("density", k.journal), "density", k.journal,
-                         "written with other bat or profile files than the study names now");
+                         "written with other bat or profile files than the file names now");
   write_bytes(bat, bat_text);
   write_bytes(profile, with(profile_text, "2,0.0150,0.043970", "2,0.0150,0.043971"));
   k.require_refused_kept(k.resume("profile", k.journal), "profile", k.journal, "other bat or profile files");
   write_bytes(profile, profile_text);
   write_bytes(k.s.study, "# edited\n" + study_text);
-  k.require_refused_kept(k.resume("study", k.journal), "study", k.journal, "written for another study text");
+  k.require_refused_kept(k.resume("study", k.journal), "study", k.journal, "written for another study (or optimisation) file's text");
   write_bytes(k.s.study, study_text);
 
   // Without --resume, a journal is finished work the user may want: refused, not overwritten.

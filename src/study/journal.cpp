@@ -128,9 +128,9 @@ void Journal::read_existing(const RowCheck& check) {
   found.program = word_at(header.data() + 24);
   found.points = word_at(header.data() + 32);
   found.width = word_at(header.data() + 40);
-  if (found.study != key_.study) refuse(path_, "written for another study text than this one");
+  if (found.study != key_.study) refuse(path_, "written for another study (or optimisation) file's text than this one");
   if (found.inputs != key_.inputs)
-    refuse(path_, "written with other bat or profile files than the study names now (one changed since)");
+    refuse(path_, "written with other bat or profile files than the file names now (one changed since)");
   if (found.program != key_.program)
     refuse(path_, std::string("written by another build of sweetspot than this one, ") + version + " (" +
                       git_commit + ")");

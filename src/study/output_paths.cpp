@@ -66,7 +66,7 @@ void check_not_an_input(const fs::path& written, const std::vector<fs::path>& in
     std::error_code error;
     if (fs::equivalent(written, input, error))
       refuse(written, "is the run's input " + quoted(input) +
-                          " (the same file); expected an output that is none of the study, bat and profile files");
+                          " (the same file); expected an output that is none of the run's input files (its study or optimisation file, bat and profile files)");
   }
 }
 
