@@ -82,6 +82,12 @@ auto find_parameter(Design& d, std::string_view name) -> decltype(&d.length) {
   return nullptr;
 }
 
+bool positive_when_given(std::string_view name) {
+  if (name == "hoop_modulus") return true;
+  const auto f = std::ranges::find(dimension_fields, name, &DimensionField::name);
+  return f != dimension_fields.end() && f->positive_when_given;
+}
+
 // The parameter the design lacks: unknown, or a dimension of a bat given by a profile CSV.
 [[noreturn]] void no_parameter(const BatDesign& d, std::string_view name, const std::string& value) {
   const bool dimension = std::ranges::find(dimension_fields, name, &DimensionField::name) != dimension_fields.end();
@@ -126,13 +132,11 @@ void set_design_parameter(BatDesign& design, std::string_view name, double value
                      "' lists one diameter per slice (z_center_m), which fixes its length at " +
                      format_number(design.length) + " m; expected " + format_number(design.length) +
                      ", or a bat of knots (z_m) or [dimensions] to vary the length");
-  // 0 stands for "as youngs_modulus" only where a bat file leaves the key out: a value set is a modulus.
-  if (name == "hoop_modulus" && !(value > 0 && std::isfinite(value)))
-    throw InputError("bat parameter 'hoop_modulus' = " + format_number(value) + ": expected a positive, finite modulus (Pa)");
-  // 0 stands for "solid" only where a bat file leaves the wall out: a wall set is a wall.
-  if (name == wall_thickness_key && !(value > 0))
-    throw InputError("bat parameter 'wall_thickness' = " + format_number(value) +
-                     ": expected a wall thicker than 0 m (a solid bat has no wall_thickness)");
+  // 0 stands for "absent" (a hoop modulus as youngs_modulus, a solid bat's wall) only where a bat
+  // file leaves the key out: a value set must be positive.
+  if (positive_when_given(name) && !(value > 0 && std::isfinite(value)))
+    throw InputError("bat parameter '" + std::string(name) + "' = " + format_number(value) +
+                     ": expected a positive, finite value (0 stands for none only by leaving the key out of a bat file)");
   *parameter = value;
 }
 

@@ -224,11 +224,10 @@ Dimensions read_dimension_table(const Section& s) {
   for (const DimensionField& f : dimension_fields) known.push_back(f.name);
   s.reject_unknown(known);
   Dimensions d;
-  // A wall given is a hollow bat's (issue 14: a wall of 0 or less is refused); a solid bat leaves
-  // the key out.
-  for (const DimensionField& f : dimension_fields)
-    d.*f.value = f.optional && !(f.name == wall_thickness_key && s.table.contains(f.name)) ? s.non_negative(f.name, "m")
-                                                                                         : s.positive(f.name, "m");
+  for (const DimensionField& f : dimension_fields) {
+    const bool positive = !f.optional || (f.positive_when_given && s.table.contains(f.name));
+    d.*f.value = positive ? s.positive(f.name, "m") : s.non_negative(f.name, "m");
+  }
   if (s.table.contains("end")) d.end = s.choice("end", parse_end_shape);
   return d;
 }

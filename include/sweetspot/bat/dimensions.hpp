@@ -32,14 +32,14 @@ struct Dimensions {
 };
 
 // The numeric dimensions by name, in the order a bat file lists them: how files and studies
-// (set_design_parameter) address them. An optional one may be 0 (absent), the others are positive.
+// (set_design_parameter) address them. An optional one is 0 when absent, the others are positive;
+// a wall, once given, is positive too (0 is a solid bat's, which leaves the key out).
 struct DimensionField {
   std::string_view name;
   double Dimensions::*value;
   bool optional = false;
+  bool positive_when_given = false;
 };
-// The one dimension that makes a bat hollow: given, it must be positive.
-inline constexpr std::string_view wall_thickness_key = "wall_thickness";
 inline constexpr std::array<DimensionField, 8> dimension_fields = {{
     {"knob_diameter", &Dimensions::knob_diameter},
     {"knob_length", &Dimensions::knob_length},
@@ -48,7 +48,7 @@ inline constexpr std::array<DimensionField, 8> dimension_fields = {{
     {"taper_end", &Dimensions::taper_end},
     {"barrel_diameter", &Dimensions::barrel_diameter},
     {"end_depth", &Dimensions::end_depth, true},
-    {"wall_thickness", &Dimensions::wall_thickness, true},
+    {"wall_thickness", &Dimensions::wall_thickness, true, true},
 }};
 
 // The cup's bore: half the barrel's diameter, the middle of the 1 to 2 in the major-league rule
