@@ -77,14 +77,113 @@ int count_below(const Tridiagonal& t, double x) {
   return count;
 }
 
-// The lowest `count` eigenvalues. All of T's by the root-free QL/QR iteration (dsterf, O(n^2)
-// with a small constant, no vectors), which costs less than bisecting even for 18 of 168 (dstebz
-// took 1.9 M instructions there, dsterf a third of that, and bisection's cost grows with the count).
-// Its error is absolute, eps ||T||, as the reduction's own and the dense solve's are.
-VectorXd lowest_eigenvalues(const Tridiagonal& t, int count) {
-  VectorXd d = t.d, e = t.e;
-  check(LAPACKE_dsterf_work(static_cast<lapack_int>(d.size()), d.data(), e.data()), "dsterf");
-  return d.head(std::min<Eigen::Index>(count, d.size()));
+// Sturm counts at eight shifts in one pass: independent recurrences, in SIMD registers, so that
+// eight cost 1.3 times what one does (one is bound by its divisions' latency). A zero pivot is
+// left to IEEE arithmetic, as LAPACK's dlaneg does: its successor is -inf (counted) and the next
+// one finite again (Demmel, Dhillon and Ren, "On the correctness of some bisection-like parallel
+// eigenvalue algorithms in floating point arithmetic", ETNA 3, 1995); the squared off-diagonal
+// is kept above the underflow, so that 0 / 0 never happens.
+constexpr int shifts = 8;
+using Shifts = Eigen::Array<double, shifts, 1>;
+
+Shifts counts_below(const Tridiagonal& t, const Shifts& x) {
+  const auto negative = [](const Shifts& pivot) { return (pivot < 0).select(Shifts::Ones(), Shifts::Zero()); };
+  Shifts pivot = t.d(0) - x;
+  Shifts count = negative(pivot);
+  for (Eigen::Index i = 1; i < t.d.size(); ++i) {
+    const double e2 = std::max(t.e(i - 1) * t.e(i - 1), std::numeric_limits<double>::min());
+    pivot = (t.d(i) - x) - e2 / pivot;
+    count += negative(pivot);
+  }
+  return count;
+}
+
+// An interval holding exactly one of T's eigenvalues, that of index count_below(lo).
+struct Bracket {
+  double lo = 0, hi = 0;
+};
+
+struct Sample {
+  double x;
+  int count;
+};
+
+// Brackets of T's eigenvalues of index first to count - 1, each within 1/8 of itself, by
+// multisection on Sturm counts (nine parts per pass, as many bits as three bisections). The
+// points are spaced geometrically while the interval spans orders of magnitude (the beam's
+// eigenvalues spread over 1e6 to 1e12). A part whose counts do not rise (round-off, within
+// eps ||T|| of an eigenvalue) holds none; an eigenvalue so lost leaves its bracket empty.
+constexpr double isolated_width = 1.0 / 8;
+
+void isolate(const Tridiagonal& t, Sample lo, Sample hi, int first, int count, std::vector<Bracket>& out) {
+  if (hi.count <= lo.count || hi.count <= first || lo.count >= count) return;  // nothing wanted inside
+  if (hi.count - lo.count == 1 && hi.x - lo.x <= isolated_width * lo.x) {
+    out[lo.count - first] = {lo.x, hi.x};
+    return;
+  }
+  Shifts x;
+  for (int s = 0; s < shifts; ++s) {
+    const double part = (s + 1.0) / (shifts + 1);
+    x(s) = hi.x > 4 * lo.x ? lo.x * std::pow(hi.x / lo.x, part) : lo.x + part * (hi.x - lo.x);
+  }
+  if (!(lo.x < x(0) && x(shifts - 1) < hi.x)) return;  // cannot be split: equal eigenvalues
+  const Shifts c = counts_below(t, x);
+  const auto sample = [&](int s) { return s < 0 ? lo : s == shifts ? hi : Sample{x(s), static_cast<int>(c(s))}; };
+  for (int s = 0; s <= shifts; ++s) isolate(t, sample(s - 1), sample(s), first, count, out);
+}
+
+// The brackets (of indices first, first + 1, ...) halved until each is within 1e-9 of itself (or
+// of T's round-off, `floor`): a shift that close is all the inverse iteration below needs. Eight
+// brackets per pass, one in each of counts_below's shifts (LAPACK's dlaebz bisects many intervals
+// at once the same way).
+constexpr double bracket_width = 1e-9;
+
+void narrow(const Tridiagonal& t, int first, double floor, std::vector<Bracket>& brackets) {
+  const auto mid = [](const Bracket& b) { return (b.lo + b.hi) / 2; };
+  const auto wide = [&](int k) {
+    const Bracket& b = brackets[k];
+    return b.hi - b.lo > std::max(bracket_width * b.lo, floor) && b.lo < mid(b) && mid(b) < b.hi;
+  };
+  std::vector<int> open;
+  for (int k = 0; k < static_cast<int>(brackets.size()); ++k) open.push_back(k);
+  for (;;) {
+    open.erase(std::remove_if(open.begin(), open.end(), [&](int k) { return !wide(k); }), open.end());
+    if (open.empty()) return;
+    const int lanes = std::min<int>(shifts, static_cast<int>(open.size()));
+    Shifts x;
+    for (int s = 0; s < shifts; ++s) x(s) = mid(brackets[open[s % lanes]]);
+    const Shifts c = counts_below(t, x);
+    for (int s = 0; s < lanes; ++s) {
+      Bracket& b = brackets[open[s]];
+      (c(s) > first + open[s] ? b.hi : b.lo) = x(s);
+    }
+  }
+}
+
+// Gershgorin's bound on |T|'s eigenvalues.
+double spectral_bound(const Tridiagonal& t) {
+  const int n = static_cast<int>(t.d.size());
+  double bound = 0;
+  for (int i = 0; i < n; ++i)
+    bound = std::max(bound, std::abs(t.d(i)) + (i > 0 ? std::abs(t.e(i - 1)) : 0.0) + (i + 1 < n ? std::abs(t.e(i)) : 0.0));
+  return bound;
+}
+
+// Brackets of the vibrational eigenvalues 2 to count - 1. The rigid two lie within round-off,
+// eps ||T||, of 0, the first vibrational one far above (5e-10 ||T|| for Euler-Bernoulli at
+// N = 168, whose ||T|| grows as N^4): the search starts at 1e4 eps ||T||, and must find exactly
+// the two rigid eigenvalues below it. False when that fails or an eigenvalue is left without a
+// bracket.
+bool vibrational_brackets(const Tridiagonal& t, int count, std::vector<Bracket>& out) {
+  const double eps = std::numeric_limits<double>::epsilon();
+  const double top = spectral_bound(t), bottom = 1e4 * eps * top;
+  const Sample lo{bottom, count_below(t, bottom)};
+  out.assign(std::max(count - 2, 0), Bracket{});
+  if (lo.count != 2) return false;
+  isolate(t, lo, {top, count_below(t, top)}, 2, count, out);
+  if (!std::all_of(out.begin(), out.end(), [](const Bracket& b) { return b.lo < b.hi; })) return false;
+  narrow(t, 2, 16 * eps * top, out);
+  return true;
 }
 
 // K - shift M by rows: row i holds columns i - kd to i + 2 kd (room for the fill-in of row
@@ -113,7 +212,7 @@ class ShiftedPencil {
       pivots_[j] = p;
       if (p != j) std::swap_ranges(&at(j, j), &at(j, j) + 2 * kd + 1, &at(p, j));
       if (at(j, j) == 0) at(j, j) = nudge;
-      const double inverse = 1 / at(j, j);
+      const double inverse = at(j, j) = 1 / at(j, j);  // kept inverted: the solve multiplies
       const double* pivot_row = &at(j, j + 1);
       for (int i = j + 1; i <= j + kd; ++i) {
         const double l = at(i, j) *= inverse;
@@ -124,15 +223,20 @@ class ShiftedPencil {
   }
   // Solves in place; b has n + pad entries, the last pad of them zero (and zero on return).
   void solve(VectorXd& b) const {
-    for (int j = 0; j < n_; ++j) {
-      std::swap(b(j), b(pivots_[j]));
-      for (int i = j + 1; i <= j + kd; ++i) b(i) -= at(i, j) * b(j);
+    double* v = b.data();
+    for (int j = 0; j < n_; ++j) {  // the row exchange through a register, not a reload
+      const double pivot = v[pivots_[j]];
+      v[pivots_[j]] = v[j];
+      v[j] = pivot;
+      for (int i = j + 1; i <= j + kd; ++i) v[i] -= at(i, j) * pivot;
     }
+    // The terms that do not wait for the entry just solved first: the recurrence's latency is
+    // then one product and one difference per row, not the whole sum's.
     for (int j = n_ - 1; j >= 0; --j) {
       const double* row = &at(j, j + 1);
-      double sum = b(j);
-      for (int c = 0; c < 2 * kd; ++c) sum -= row[c] * b(j + 1 + c);
-      b(j) = sum / at(j, j);
+      double rest = 0;
+      for (int c = 1; c < 2 * kd; ++c) rest += row[c] * v[j + 1 + c];
+      v[j] = (v[j] - rest - row[0] * v[j + 1]) * at(j, j);
     }
   }
   static constexpr int pad = 2 * kd;
@@ -178,26 +282,41 @@ VectorXd start_vector(int n, int seed) {
   return x;
 }
 
-// Inverse iteration at an eigenvalue accurate to round-off: each step divides the other modes by
-// their distance from it over its own error (at least 1e-3 / 1e-12 here), so two steps leave
-// round-off. Modes closer than
-// 1e-3 in relative frequency (the top of the bending branch crowds) are kept M-orthogonal to
-// those already found, as LAPACK's dstein does.
+// One step of inverse iteration at the factored shift: x <- (K - shift M)^-1 M x, M-normalised.
+// Returns the Rayleigh quotient of the new x, y = (K - shift M)^-1 M x, as shift + y^T M x /
+// y^T M y (the same by (K - shift M) y = M x), which needs no product with K and so none of its
+// cancellation.
+double inverse_step(const ShiftedPencil& pencil, const MassProduct& mass, double shift, VectorXd& x) {
+  const Eigen::Index n = x.size();
+  const VectorXd mx = mass * x;
+  VectorXd b(n + ShiftedPencil::pad);
+  b << mx, VectorXd::Zero(ShiftedPencil::pad);
+  pencil.solve(b);
+  x = b.head(n);
+  const double norm = x.dot(mass * x);
+  const double quotient = shift + x.dot(mx) / norm;
+  x /= std::sqrt(norm);
+  return quotient;
+}
+
+// Eigenpair k (its eigenvalue into w(k)) by inverse iteration at its bracket's midpoint: each
+// step divides the other modes by their distance from it over its error (1e-9 / 1e-3 at least
+// here), so two steps leave round-off. The eigenvalue is the last step's Rayleigh quotient,
+// whose error is the solve's round-off. Modes closer than 1e-3 in relative frequency (the top of
+// the bending branch crowds) are kept M-orthogonal to those already found, as LAPACK's dstein
+// does.
 constexpr int steps = 2;
 
-VectorXd eigenvector(ShiftedPencil& pencil, const MassProduct& mass, const VectorXd& w, int k,
+VectorXd eigenvector(ShiftedPencil& pencil, const MassProduct& mass, Bracket bracket, int k, VectorXd& w,
                      const MatrixXd& found) {
-  const int n = static_cast<int>(found.rows());
-  pencil.factor(w(k));
-  VectorXd x = start_vector(n, k), b(n + ShiftedPencil::pad);
+  const double shift = (bracket.lo + bracket.hi) / 2;
+  pencil.factor(shift);
+  VectorXd x = start_vector(static_cast<int>(found.rows()), k);
   for (int step = 0; step < steps; ++step) {
-    b << mass * x, VectorXd::Zero(ShiftedPencil::pad);
-    pencil.solve(b);
-    VectorXd y = b.head(n);
-    for (int j = k - 1; j >= 2 && w(k) - w(j) <= 1e-3 * w(k); --j) y -= found.col(j).dot(mass * y) * found.col(j);
-    x = y / std::sqrt(y.dot(mass * y));
+    w(k) = inverse_step(pencil, mass, shift, x);
+    for (int j = k - 1; j >= 2 && shift - w(j) <= 1e-3 * shift; --j) x -= found.col(j).dot(mass * x) * found.col(j);
   }
-  return x;
+  return x / std::sqrt(x.dot(mass * x));
 }
 
 // Inverse iteration leaves two modes M-orthogonal only to eps w_max^2 over their gap, 5e-10 for
@@ -224,11 +343,14 @@ bool solve_lowest(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass, 
   // The two rigid modes always (they lie at 0 however low the frequency asked).
   const int count = std::max(2, request.count >= 0 ? request.count : count_below(t, request.upper));
   if (count > dofs * max_banded_share) return false;
-  omega_squared = lowest_eigenvalues(t, count);
+  std::vector<Bracket> brackets;
+  if (!vibrational_brackets(t, count, brackets)) return false;
+  omega_squared = VectorXd::Zero(count);
   vectors = MatrixXd::Zero(dofs, count);
   ShiftedPencil pencil(s);
   const MassProduct m(mass, request.diagonal_mass);
-  for (int k = 2; k < count; ++k) vectors.col(k) = eigenvector(pencil, m, omega_squared, k, vectors);
+  for (int k = 2; k < count; ++k)
+    vectors.col(k) = eigenvector(pencil, m, brackets[k - 2], k, omega_squared, vectors);
   orthonormalise(m, vectors);
   return true;
 }

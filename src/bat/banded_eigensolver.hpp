@@ -1,8 +1,9 @@
 #pragma once
 // The lowest modes of the banded pencil K x = w^2 M x without the dense solve's O(n^3) (README,
-// "Numerics"): LAPACK reduces the pencil to tridiagonal form without forming the transformation
-// and bisects for the eigenvalues wanted (dsbgvx, eigenvalues only); each eigenvector then comes
-// from inverse iteration on the banded K - w^2 M itself (dgbtrf/dgbtrs, O(n) per step). Both
+// "Numerics"): LAPACK reduces the pencil to tridiagonal form T without forming the transformation
+// (dsbtrd, as dsbgvx does); Sturm counts on T bracket each eigenvalue wanted, and only those, to
+// 1e-9 of itself; each eigenpair then comes from inverse iteration at that shift on the banded
+// K - w^2 M itself (a band LU, O(n) per step), its eigenvalue the Rayleigh quotient. Both
 // theories' matrices couple degrees of freedom at most beam_bandwidth apart.
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
@@ -30,8 +31,9 @@ inline constexpr double max_banded_share = 0.75;
 
 // Ascending eigenvalues and M-normalised eigenvectors (columns) of the request. The two rigid
 // modes come out as round-off; the caller replaces them by the exact ones. False, with nothing
-// solved, when the request covers more than max_banded_share of the modes: the dense solve is
-// then the cheaper.
+// solved, when the request covers more than max_banded_share of the modes (the dense solve is
+// then the cheaper) or when the bisection cannot bracket an eigenvalue apart from the others
+// (eigenvalues equal to round-off): the dense solve then serves.
 bool solve_lowest(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass, BandedRequest request,
                   Eigen::VectorXd& omega_squared, Eigen::MatrixXd& vectors);
 
