@@ -132,30 +132,41 @@ void isolate(const Tridiagonal& t, Sample lo, Sample hi, int first, int count, s
   for (int s = 0; s <= shifts; ++s) isolate(t, sample(s - 1), sample(s), first, count, out);
 }
 
-// The brackets (of indices first, first + 1, ...) halved until each is within 1e-9 of itself (or
-// of T's round-off, `floor`): a shift that close is all the inverse iteration below needs. Eight
-// brackets per pass, one in each of counts_below's shifts (LAPACK's dlaebz bisects many intervals
-// at once the same way).
+// The brackets (of indices first, first + 1, ...) narrowed until each is within 1e-9 of itself
+// (or of T's round-off, `floor`): a shift that close is all the inverse iteration below needs.
+// Each pass shares counts_below's eight shifts among the brackets still open: one each (LAPACK's
+// dlaebz bisects many intervals at once the same way), or several each, evenly spaced, when fewer
+// than eight are left.
 constexpr double bracket_width = 1e-9;
 
 void narrow(const Tridiagonal& t, int first, double floor, std::vector<Bracket>& brackets) {
-  const auto mid = [](const Bracket& b) { return (b.lo + b.hi) / 2; };
   const auto wide = [&](int k) {
     const Bracket& b = brackets[k];
-    return b.hi - b.lo > std::max(bracket_width * b.lo, floor) && b.lo < mid(b) && mid(b) < b.hi;
+    const double mid = (b.lo + b.hi) / 2;
+    return b.hi - b.lo > std::max(bracket_width * b.lo, floor) && b.lo < mid && mid < b.hi;
   };
   std::vector<int> open;
   for (int k = 0; k < static_cast<int>(brackets.size()); ++k) open.push_back(k);
   for (;;) {
     open.erase(std::remove_if(open.begin(), open.end(), [&](int k) { return !wide(k); }), open.end());
     if (open.empty()) return;
-    const int lanes = std::min<int>(shifts, static_cast<int>(open.size()));
-    Shifts x;
-    for (int s = 0; s < shifts; ++s) x(s) = mid(brackets[open[s % lanes]]);
+    const int served = std::min<int>(shifts, static_cast<int>(open.size())), points = shifts / served;
+    Shifts x = Shifts::Constant(brackets[open[0]].lo);  // lanes left over count at a known point
+    for (int b = 0; b < served; ++b)
+      for (int i = 0; i < points; ++i) {
+        const Bracket& bracket = brackets[open[b]];
+        x(b * points + i) = bracket.lo + (bracket.hi - bracket.lo) * (i + 1) / (points + 1);
+      }
     const Shifts c = counts_below(t, x);
-    for (int s = 0; s < lanes; ++s) {
-      Bracket& b = brackets[open[s]];
-      (c(s) > first + open[s] ? b.hi : b.lo) = x(s);
+    for (int b = 0; b < served; ++b) {
+      Bracket& bracket = brackets[open[b]];
+      for (int i = b * points; i < (b + 1) * points; ++i) {
+        if (c(i) > first + open[b]) {
+          bracket.hi = x(i);
+          break;
+        }
+        bracket.lo = x(i);
+      }
     }
   }
 }
