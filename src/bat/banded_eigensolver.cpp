@@ -132,18 +132,26 @@ void isolate(const Tridiagonal& t, Sample lo, Sample hi, int first, int count, s
   for (int s = 0; s <= shifts; ++s) isolate(t, sample(s - 1), sample(s), first, count, out);
 }
 
-// The brackets (of indices first, first + 1, ...) narrowed until each is within 1e-9 of itself
-// (or of T's round-off, `floor`): a shift that close is all the inverse iteration below needs.
-// Each pass shares counts_below's eight shifts among the brackets still open: one each (LAPACK's
-// dlaebz bisects many intervals at once the same way), or several each, evenly spaced, when fewer
-// than eight are left.
-constexpr double bracket_width = 1e-9;
+// The brackets (of indices first, first + 1, ...) narrowed until each is within 1e-6 of its
+// eigenvalue's distance to the next bracket (1e-9 of itself for the last, whose upper neighbour
+// is unknown), or within T's round-off, `floor`. Two steps of inverse iteration at its midpoint
+// then leave the neighbours' share at (1e-6)^2. Each pass shares counts_below's eight shifts among
+// the brackets still open: one each (LAPACK's dlaebz bisects many intervals at once the same
+// way), or several each, evenly spaced, when fewer than eight are left.
+constexpr double gap_share = 1e-6, last_width = 1e-9;
 
 void narrow(const Tridiagonal& t, int first, double floor, std::vector<Bracket>& brackets) {
+  const int last = static_cast<int>(brackets.size()) - 1;
+  // The eigenvalue's distance to its neighbours is at least that to their brackets (the rigid
+  // ones' lie at 0).
+  const auto gap = [&](int k) {
+    const Bracket& b = brackets[k];
+    return std::min(k > 0 ? b.lo - brackets[k - 1].hi : b.lo, brackets[k + 1].lo - b.hi);
+  };
   const auto wide = [&](int k) {
     const Bracket& b = brackets[k];
-    const double mid = (b.lo + b.hi) / 2;
-    return b.hi - b.lo > std::max(bracket_width * b.lo, floor) && b.lo < mid && mid < b.hi;
+    const double mid = (b.lo + b.hi) / 2, enough = k < last ? gap_share * gap(k) : last_width * b.lo;
+    return b.hi - b.lo > std::max(enough, floor) && b.lo < mid && mid < b.hi;
   };
   std::vector<int> open;
   for (int k = 0; k < static_cast<int>(brackets.size()); ++k) open.push_back(k);
@@ -311,8 +319,8 @@ double inverse_step(const ShiftedPencil& pencil, const MassProduct& mass, double
 }
 
 // Eigenpair k (its eigenvalue into w(k)) by inverse iteration at its bracket's midpoint: each
-// step divides the other modes by their distance from it over its error (1e-9 / 1e-3 at least
-// here), so two steps leave round-off. The eigenvalue is the last step's Rayleigh quotient,
+// step divides the other modes by their distance from it over its error (1e-6 at least, narrow),
+// so two steps leave round-off. The eigenvalue is the last step's Rayleigh quotient,
 // whose error is the solve's round-off. Modes closer than 1e-3 in relative frequency (the top of
 // the bending branch crowds) are kept M-orthogonal to those already found, as LAPACK's dstein
 // does.
