@@ -1,10 +1,11 @@
 #pragma once
 // The lowest modes of the banded pencil K x = w^2 M x without the dense solve's O(n^3) (README,
 // "Numerics"): LAPACK reduces the pencil to tridiagonal form T without forming the transformation
-// (dsbtrd, as dsbgvx does); Sturm counts on T bracket each eigenvalue wanted, and only those, to
-// 1e-9 of itself; each eigenpair then comes from inverse iteration at that shift on the banded
-// K - w^2 M itself (a band LU, O(n) per step), its eigenvalue the Rayleigh quotient. Both
-// theories' matrices couple degrees of freedom at most beam_bandwidth apart.
+// (dsbtrd, as dsbgvx does); Sturm counts on T bracket each eigenvalue wanted, and only those,
+// within 1e-6 of its distance to the others; each eigenpair then comes from inverse iteration at
+// that shift on the banded K - w^2 M itself (a band LU, O(n) per step), its eigenvalue the
+// Rayleigh quotient. Both theories' matrices couple degrees of freedom at most beam_bandwidth
+// apart.
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 
@@ -22,11 +23,13 @@ struct BandedRequest {
   bool diagonal_mass = false;  // Timoshenko's lumped M
 };
 
-// Beyond this share of all modes the dense solve is the better buy. R161 (Timoshenko) measured
-// by tests/benchmarks/bench_partial_modes.cpp's method: 80 of 168 modes cost 0.35 of the dense
-// solve at N = 84, 160 of 336 0.23 at N = 168; the banded cost grows by about 18 us (N = 84)
-// and 40 us (N = 168) per mode, so the two meet near 80 % of the modes at N = 84.
-// (Before the inline band LU and dsterf: 60 of 168 cost as much as all 168, and 0.3 was the limit.)
+// Beyond this share of all modes the dense solve may be the better buy. R161 (Timoshenko)
+// measured by tests/benchmarks/bench_partial_modes.cpp's method: 80 of 168 modes cost 0.25 of the
+// dense solve at N = 84 and 120 of 168 0.41; 160 of 336 0.18 at N = 168 and 240 of 336 0.27. The
+// banded cost grows by about 17 us (N = 84) and 35 us (N = 168) per mode up there, so at this
+// share it still costs under half the dense solve; the limit stays where it was measured, short
+// of the spectrum's crowded top. (With every eigenvalue from dsterf, 80 of 168 cost 0.35; before
+// the inline band LU and dsterf, 60 of 168 cost as much as all 168, and 0.3 was the limit.)
 inline constexpr double max_banded_share = 0.75;
 
 // Ascending eigenvalues and M-normalised eigenvectors (columns) of the request. The two rigid
