@@ -132,13 +132,15 @@ void isolate(const Tridiagonal& t, Sample lo, Sample hi, int first, int count, s
   for (int s = 0; s <= shifts; ++s) isolate(t, sample(s - 1), sample(s), first, count, out);
 }
 
-// The brackets (of indices first, first + 1, ...) narrowed until each is within 1e-6 of its
-// eigenvalue's distance to the next bracket (1e-9 of itself for the last, whose upper neighbour
+// The brackets (of indices first, first + 1, ...) narrowed until each is within 1e-8 of its
+// eigenvalue's distance to the next bracket (1e-11 of itself for the last, whose upper neighbour
 // is unknown), or within T's round-off, `floor`. Two steps of inverse iteration at its midpoint
-// then leave the neighbours' share at (1e-6)^2. Each pass shares counts_below's eight shifts among
-// the brackets still open: one each (LAPACK's dlaebz bisects many intervals at once the same
-// way), or several each, evenly spaced, when fewer than eight are left.
-constexpr double gap_share = 1e-6, last_width = 1e-9;
+// then leave a neighbour's share at (1e-8)^2 times its share of the start over the mode's own:
+// at 1e-6, that ratio (about 1e4 on the torpedo's crowded modes 72-74 at N = 170) left 3e-9 in their
+// shapes. Each pass shares counts_below's eight shifts among the brackets still open: one each
+// (LAPACK's dlaebz bisects many intervals at once the same way), or several each, evenly spaced,
+// when fewer than eight are left.
+constexpr double gap_share = 1e-8, last_width = 1e-11;
 
 void narrow(const Tridiagonal& t, int first, double floor, std::vector<Bracket>& brackets) {
   const int last = static_cast<int>(brackets.size()) - 1;
@@ -321,7 +323,7 @@ double inverse_step(const ShiftedPencil& pencil, const MassProduct& mass, double
 }
 
 // Eigenpair k (its eigenvalue into w(k)) by inverse iteration at its bracket's midpoint: each
-// step divides the other modes by their distance from it over its error (1e-6 at least, narrow),
+// step divides the other modes by their distance from it over its error (1e-8 at least, narrow),
 // so two steps leave round-off. The eigenvalue is the last step's Rayleigh quotient,
 // whose error is the solve's round-off. Modes closer than 1e-3 in relative frequency (the top of
 // the bending branch crowds) are kept M-orthogonal to those already found, as LAPACK's dstein

@@ -2,7 +2,7 @@
 // The lowest modes of the banded pencil K x = w^2 M x without the dense solve's O(n^3) (README,
 // "Numerics"): LAPACK reduces the pencil to tridiagonal form T without forming the transformation
 // (dsbtrd, as dsbgvx does); Sturm counts on T bracket each eigenvalue wanted, and only those,
-// within 1e-6 of its distance to the others; each eigenpair then comes from inverse iteration at
+// within 1e-8 of its distance to the others; each eigenpair then comes from inverse iteration at
 // that shift on the banded K - w^2 M itself (a band LU, O(n) per step), its eigenvalue the
 // Rayleigh quotient. Both theories' matrices couple degrees of freedom at most beam_bandwidth
 // apart.
