@@ -38,8 +38,9 @@ void solve(const BeamSystem& s, bool diagonal_mass, VectorXd& omega_squared, Mat
 
 // Replaces the two near-zero modes by the exact rigid ones and makes every vibrational mode
 // exactly M-orthogonal to them, so that rigid motion stays in the rigid modes to round-off.
-// `mass` is s.mass (the dense solve, as it always was) or its sparse copy (a partial solve, where
-// a dense product per mode would cost more than the solve).
+// `mass` is M's sparse copy (or Timoshenko's lumped M as a diagonal: the same products, without
+// the sparse one's bookkeeping): a product per mode is O(n), where the dense M made this step
+// O(n^3), half of the dense solve's instructions.
 template <class Mass>
 void set_rigid_modes(const BeamSystem& s, const Mass& mass, ModalBasis& basis, VectorXd& omega_squared, MatrixXd& x) {
   const VectorXd& t = s.translation;
@@ -74,18 +75,19 @@ Eigen::SparseMatrix<double> sparse_band(const MatrixXd& a, int slope, int first,
   return sparse;
 }
 
-// The banded solve of a partial request, with the rigid modes set from the sparse M (Timoshenko's
-// lumped one as a diagonal: the same products, without the sparse one's bookkeeping); false, with
-// nothing done, when the request reaches past max_banded_share and the dense solve is cheaper.
-bool solve_partial(const BeamSystem& s, bool timoshenko, ModeRequest request, ModalBasis& basis,
-                   VectorXd& omega_squared, MatrixXd& x) {
-  const Eigen::SparseMatrix<double> mass = sparse_band(s.mass, 1, -beam_bandwidth, beam_bandwidth);
-  const BandedRequest banded{request.vibrational > 0 ? request.vibrational + 2 : -1,
-                             request.below_omega * request.below_omega, timoshenko};
-  if (!solve_lowest(s, mass, banded, omega_squared, x)) return false;
+void set_rigid_modes(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass, bool timoshenko, ModalBasis& basis,
+                     VectorXd& omega_squared, MatrixXd& x) {
   if (timoshenko) set_rigid_modes(s, Eigen::DiagonalMatrix<double, Eigen::Dynamic>(mass.diagonal()), basis, omega_squared, x);
   else set_rigid_modes(s, mass, basis, omega_squared, x);
-  return true;
+}
+
+// The banded solve of a partial request; false, with nothing done, when the request reaches past
+// max_banded_share and the dense solve is cheaper.
+bool solve_partial(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass, bool timoshenko, ModeRequest request,
+                   VectorXd& omega_squared, MatrixXd& x) {
+  const BandedRequest banded{request.vibrational > 0 ? request.vibrational + 2 : -1,
+                             request.below_omega * request.below_omega, timoshenko};
+  return solve_lowest(s, mass, banded, omega_squared, x);
 }
 
 }  // namespace
@@ -119,21 +121,16 @@ ModalBasis compute_modes(const Bat& bat, BeamTheory theory, ModeRequest request)
   for (int i = 0; i < bat.slices(); ++i) basis.z.push_back(bat.slice_center(i));
   VectorXd omega_squared = VectorXd::Zero(2);
   MatrixXd x(dofs, 2);
-  if (partial) partial = solve_partial(s, timoshenko, request, basis, omega_squared, x);
-  if (!partial) {
-    if (!request.is_rigid_only()) solve(s, timoshenko, omega_squared, x);
-    set_rigid_modes(s, s.mass, basis, omega_squared, x);
-  }
+  const Eigen::SparseMatrix<double> mass = sparse_band(s.mass, 1, -beam_bandwidth, beam_bandwidth);
+  if (partial) partial = solve_partial(s, mass, timoshenko, request, omega_squared, x);
+  if (!partial && !request.is_rigid_only()) solve(s, timoshenko, omega_squared, x);
+  set_rigid_modes(s, mass, timoshenko, basis, omega_squared, x);
   basis.omega = omega_squared.cwiseMax(0.0).cwiseSqrt();
   // A fixed sign (barrel end moving +y) makes mode shapes reproducible across solvers.
   for (int n = 2; n < x.cols(); ++n)
     if (s.slice_displacement.row(bat.slices() - 1).dot(x.col(n)) < 0) x.col(n) *= -1;
-  // A partial basis maps with the sparse map (the dense product would cost more than its solve).
-  if (!partial) basis.psi = s.slice_displacement * x;
-  else {
-    // Row i reads the degrees of freedom 2i to 2i + 3 (both theories: beam_system.cpp).
-    basis.psi = sparse_band(s.slice_displacement, 2, 0, 3) * x;
-  }
+  // Row i of the map reads the degrees of freedom 2i to 2i + 3 (both theories: beam_system.cpp).
+  basis.psi = sparse_band(s.slice_displacement, 2, 0, 3) * x;
   basis.vectors = std::move(x);
   if (partial && !basis.complete())
     basis.solved_below = request.vibrational > 0 ? basis.omega(basis.count() - 1) : request.below_omega;
