@@ -53,33 +53,42 @@ TEST_CASE("Auto modes keep the exit speed within the tolerance on barrel impacts
 
 TEST_CASE("Auto stays within its estimate where the bat's vibration strikes the ball again", "[modes_auto]") {
   // Handle impacts: the ball is struck two or three times, and dropping solved modes erred by up
-  // to 3x the estimate (3e-5 at a tolerance of 1e-5). Such an impact keeps every solved mode, as
-  // a study's partial basis solves them for auto, and counts the unsolved ones once per contact.
+  // to 3x the estimate for N2000's ball (3e-5 at a tolerance of 1e-5) and 12x the tolerance for
+  // others. Such an impact keeps every solved mode, as a study's partial basis solves them for
+  // auto, and counts the unsolved ones once per contact. Below 1e-7 the round-off of the partial
+  // solve and the step, which a second contact magnifies, can exceed that estimate.
+  struct BallLaw {
+    double e0, a;
+  };
   int struck_again = 0;
   for (const std::string name : {"r161", "torpedo"}) {
     const Bat bat = load_bat(source_path("studies/bats/" + name + ".toml"));
     const ModalBasis full = compute_modes(bat, BeamTheory::timoshenko);
     const ModalBasis rigid = compute_modes(bat, BeamTheory::timoshenko, ModeRequest::rigid_only());
     for (const double z : {0.305, 0.365, 0.405, 0.435})
-      for (const double speed : {30.0, 50.0}) {
-        ImpactScene s = n2000_high_impact(z, auto_modes);
-        s.ball_speed = speed;
-        s.integrator.method = Method::exact;
-        s.integrator.dt = 2e-6;
-        const ImpactResult r = simulate_impact(compute_modes(bat, BeamTheory::timoshenko, auto_mode_request(s, rigid)), s);
-        s.vibrational_modes = all_modes;
-        const ImpactResult all = simulate_impact(full, s);
-        REQUIRE(r.status == CollisionStatus::ok);
-        if (r.contacts < 2) continue;
-        ++struck_again;
-        const double error = std::abs(r.vf / all.vf - 1);
-        INFO(name << " at " << z << " m, " << speed << " m/s: " << r.contacts << " contacts, error " << error
-                  << ", estimated " << r.modes_error);
-        CHECK(error <= 1e-5);
-        CHECK(error <= 1.25 * r.modes_error);  // measured: up to 1.19 x, at 8e-9
-      }
+      for (const double speed : {30.0, 50.0})
+        for (const BallLaw law : {BallLaw{0.5, 1.84}, BallLaw{1.0, 1.5}, BallLaw{0.5, 2.2}}) {
+          ImpactScene s = n2000_high_impact(z, auto_modes);
+          s.ball_speed = speed;
+          s.ball.e0 = law.e0;
+          s.ball.a = law.a;
+          s.integrator.method = Method::exact;
+          s.integrator.dt = 2e-6;
+          const ModalBasis part = compute_modes(bat, BeamTheory::timoshenko, auto_mode_request(s, rigid));
+          const ImpactResult r = simulate_impact(part, s);
+          s.vibrational_modes = all_modes;
+          const ImpactResult all = simulate_impact(full, s);
+          REQUIRE(r.status == CollisionStatus::ok);
+          if (r.contacts < 2) continue;
+          ++struck_again;
+          const double error = std::abs(r.vf / all.vf - 1);
+          INFO(name << " at " << z << " m, " << speed << " m/s, e0 " << law.e0 << ", a " << law.a << ": " << r.contacts
+                    << " contacts, error " << error << ", estimated " << r.modes_error);
+          CHECK(error <= 0.5 * s.mode_tolerance);
+          CHECK(error <= 1.25 * r.modes_error + 1e-7);
+        }
   }
-  CHECK(struck_again >= 8);
+  CHECK(struck_again >= 20);
 }
 
 TEST_CASE("The residual compliance carries most of what the dropped modes do", "[modes_auto]") {
