@@ -24,12 +24,13 @@ struct BandedRequest {
 };
 
 // Beyond this share of all modes the dense solve may be the better buy. R161 (Timoshenko)
-// measured by tests/benchmarks/bench_partial_modes.cpp's method: 80 of 168 modes cost 0.25 of the
-// dense solve at N = 84 and 120 of 168 0.41; 160 of 336 0.18 at N = 168 and 240 of 336 0.27. The
-// banded cost grows by about 17 us (N = 84) and 35 us (N = 168) per mode up there, so at this
-// share it still costs under half the dense solve; the limit stays where it was measured, short
-// of the spectrum's crowded top. (With every eigenvalue from dsterf, 80 of 168 cost 0.35; before
-// the inline band LU and dsterf, 60 of 168 cost as much as all 168, and 0.3 was the limit.)
+// measured by tests/benchmarks/bench_partial_modes.cpp's method, against the dense solve with its
+// sparse rigid step: 80 of 168 modes cost 0.39 of the dense solve at N = 84 and 120 of 168 0.67;
+// 160 of 336 0.31 at N = 168 and 240 of 336 0.48. The banded cost grows by about 17 us (N = 84)
+// and 40 us (N = 168) per mode up there, so at this share it still costs less than the dense
+// solve; the limit stays short of the spectrum's crowded top. (With every eigenvalue from dsterf
+// and the dense rigid step, 80 of 168 cost 0.35; before the inline band LU and dsterf, 60 of 168
+// cost as much as all 168, and 0.3 was the limit.)
 inline constexpr double max_banded_share = 0.75;
 
 // Ascending eigenvalues and M-normalised eigenvectors (columns) of the request. The two rigid

@@ -54,21 +54,12 @@ class HeldBeam {
   std::vector<double> l_;
 };
 
-// M x over M's band alone: the dense product reads all n^2 entries of M (it and modes.cpp's
-// O(n^2) scans together cost a tenth of an 18-mode partial solve at N = 84).
-MatrixXd banded_product(const MatrixXd& m, const MatrixXd& x) {
-  const int n = static_cast<int>(m.rows());
-  MatrixXd y = MatrixXd::Zero(n, x.cols());
-  for (int i = 0; i < n; ++i)
-    for (int j = std::max(0, i - kd); j <= std::min(n - 1, i + kd); ++j) y.row(i) += m(i, j) * x.row(j);
-  return y;
-}
-
 }  // namespace
 
-MatrixXd vibrational_flexibility_band(const BeamSystem& s, const MatrixXd& rigid) {
+MatrixXd vibrational_flexibility_band(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass,
+                                      const MatrixXd& rigid) {
   const HeldBeam held(s.stiffness);
-  const MatrixXd mass_rigid = banded_product(s.mass, rigid);
+  const MatrixXd mass_rigid = mass * rigid;
   const MatrixXd v = held.displacement(mass_rigid);
   const MatrixXd rigid_share = mass_rigid.transpose() * v;  // R^T M V, M symmetric
   MatrixXd g = held.band();

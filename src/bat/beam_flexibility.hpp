@@ -11,14 +11,17 @@
 // made balanced by P = I - M R R^T (the rigid modes' share taken off); then w^T G w = (P w)^T C
 // (P w), so G = P^T C P = C - V R^T - R V^T + R (R^T M V) R^T with V = C M R.
 #include <Eigen/Dense>
+#include <Eigen/SparseCore>
 
 #include "bat/beam_system.hpp"
 
 namespace sweetspot {
 
 // G(i, i + d) for d = 0 .. bandwidth (zero past the last degree of freedom): the entries a point
-// load, which reads at most bandwidth + 1 neighbouring degrees of freedom, needs. `rigid` holds
-// the two exact M-orthonormal rigid modes (ModalBasis::vectors' first two columns).
-Eigen::MatrixXd vibrational_flexibility_band(const BeamSystem& s, const Eigen::MatrixXd& rigid);
+// load, which reads at most bandwidth + 1 neighbouring degrees of freedom, needs. `mass` is M's
+// sparse copy; `rigid` holds the two exact M-orthonormal rigid modes (ModalBasis::vectors' first
+// two columns).
+Eigen::MatrixXd vibrational_flexibility_band(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass,
+                                             const Eigen::MatrixXd& rigid);
 
 }  // namespace sweetspot

@@ -134,7 +134,7 @@ ModalBasis compute_modes(const Bat& bat, BeamTheory theory, ModeRequest request)
   basis.vectors = std::move(x);
   if (partial && !basis.complete())
     basis.solved_below = request.vibrational > 0 ? basis.omega(basis.count() - 1) : request.below_omega;
-  if (!request.is_rigid_only()) basis.flexibility = vibrational_flexibility_band(s, basis.vectors.leftCols(2));
+  if (!request.is_rigid_only()) basis.flexibility = vibrational_flexibility_band(s, mass, basis.vectors.leftCols(2));
   basis.wall = barrel_wall(bat);
   return basis;
 }
