@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "json.hpp"
+#include "sweetspot/ball/ball_file.hpp"
 #include "sweetspot/bat/bat_design.hpp"
 #include "sweetspot/impact/certification.hpp"
 
@@ -18,6 +19,7 @@ struct CertifyCommand {
   std::string standard = "bbcor";
   std::string theory = "timoshenko";
   std::string modes = "auto";
+  std::string ball = "ncaa";  // the standards' ball (standards.hpp)
   bool json = false;
   std::optional<double> e0, ball_speed, pivot;
   CertifyOptions options;
@@ -34,7 +36,7 @@ Json checks_json(const std::vector<RuleCheck>& checks) {
   return Json::array(items);
 }
 
-void print_json(const Certification& c) {
+void print_json(const std::string& ball, const Certification& c) {
   Json::Object out;
   out.add("standard", c.standard.name)
       .add("z_max", c.z_max)
@@ -48,17 +50,22 @@ void print_json(const Certification& c) {
       .add("barrel_diameter", c.barrel_diameter)
       .add("pivot", c.standard.pivot)
       .add("ball_speed", c.standard.ball_speed)
+      .add("ball", ball)
       .add("e0", c.standard.ball.e0)
+      .add("cor_speed", c.standard.ball.cor_speed)
+      .add("cor_slope", c.standard.ball.cor_slope)
       .add("checks", checks_json(c.checks))
       .add("pass", Json::boolean(c.pass));
   std::printf("%s\n", Json(out).text().c_str());
 }
 
-void print_text(const std::string& bat_name, const Certification& c) {
+void print_text(const std::string& bat_name, const std::string& ball, const Certification& c) {
   const Standard& s = c.standard;
   std::printf("%s against %s: %s\n", bat_name.c_str(), s.title.c_str(), c.pass ? "PASS" : "FAIL");
-  std::printf("rig             pivot %.4f m from the knob, ball %.4g m/s (%.4g mph), e0 %.4g, %.4g kg\n", s.pivot,
-              s.ball_speed, s.ball_speed / metres_per_second_per_mph, s.ball.e0, s.ball.mass);
+  std::printf("rig             pivot %.4f m from the knob, ball %.4g m/s (%.4g mph)\n", s.pivot, s.ball_speed,
+              s.ball_speed / metres_per_second_per_mph);
+  std::printf("ball            %s: %.4g kg, COR %.4g at %.4g m/s, %.3g per m/s; %.4g on a flat wall at the rig's speed\n",
+              ball.c_str(), s.ball.mass, s.ball.e0, s.ball.cor_speed, s.ball.cor_slope, s.ball.cor_at(s.ball_speed));
   std::printf("maximum %-7s %.6f at z = %.5f m from the knob (%.2f in from the barrel end)\n",
               to_string(s.measure), c.measure, c.z_max, (c.length - c.z_max) / metres_per_inch);
   std::printf("e_a             %.6f there (bbcor %.6f, besr %.6f, bpf %.6f)\n", c.at_max.e_a, c.at_max.bbcor,
@@ -77,11 +84,12 @@ void run_certify(CertifyCommand& o) {
   BatSource source;
   const BatDesign design = load_bat_design(o.bat_file, source);
   o.options.e0 = o.e0, o.options.ball_speed = o.ball_speed, o.options.pivot = o.pivot;
+  o.options.ball = load_ball(o.ball).ball;
   o.options.vibrational_modes = parse_modes(o.modes);
   o.options.theory = parse_beam_theory(o.theory);
   const Certification c = certify(design, find_standard(o.standard), o.options);
-  if (o.json) print_json(c);
-  else print_text(design.name, c);
+  if (o.json) print_json(o.ball, c);
+  else print_text(design.name, o.ball, c);
 }
 
 }  // namespace
@@ -92,7 +100,9 @@ void add_certify_command(CLI::App& app) {
   cmd->add_option("bat", o->bat_file, "bat file (TOML)")->required();
   cmd->add_option("--standard", o->standard, "bbcor (NCAA/NFHS), besr (NCAA 1999-2010) or bpf (USSSA)")
       ->capture_default_str();
-  cmd->add_option("--e0", o->e0, "the ball's COR on a rigid wall [default: the standard's, 0.5]");
+  cmd->add_option("--ball", o->ball, "the rig's ball: a preset's name or a TOML file with a [ball] table")
+      ->capture_default_str();
+  cmd->add_option("--e0", o->e0, "the ball's COR on a rigid flat wall at its reference speed [default: the ball's]");
   cmd->add_option("--ball-speed", o->ball_speed, "the rig's ball speed, m/s [default: the standard's]");
   cmd->add_option("--pivot-point", o->pivot, "the rig's pivot, m from the knob [default: 0.1524, 6 in]");
   cmd->add_option("--theory", o->theory, "beam theory")

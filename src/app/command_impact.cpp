@@ -8,6 +8,7 @@
 
 #include "commands.hpp"
 #include "json.hpp"
+#include "sweetspot/ball/ball_file.hpp"
 #include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/impact/impact.hpp"
 #include "sweetspot/input_error.hpp"
@@ -25,6 +26,7 @@ struct ImpactOptions {
   std::string modes = "auto";
   bool json = false;
   ImpactScene scene;
+  std::string named_ball;
 };
 
 Json energy_json(const ImpactEnergy& e) {
@@ -133,12 +135,24 @@ int parse_modes(const std::string& text) {
   throw InputError("--modes " + text + ": expected a number of vibrational modes (0, 1, 2, ...), 'all' or 'auto'");
 }
 
-void add_ball_options(CLI::App& cmd, Ball& ball) {
+void add_ball_options(CLI::App& cmd, Ball& ball, std::string& named_ball) {
+  cmd.add_option("--ball", named_ball, "the ball: a preset's name or a TOML file with a [ball] table [default: n2000]");
   cmd.add_option("--e0", ball.e0, "coefficient of restitution on a rigid wall, in (0, 1]")->capture_default_str();
   cmd.add_option("--ball-mass", ball.mass, "ball mass, kg")->capture_default_str();
   cmd.add_option("--ball-radius", ball.radius, "ball radius, m")->capture_default_str();
   cmd.add_option("--k1", ball.k1, "ball stiffness k1, N/m^a")->capture_default_str();
   cmd.add_option("--a", ball.a, "ball compression exponent a")->capture_default_str();
+}
+
+void resolve_ball(const CLI::App& cmd, const std::string& named_ball, Ball& ball) {
+  if (named_ball.empty()) return;
+  Ball named = load_ball(named_ball).ball;
+  if (cmd.count("--e0")) named.e0 = ball.e0;
+  if (cmd.count("--ball-mass")) named.mass = ball.mass;
+  if (cmd.count("--ball-radius")) named.radius = ball.radius;
+  if (cmd.count("--k1")) named.k1 = ball.k1;
+  if (cmd.count("--a")) named.a = ball.a;
+  ball = named;
 }
 
 void resolve_integrator(const CLI::App& cmd, CollisionOptions& options) {
@@ -195,11 +209,12 @@ void add_impact_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--accuracy", o->scene.accuracy,
                   "relative vf error the integration may add: chooses the step (or tolerance) instead of --dt");
-  add_ball_options(*cmd, o->scene.ball);
+  add_ball_options(*cmd, o->scene.ball, o->named_ball);
   add_integrator_options(*cmd, o->scene.integrator);
   cmd->add_flag("--json", o->json, "print one JSON object");
   cmd->callback([o, cmd] {
     resolve_integrator(*cmd, o->scene.integrator);
+    resolve_ball(*cmd, o->named_ball, o->scene.ball);
     if (cmd->count("--n2000") && cmd->count("--modes") == 0) o->modes = std::to_string(n2000_modes);
     if (!o->cm_speed && !o->center) throw InputError("impact: give the swing as --cm-speed or as --center");
     run_impact(*o);

@@ -14,6 +14,7 @@ namespace {
 
 struct WallOptions {
   Ball ball;
+  std::string named_ball;
   double speed = 0;
   CollisionOptions integrator;
   bool json = false;
@@ -50,11 +51,12 @@ void add_wall_command(CLI::App& app) {
   auto o = std::make_shared<WallOptions>();
   CLI::App* cmd = app.add_subcommand("wall", "The ball on a rigid, immovable wall (N2000 Fig. 3)");
   cmd->add_option("--speed", o->speed, "ball speed, m/s")->required();
-  add_ball_options(*cmd, o->ball);
+  add_ball_options(*cmd, o->ball, o->named_ball);
   add_integrator_options(*cmd, o->integrator);
   cmd->add_flag("--json", o->json, "print one JSON object");
   cmd->callback([o, cmd] {
     resolve_integrator(*cmd, o->integrator);
+    resolve_ball(*cmd, o->named_ball, o->ball);
     run_wall(*o);
   });
 }

@@ -11,6 +11,7 @@ void add_modes_command(CLI::App& app);
 void add_impact_command(CLI::App& app);
 void add_wall_command(CLI::App& app);
 void add_toy_command(CLI::App& app);
+void add_ball_command(CLI::App& app);
 void add_run_command(CLI::App& app);
 void add_convergence_command(CLI::App& app);
 void add_certify_command(CLI::App& app);
@@ -19,8 +20,10 @@ void add_optimize_command(CLI::App& app);
 // --modes: a number of vibrational modes, "all" or "auto"; InputError naming --modes otherwise.
 int parse_modes(const std::string& text);
 
-// Options shared by the commands that run a collision.
-void add_ball_options(CLI::App& cmd, Ball& ball);
+// Options shared by the commands that run a collision: --ball (a preset or a ball file) and the
+// force law's parameters, which override the named ball's once resolve_ball has run.
+void add_ball_options(CLI::App& cmd, Ball& ball, std::string& named_ball);
+void resolve_ball(const CLI::App& cmd, const std::string& named_ball, Ball& ball);
 void add_integrator_options(CLI::App& cmd, CollisionOptions& options);
 // N2000's integration (RK4) under --n2000 unless --integrator was given, then the chosen
 // integrator's own step unless --dt was given.

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   sweetspot::app::add_impact_command(app);
   sweetspot::app::add_wall_command(app);
   sweetspot::app::add_toy_command(app);
+  sweetspot::app::add_ball_command(app);
   sweetspot::app::add_run_command(app);
   sweetspot::app::add_convergence_command(app);
   sweetspot::app::add_certify_command(app);

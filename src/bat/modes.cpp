@@ -136,6 +136,7 @@ ModalBasis compute_modes(const Bat& bat, BeamTheory theory, ModeRequest request)
     basis.solved_below = request.vibrational > 0 ? basis.omega(basis.count() - 1) : request.below_omega;
   if (!request.is_rigid_only()) basis.flexibility = vibrational_flexibility_band(s, mass, basis.vectors.leftCols(2));
   basis.wall = barrel_wall(bat);
+  for (const double d : bat.outer_diameter) basis.section_radius.push_back(d / 2);
   return basis;
 }
 
@@ -144,6 +145,12 @@ const WallMode* ModalBasis::wall_at(double z) const {
   const int n = static_cast<int>(wall.size());
   const int slice = std::clamp(static_cast<int>(std::floor(z / length() * n)), 0, n - 1);
   return wall[slice].mass > 0 ? &wall[slice] : nullptr;
+}
+
+double ModalBasis::section_radius_at(double z) const {
+  if (section_radius.empty()) return 0;
+  const int n = static_cast<int>(section_radius.size());
+  return section_radius[std::clamp(static_cast<int>(std::floor(z / length() * n)), 0, n - 1)];
 }
 
 double ModalBasis::vibrational_compliance_at(double z) const {

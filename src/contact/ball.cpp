@@ -22,6 +22,11 @@ void ContactForce::start_expansion(double u_max) {
   last_u_ = -1;  // the branch changes
   u_max_ = u_max;
   f_max_ = ball_.k1 * std::pow(u_max, ball_.a);
+  if (ball_.speed_dependent()) {
+    const double stored = f_max_ * u_max / (ball_.a + 1);
+    const double e = ball_.cor_at(ball_.wall_speed_storing(stored));
+    b_ = (1 + ball_.a) / (e * e) - 1;
+  }
   expanding_ = true;
 }
 

@@ -37,8 +37,8 @@ ModalBasis certification_modes(const BatDesign& design, const CertifyOptions& op
 
 RigSettings certification_rig(const Standard& standard, const CertifyOptions& options, double length) {
   RigSettings rig;
-  rig.ball = standard.ball;
-  rig.ball.e0 = options.e0.value_or(standard.ball.e0);
+  rig.ball = options.ball.value_or(standard.ball);
+  rig.ball.e0 = options.e0.value_or(rig.ball.e0);
   rig.ball_speed = options.ball_speed.value_or(standard.ball_speed);
   rig.pivot = options.pivot.value_or(standard.pivot);
   rig.vibrational_modes = options.vibrational_modes;

@@ -46,7 +46,8 @@ void bat_energies(const ImpactScene& scene, const SceneGeometry& g, const ModalB
 // numbers at the relative speed v_ball + v_bat: rotation about the pivot is its free rigid mode.
 RigMeasures impact_rig_measures(const ImpactScene& scene, const SceneGeometry& g, double vf) {
   const double e_a = collision_efficiency(vf, scene.ball_speed, g.bat_speed);
-  if (scene.pivoted) return rig_measures(e_a, g.recoil, scene.ball.e0);  // g.recoil = m d^2 / I_pivot
+  // g.recoil = m d^2 / I_pivot; BPF divides by the ball's own COR on a flat wall at the rig's speed.
+  if (scene.pivoted) return rig_measures(e_a, g.recoil, scene.ball.cor_at(scene.ball_speed));
   RigMeasures free;
   free.e_a = e_a;
   return free;
@@ -187,8 +188,13 @@ std::unique_ptr<ImpactScene> clamped_onto_bat(const ImpactScene& scene, double l
 
 ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& given) {
   validate(given, basis);
-  const std::unique_ptr<ImpactScene> clamped = clamped_onto_bat(given, basis.length());
-  const ImpactScene& scene = clamped ? *clamped : given;
+  std::unique_ptr<ImpactScene> adjusted = clamped_onto_bat(given, basis.length());
+  // The ball as it meets this section (struck_ball): the collision and the closed forms take it.
+  if (given.ball.curved_contact || given.ball.speed_dependent()) {
+    if (!adjusted) adjusted = std::make_unique<ImpactScene>(given);
+    adjusted->ball = struck_ball(*adjusted, basis);
+  }
+  const ImpactScene& scene = adjusted ? *adjusted : given;
   SceneGeometry g = scene_geometry(scene, basis);
   Collision c = collide_scene(scene, g);
   // auto's estimate bounds what the dropped modes change over one pulse. A ball the bat's

@@ -124,6 +124,15 @@ void validate(const ImpactScene& scene, const ModalBasis& basis) {
   require_positive("k1", scene.ball.k1);
   require_positive("a", scene.ball.a);
   if (!(scene.ball.e0 > 0 && scene.ball.e0 <= 1)) reject("e0", scene.ball.e0, "must lie in (0, 1]");
+  if (scene.ball.speed_dependent()) {
+    require_finite("cor_slope", scene.ball.cor_slope);
+    if (!(scene.ball.cor_speed >= 0 && scene.ball.cor_speed <= max_cor_law_speed))
+      reject("cor_speed", scene.ball.cor_speed, "must lie in [0, 100] m/s");
+    for (const double v : {0.0, max_cor_law_speed})
+      if (!(scene.ball.cor_at(v) > 0 && scene.ball.cor_at(v) <= 1))
+        reject("cor_slope", scene.ball.cor_slope,
+               "gives a COR outside (0, 1] at " + std::to_string(v) + " m/s: not a physical ball");
+  }
   require_positive("dt", scene.integrator.dt);
   require_positive("tolerance", scene.integrator.tolerance);
   require_positive("mode_tolerance", scene.mode_tolerance);
@@ -161,9 +170,15 @@ SceneGeometry rigid_geometry(const ImpactScene& scene, const ModalBasis& basis) 
 
 }  // namespace
 
+Ball struck_ball(const ImpactScene& scene, const ModalBasis& basis) {
+  if (!scene.ball.curved_contact && !scene.ball.speed_dependent()) return scene.ball;
+  const SceneGeometry g = rigid_geometry(scene, basis);
+  return scene.ball.on_section(basis.section_radius_at(g.z)).anchored_at(scene.ball_speed + g.bat_speed, g.recoil);
+}
+
 ModeRequest auto_mode_request(const ImpactScene& scene, const ModalBasis& basis) {
   const SceneGeometry g = rigid_geometry(scene, basis);
-  const double pulse = pulse_duration(scene.ball, scene.ball_speed + g.bat_speed, g.recoil);
+  const double pulse = pulse_duration(struck_ball(scene, basis), scene.ball_speed + g.bat_speed, g.recoil);
   const double omega = auto_solve_factor(scene.mode_tolerance) * 4 * std::numbers::pi / pulse;
   if (!std::isfinite(omega) || !(omega > 0)) return ModeRequest::all();  // a scene validation will refuse
   // Half-octaves of 1000 rad/s: nearby pulses share one basis.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "sweetspot/ball/ball_presets.hpp"
 #include "sweetspot/impact/bat_test_rig.hpp"
 #include "sweetspot/input_error.hpp"
 
@@ -11,9 +12,10 @@ namespace {
 
 constexpr double mph = metres_per_second_per_mph, inch = metres_per_inch;
 
-// The model's baseball (N2000 Fig. 2: 0.145 kg, e0 = 0.5 at game speeds): the standards' own ball
-// specifications did not come up in the project's reference search (README).
-Ball rig_ball() { return Ball{}; }
+// The rig's baseball, the preset "ncaa" (ball_presets.hpp): the league specification's COR with
+// its fall with speed, on the barrel's curvature. The NCAA protocol's own ball specification did
+// not come up in the project's reference search (README "Balls").
+Ball rig_ball() { return preset_ball(find_ball_preset("ncaa", "standards")).ball; }
 
 std::vector<Standard> make_standards() {
   // NCAA's statement of 16 Sep 2008: BBCOR <= 0.50 from 1 Jan 2011, "the actual testing procedure

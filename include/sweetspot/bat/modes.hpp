@@ -39,6 +39,8 @@ struct ModalBasis {
   Eigen::MatrixXd flexibility;
   // The barrel wall's hoop mode per slice (barrel_wall.hpp); empty for a solid bat.
   std::vector<WallMode> wall;
+  // Outer radius of each slice, m: the surface the ball meets (Ball::curvature_factor).
+  std::vector<double> section_radius;
 
   int count() const { return static_cast<int>(omega.size()); }
   // Every mode of the discretisation solved (rigid-only bases are not).
@@ -55,6 +57,8 @@ struct ModalBasis {
   double unsolved_compliance_at(double z) const;
   // The wall mode of the slice holding z, or nullptr where that slice is solid.
   const WallMode* wall_at(double z) const;
+  // The outer radius of the slice holding z, m; 0 when the basis has no slices' shapes.
+  double section_radius_at(double z) const;
   // Vibrational frequencies in Hz (modes 2, 3, ...), ascending.
   std::vector<double> vibrational_frequencies_hz() const;
   // Zeros of psi_n between slice centres, found by linear interpolation, m from the knob.

@@ -27,7 +27,8 @@ struct BarrelScan {
 
 // What may change from the standard's rig, each unset to keep the standard's.
 struct CertifyOptions {
-  std::optional<double> e0;
+  std::optional<Ball> ball;  // the rig's ball, in place of the standard's
+  std::optional<double> e0;  // the ball's COR (at its reference speed)
   std::optional<double> ball_speed;  // m/s
   std::optional<double> pivot;       // m from the knob
   int slices = 0;                    // 0: the bat's own

@@ -115,6 +115,11 @@ struct SceneGeometry {
 // solved modes, so a study's cache solves at least as many as they ask.
 SceneGeometry scene_geometry(const ImpactScene& scene, const ModalBasis& basis);
 
+// The scene's ball as it meets the struck section (Ball): k1 on that section's curvature, e0 the
+// COR of the energy a rigid bat of the same recoil would have it store. The scene's own ball when
+// it has neither curved contact nor a speed-dependent COR (N2000's ball: no copy, no change).
+Ball struck_ball(const ImpactScene& scene, const ModalBasis& basis);
+
 // The modes modes = "auto" needs solved at this scene: every one below
 // auto_solve_factor(mode_tolerance) times the rigid-bat pulse's reach 4 pi / T, rounded up to a
 // half-octave of 1000 rad/s. `basis` gives the mass properties only (a rigid-only basis will do).

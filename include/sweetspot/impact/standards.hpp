@@ -23,7 +23,7 @@ struct Standard {
   Measure measure = Measure::bbcor;
   double limit = 0;       // the measure at its maximum over the barrel may not exceed this
   double ball_speed = 0;  // m/s, the rig's inbound ball speed
-  Ball ball;              // the ball the rig fires (mass, e0: the model's baseball)
+  Ball ball;              // the ball the rig fires: the preset "ncaa" (ball_presets.hpp)
   double pivot = 0;       // m from the knob
   double max_barrel_diameter = 0;    // m, the largest outer diameter
   std::optional<double> max_drop;    // length in inches minus weight in ounces, at most this

@@ -1,0 +1,63 @@
+#pragma once
+// A ball as the labs specify it, and the force law fitted to it (README "Balls").
+//   COR (ASTM F1887): rebound over inbound speed on a massive, rigid, flat wall, at one or more
+//     speeds; a real ball's falls as it is struck harder.
+//   Dynamic stiffness (ASTM F2845): the peak force F of an impact at speed v, normalised by the
+//     ball's mass and speed as a linear spring's would be, DS = (F / v)^2 / m (the form as
+//     recalled: the standard's text was not found in the project's reference search).
+//   Compression (ASTM F1888): the force that squeezes the ball 0.25 in between flat plates.
+// The model's law F = k1 u^a takes k1 from the stiffness (or the compression) and a from how the
+// stiffness grows with speed (or as given); its COR law e(v) = e0 + slope (v - v0) (Ball) is the
+// least-squares line through the COR data, or one COR and the slope given.
+#include <string>
+#include <vector>
+
+#include "sweetspot/contact/ball.hpp"
+
+namespace sweetspot {
+
+struct SpeedValue {
+  double speed = 0;  // m/s
+  double value = 0;
+};
+
+struct BallTests {
+  double mass = 0;    // kg
+  double radius = 0;  // m
+  std::vector<SpeedValue> cor;  // flat-wall COR at these speeds (at least one)
+  double cor_slope = 0;         // per m/s, with a single COR: how it falls with speed
+  // Stiffness, one of: dynamic stiffness (N/m) at these speeds, on a flat wall or, if
+  // stiffness_cylinder_diameter > 0, on a rigid cylinder of that diameter (m); or the static
+  // compression force (N) at compression_displacement (m between the plates, 0.25 in by F1888),
+  // or the force law itself (k1, N/m^a).
+  std::vector<SpeedValue> dynamic_stiffness;
+  double stiffness_cylinder_diameter = 0;
+  double compression_force = 0;
+  double compression_displacement = 0.25 * 0.0254;
+  double k1 = 0;
+  double exponent = 0;  // a; 0: fitted from two or more stiffness speeds, else default_exponent
+  bool curved_contact = true;
+};
+
+// N2000's exponent (Fig. 2), what a ball takes when its stiffness at one speed says nothing of a.
+inline constexpr double default_ball_exponent = 1.84;
+
+struct BallFit {
+  Ball ball;
+  // Root-mean-square residuals of the fit: COR (absolute) and dynamic stiffness (relative); 0
+  // where the data determine the parameters exactly (one COR, one stiffness).
+  double cor_residual = 0;
+  double stiffness_residual = 0;
+  std::string stiffness_from;  // "dynamic stiffness", "compression" or "k1"
+};
+
+// Fits the model's ball to its tests. Throws InputError starting with `where` (the file and
+// table, e.g. "study.toml: [ball]") naming the key, the value and what was expected.
+BallFit fit_ball(const BallTests& tests, const std::string& where);
+
+// The peak force and the dynamic stiffness (F / v)^2 / m of `ball` striking a rigid surface of
+// curvature factor 1 at speed v, in closed form (the compression branch of its law).
+double peak_force_on_rigid(const Ball& ball, double speed);
+double dynamic_stiffness_on_rigid(const Ball& ball, double speed);
+
+}  // namespace sweetspot

@@ -1,0 +1,104 @@
+#include "ball/ball_table.hpp"
+
+#include <array>
+#include <string_view>
+
+#include "sweetspot/ball/ball_presets.hpp"
+#include "sweetspot/bat/inch_pound.hpp"
+#include "sweetspot/input_error.hpp"
+#include "toml_values.hpp"
+
+namespace sweetspot::detail {
+
+namespace {
+
+constexpr std::array<std::string_view, 14> known_keys = {
+    "preset", "mass", "radius", "cor", "cor_speed", "cor_slope", "dynamic_stiffness", "stiffness_speed",
+    "stiffness_cylinder_diameter", "compression", "compression_displacement", "k1", "a", "curved_contact"};
+
+[[noreturn]] void reject(const std::string& where, std::string_view key, const toml::node& node,
+                         const std::string& expected) {
+  throw InputError(where + ": " + std::string(key) + " = " + describe(node) + ": expected " + expected);
+}
+
+double number(const toml::table& t, std::string_view key, const std::string& where) {
+  const toml::node& node = *t.get(key);
+  if (!node.is_number()) reject(where, key, node, "a number");
+  return *node.value<double>();
+}
+
+// A value at one speed (`value_key` a number, at `speed_key` or 60 mph) or at several
+// (`value_key` = [[speed, value], ...]).
+std::vector<SpeedValue> speed_values(const toml::table& t, std::string_view value_key, std::string_view speed_key,
+                                     const std::string& where) {
+  const toml::node& node = *t.get(value_key);
+  if (node.is_number()) {
+    const double speed = t.contains(speed_key) ? number(t, speed_key, where) : 60 * metres_per_second_per_mph;
+    return {{speed, *node.value<double>()}};
+  }
+  const toml::array* rows = node.as_array();
+  if (!rows || rows->empty()) reject(where, value_key, node, "a number, or [[speed, value], ...] pairs");
+  if (t.contains(speed_key)) reject(where, speed_key, *t.get(speed_key), "no speed beside [[speed, value], ...] pairs");
+  std::vector<SpeedValue> values;
+  for (const toml::node& row : *rows) {
+    const toml::array* pair = row.as_array();
+    if (!pair || pair->size() != 2 || !(*pair)[0].is_number() || !(*pair)[1].is_number())
+      reject(where, value_key, row, "[speed, value] pairs of numbers (m/s, value)");
+    values.push_back({*(*pair)[0].value<double>(), *(*pair)[1].value<double>()});
+  }
+  return values;
+}
+
+void clear_stiffness(BallTests& t) {
+  t.dynamic_stiffness.clear();
+  t.compression_force = 0;
+  t.k1 = 0;
+}
+
+}  // namespace
+
+BallFit read_ball_table(const toml::table& table, const std::string& where) {
+  for (const auto& [key, node] : table)
+    if (std::ranges::find(known_keys, key.str()) == known_keys.end())
+      throw InputError(where + ": unknown key '" + std::string(key.str()) + "' (expected " + join(known_keys) + ")");
+  BallTests t;
+  if (table.contains("preset")) {
+    const toml::node& node = *table.get("preset");
+    if (!node.is_string()) reject(where, "preset", node, "a preset's name");
+    t = find_ball_preset(node.as_string()->get(), where).tests;
+  }
+  if (table.contains("mass")) t.mass = number(table, "mass", where);
+  if (table.contains("radius")) t.radius = number(table, "radius", where);
+  if (table.contains("cor")) {
+    t.cor = speed_values(table, "cor", "cor_speed", where);
+    t.cor_slope = 0;
+  } else if (table.contains("cor_speed")) {
+    reject(where, "cor_speed", *table.get("cor_speed"), "cor beside it (the COR at that speed)");
+  }
+  if (table.contains("cor_slope")) t.cor_slope = number(table, "cor_slope", where);
+  if (table.contains("dynamic_stiffness")) {
+    clear_stiffness(t);
+    t.dynamic_stiffness = speed_values(table, "dynamic_stiffness", "stiffness_speed", where);
+  }
+  if (table.contains("stiffness_cylinder_diameter"))
+    t.stiffness_cylinder_diameter = number(table, "stiffness_cylinder_diameter", where);
+  if (table.contains("compression")) {
+    clear_stiffness(t);
+    t.compression_force = number(table, "compression", where);
+  }
+  if (table.contains("compression_displacement"))
+    t.compression_displacement = number(table, "compression_displacement", where);
+  if (table.contains("k1")) {
+    clear_stiffness(t);
+    t.k1 = number(table, "k1", where);
+  }
+  if (table.contains("a")) t.exponent = number(table, "a", where);
+  if (table.contains("curved_contact")) {
+    const toml::node& node = *table.get("curved_contact");
+    if (!node.is_boolean()) reject(where, "curved_contact", node, "true or false");
+    t.curved_contact = node.as_boolean()->get();
+  }
+  return fit_ball(t, where);
+}
+
+}  // namespace sweetspot::detail
