@@ -126,10 +126,13 @@ TEST_CASE("A bat swung about its pivot gives the rig's e_A at the relative speed
 TEST_CASE("The certification's maximum agrees with a brute-force scan every 0.5 mm", "[certification]") {
   // A 0.5-mm scan can miss the peak by 0.25 mm, which near R161's peak costs up to 2e-6 of the
   // measure: its value is checked against a 0.01-mm scan of +-0.5 mm around its best point.
+  // A fixed set of modes: auto's choice steps with z (by up to 2e-5 of the measure at the BPF rig's
+  // 60 mph), and the scan, not the mode selection, is what this checks.
   const BatDesign design = r161_design();
   for (const char* name : {"bbcor", "besr", "bpf"}) {
     const Standard& standard = find_standard(name);
-    const CertifyOptions options;
+    CertifyOptions options;
+    options.vibrational_modes = 40;
     const Certification c = certify(design, standard, options);
     const RigSettings rig = certification_rig(standard, options, design.length);
     const auto measure = [&](double z) { return measure_value(rig_hit(r161_modes(), rig, z), standard.measure); };
@@ -142,7 +145,7 @@ TEST_CASE("The certification's maximum agrees with a brute-force scan every 0.5 
               << ", finely " << fine);
     CHECK(std::abs(c.z_max - coarse_z) <= 5e-4);
     CHECK(std::abs(c.measure - fine) <= 1e-6);
-    CHECK(c.measure >= coarse);  // never below a sample
+    CHECK(c.measure >= coarse - 1e-12);  // never below a sample (but for round-off at the same point)
     CHECK(c.measure == measure_value(c.at_max, standard.measure));
     CHECK(c.evaluations < 60);
   }

@@ -46,8 +46,10 @@ TEST_CASE("A certification study certifies each bat as sweetspot certify does", 
 
 TEST_CASE("In a certification study a rigid bat's BBCOR is the ball's e0", "[certification]") {
   const StudyDir d(3);
+  // N2000's ball: one COR at every speed (a speed-dependent one: test_ball.cpp).
   const auto study_file =
-      d.dir.write("certify.toml", "kind = \"certification\"\n[scene]\nbat = \"bats/r161.toml\"\nmodes = 0\n[axes]\n"
+      d.dir.write("certify.toml", "kind = \"certification\"\n[ball]\npreset = \"n2000\"\n[scene]\n"
+                                  "bat = \"bats/r161.toml\"\nmodes = 0\n[axes]\n"
                                   "rig_e0 = [0.4, 0.5, 0.6]\n\"bat.density\" = [600, 700]\n");
   const Study study = load_study(study_file);
   for (std::size_t i = 0; i < study.points(); ++i) {

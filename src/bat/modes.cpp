@@ -149,8 +149,14 @@ const WallMode* ModalBasis::wall_at(double z) const {
 
 double ModalBasis::section_radius_at(double z) const {
   if (section_radius.empty()) return 0;
+  // Linear between slice centres, so that what the ball meets varies continuously along a taper
+  // (a certification's scan locates its maximum between points).
   const int n = static_cast<int>(section_radius.size());
-  return section_radius[std::clamp(static_cast<int>(std::floor(z / length() * n)), 0, n - 1)];
+  const double x = std::clamp(z / length() * n - 0.5, 0.0, n - 1.0);
+  const int i = std::min(static_cast<int>(x), n - 2 < 0 ? 0 : n - 2);
+  if (n == 1) return section_radius[0];
+  const double t = x - i;
+  return section_radius[i] + t * (section_radius[i + 1] - section_radius[i]);
 }
 
 double ModalBasis::vibrational_compliance_at(double z) const {

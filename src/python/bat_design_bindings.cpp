@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "scene_args.hpp"
+#include "sweetspot/ball/ball_file.hpp"
 #include "sweetspot/bat/inch_pound.hpp"
 #include "sweetspot/impact/certification.hpp"
 #include "sweetspot/input_error.hpp"
@@ -63,10 +64,11 @@ py::dict properties(const BatHandle& b) {
   return d;
 }
 
-py::dict certification(const BatHandle& b, const std::string& standard, std::optional<double> e0,
+py::dict certification(const BatHandle& b, const std::string& standard, std::optional<std::string> ball, std::optional<double> e0,
                        std::optional<double> ball_speed, std::optional<double> pivot, const py::object& modes,
                        const std::string& theory) {
   CertifyOptions options;
+  if (ball) options.ball = load_ball(*ball).ball;
   options.e0 = e0;
   options.ball_speed = ball_speed;
   options.pivot = pivot;
@@ -95,7 +97,10 @@ py::dict certification(const BatHandle& b, const std::string& standard, std::opt
   d["barrel_diameter"] = c.barrel_diameter;
   d["pivot"] = c.standard.pivot;
   d["ball_speed"] = c.standard.ball_speed;
+  d["ball"] = ball.value_or("ncaa");
   d["e0"] = c.standard.ball.e0;
+  d["cor_speed"] = c.standard.ball.cor_speed;
+  d["cor_slope"] = c.standard.ball.cor_slope;
   d["checks"] = checks;
   d["pass"] = c.pass;
   return d;
@@ -145,7 +150,7 @@ void bind_bat_design(py::module_& m, py::class_<BatHandle, std::shared_ptr<BatHa
            "What a designer reads, exact for the designed shape: mass (kg), length (m), drop (length in "
            "inches minus weight in ounces), balance_point (m from the knob), moi_knob, moi_pivot (6 in "
            "from the knob), moi_cm (kg m^2).");
-  m.def("_certify", &certification, py::arg("bat"), py::arg("standard"), py::arg("e0"), py::arg("ball_speed"),
+  m.def("_certify", &certification, py::arg("bat"), py::arg("standard"), py::arg("ball"), py::arg("e0"), py::arg("ball_speed"),
         py::arg("pivot"), py::arg("modes"), py::arg("theory"));
 }
 

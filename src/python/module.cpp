@@ -15,6 +15,7 @@
 #include "bat_design_bindings.hpp"
 #include "bat_handle.hpp"
 #include "scene_args.hpp"
+#include "sweetspot/ball/ball_file.hpp"
 #include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/impact/impact.hpp"
 #include "sweetspot/input_error.hpp"
@@ -256,4 +257,14 @@ PYBIND11_MODULE(_sweetspot, m) {
     return names;
   });
   m.def("_point_arguments", [] { return point_arguments(); });
+  m.def("_ball", [](const std::string& name) {
+    const BallFit fit = load_ball(name);
+    const Ball& b = fit.ball;
+    py::dict d;  // the fitted ball, as `sweetspot ball --json` states it
+    d["mass"] = b.mass, d["radius"] = b.radius, d["k1"] = b.k1, d["a"] = b.a, d["e0"] = b.e0;
+    d["cor_speed"] = b.cor_speed, d["cor_slope"] = b.cor_slope, d["curved_contact"] = b.curved_contact;
+    d["stiffness_from"] = fit.stiffness_from, d["cor_residual"] = fit.cor_residual;
+    d["stiffness_residual"] = fit.stiffness_residual;
+    return d;
+  });
 }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "sweetspot/ball/ball_file.hpp"
 #include "sweetspot/impact/n2000_settings.hpp"
 #include "sweetspot/input_error.hpp"
 
@@ -16,7 +17,7 @@ const std::set<std::string>& known_arguments() {
   static const std::set<std::string> names = {
       "z",  "ball_speed", "cm_speed",    "center", "omega",          "e0",       "ball_mass", "ball_radius",
       "k1", "a",          "pivot",       "modes",  "mode_tolerance", "accuracy", "integrator", "dt",
-      "tolerance", "window", "theory", "n2000"};
+      "tolerance", "window", "theory", "n2000", "ball"};
   return names;
 }
 
@@ -70,6 +71,13 @@ SceneArgs scene_args(const py::dict& args, const std::set<std::string>& per_poin
   auto has = [&](const char* name) { return given.contains(name) && !per_point.contains(name); };
   auto get = [&](const char* name) { return args[name]; };
 
+  // The named ball first: the ball's values given beside it (and per point) override its own.
+  if (has("ball")) {
+    if (!py::isinstance<py::str>(get("ball")))
+      throw InputError("ball " + py::str(get("ball")).cast<std::string>() +
+                       ": expected a preset's name or a TOML file with a [ball] table");
+    s.ball = load_ball(get("ball").cast<std::string>()).ball;
+  }
   const auto& names = point_arguments();
   for (std::size_t k = 0; k < names.size(); ++k)
     if (has(names[k].c_str())) set_point_argument(s, static_cast<int>(k), number(names[k], get(names[k].c_str())));

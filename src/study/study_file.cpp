@@ -1,6 +1,7 @@
 // load_study: a study file read, checked across keys and resolved into a Study.
 #include <algorithm>
 
+#include "ball/ball_table.hpp"
 #include "study_settings.hpp"
 #include "sweetspot/impact/n2000_settings.hpp"
 #include "sweetspot/study/study_memory.hpp"
@@ -28,7 +29,7 @@ Study load_study(const fs::path& file) {
   study.text = read_text(file);
   const toml::table doc = parse_toml(file, study.text);
   const Where top{&study.file, "", 0};
-  reject_unknown(top, doc, {"title", "kind", "scene", "axes", "output"});
+  reject_unknown(top, doc, {"title", "kind", "scene", "axes", "output", "ball"});
   if (const toml::node* title = doc.get("title")) {
     if (!title->is_string()) reject(top.child("title", *title), describe(*title), "expected a string");
     study.title = title->as_string()->get();
@@ -47,6 +48,12 @@ Study load_study(const fs::path& file) {
   // settings under preset = "n2000"; what the study gives overrides either. Each method has its
   // own default step.
   if (s["preset"]) base.scene = with_n2000_settings(base.scene);
+  // [ball]: a preset or the ball's test values (README "Balls"); [scene] and axes keys override it.
+  if (const toml::node* ball = doc.get("ball")) {
+    if (!ball->is_table()) reject(top.child("ball", *ball), describe(*ball), "expected a table [ball]");
+    base.scene.ball = detail::read_ball_table(*ball->as_table(), file.string() + ": [ball]").ball;
+    study.rig_ball = true;
+  }
   for (const Setting& setting : s.scene)
     for (const double x : setting.values) setting.spec->set(base, x);  // one value, or each of a list
   if (!s["dt"]) base.scene.integrator.dt = default_step(base.scene.integrator.method);

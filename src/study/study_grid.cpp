@@ -44,6 +44,7 @@ GridPoint grid_point(const Study& study, std::size_t index) {
   p.standard = study.standard;
   p.rig_e0 = study.rig_e0;
   p.rig_ball_speed = study.rig_ball_speed;
+  p.rig_ball = study.rig_ball;
   p.slices = study.slices;
   p.theory = study.theory;
   p.coords.resize(study.axes.size());

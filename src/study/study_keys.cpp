@@ -19,6 +19,8 @@ bool positive(double x) { return std::isfinite(x) && x > 0; }
 bool step(double x) { return positive(x) && x >= finest_step; }  // as the commands' --dt
 bool on_bat(double x) { return std::isfinite(x) && x >= 0; }  // the bats' lengths: check_on_bats
 bool unit_interval(double x) { return x > 0 && x <= 1; }
+bool non_positive(double x) { return std::isfinite(x) && x <= 0; }
+bool cor_speed(double x) { return x >= 0 && x <= max_cor_law_speed; }
 bool slice_count(double x) { return x >= min_slices && x <= max_slices; }  // as `impact --slices`
 bool mode_count(double x) { return x >= 0 && x <= 1e6; }    // "all" and "auto" are not checked
 
@@ -51,6 +53,13 @@ constexpr KeySpec keys[] = {
      ball_kinds},
     {"a", Type::number, "a finite number > 0", positive, [](GridPoint& p, double x) { p.scene.ball.a = x; },
      ball_kinds},
+    // The ball's COR law (contact/ball.hpp): its fall with speed and the speed where the COR is e0.
+    {"cor_slope", Type::number, "a finite number <= 0 (per m/s: how the COR falls with speed)", non_positive,
+     [](GridPoint& p, double x) { p.scene.ball.cor_slope = x; }, ball_kinds},
+    {"cor_speed", Type::number, "a number in [0, 100] (m/s: where the COR is e0)", cor_speed,
+     [](GridPoint& p, double x) { p.scene.ball.cor_speed = x; }, ball_kinds},
+    {"curved_contact", Type::boolean, "true or false (the ball meets the barrel's curvature)", any,
+     [](GridPoint& p, double x) { p.scene.ball.curved_contact = x != 0; }, ball_kinds},
     {"center", Type::number, "a finite number (m from the knob)", finite,
      [](GridPoint& p, double x) {
        p.scene.swing.center = x;

@@ -16,6 +16,7 @@ namespace {
 // z), `certified` whether every rule of the standard holds.
 ImpactResult certification_point(const GridPoint& point) {
   CertifyOptions options;
+  if (point.rig_ball) options.ball = point.scene.ball;
   if (!std::isnan(point.rig_e0)) options.e0 = point.rig_e0;
   if (!std::isnan(point.rig_ball_speed)) options.ball_speed = point.rig_ball_speed;
   options.slices = point.slices;

@@ -48,6 +48,9 @@ void add_scene_key(const Study& study, const std::string& key, SceneAttributes& 
   if (key == "ball_radius") return out.number(key, s.ball.radius);
   if (key == "k1") return out.number(key, s.ball.k1);
   if (key == "a") return out.number(key, s.ball.a);
+  if (key == "cor_slope") return out.number(key, s.ball.cor_slope);
+  if (key == "cor_speed") return out.number(key, s.ball.cor_speed);
+  if (key == "curved_contact") return out.integer(key, s.ball.curved_contact ? 1 : 0);
   // The swing is given one way: the other key has no value to show.
   if (key == "center") return s.swing.about_center ? out.number(key, s.swing.center) : void();
   if (key == "cm_speed") return s.swing.about_center ? void() : out.number(key, s.swing.cm_speed);

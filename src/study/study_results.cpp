@@ -81,6 +81,9 @@ const std::map<std::string, Description>& descriptions() {
       // N/m^a has no UDUNITS spelling (the exponent is the ball's a), which CF units need.
       {"k1", {"", "ball stiffness k1, in N m^-a (a the ball's compression exponent)"}},
       {"a", {"1", "ball compression exponent"}},
+      {"cor_slope", {"s/m", "fall of the ball's flat-wall COR per m/s of impact speed"}},
+      {"cor_speed", {"m/s", "impact speed at which the ball's flat-wall COR is e0"}},
+      {"curved_contact", {"", "ball meets the barrel's curvature (1) or a flat surface (0)"}},
       {"cm_speed", {"m/s", "bat centre-of-mass speed toward the ball"}},
       {"center", {"m", "rotation centre of the swing from the knob"}},
       {"omega", {"rad/s", "bat angular velocity"}},

@@ -57,7 +57,7 @@ struct ModalBasis {
   double unsolved_compliance_at(double z) const;
   // The wall mode of the slice holding z, or nullptr where that slice is solid.
   const WallMode* wall_at(double z) const;
-  // The outer radius of the slice holding z, m; 0 when the basis has no slices' shapes.
+  // The outer radius at z, m, linear between slice centres; 0 when the basis has no slices.
   double section_radius_at(double z) const;
   // Vibrational frequencies in Hz (modes 2, 3, ...), ascending.
   std::vector<double> vibrational_frequencies_hz() const;

@@ -134,6 +134,7 @@ struct Study {
   std::size_t standard = 0;                        // certification: its standard, and the rig's
   double rig_e0 = std::numeric_limits<double>::quiet_NaN();          // e0 and ball speed where
   double rig_ball_speed = std::numeric_limits<double>::quiet_NaN();  // the study overrides them
+  bool rig_ball = false;  // a [ball] table: certification fires base.ball, not the standard's
   std::vector<Axis> axes;            // in the order written
   std::vector<std::string> outputs;  // in the order written
   double sweet_spot_fraction = 0.01;  // [output]: the sweet spot's zone is within this of the peak vf
@@ -161,6 +162,7 @@ struct GridPoint {
   std::size_t standard = 0;
   double rig_e0 = std::numeric_limits<double>::quiet_NaN();
   double rig_ball_speed = std::numeric_limits<double>::quiet_NaN();
+  bool rig_ball = false;  // the study's [ball] (scene.ball) in place of the standard's
   const BatDesign* design_spec = nullptr;
   int slices = 0;       // 0: the profile's own
   BeamTheory theory = BeamTheory::timoshenko;

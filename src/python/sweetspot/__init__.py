@@ -17,9 +17,17 @@ from pathlib import Path
 
 import numpy as np
 
-from ._sweetspot import Bat, _certify, _describe, _impact, _impacts, _point_arguments, _status_names
+from ._sweetspot import Bat, _ball, _certify, _describe, _impact, _impacts, _point_arguments, _status_names
 
-__all__ = ["Bat", "impact", "impacts", "run_study", "certify"]
+__all__ = ["Bat", "ball", "impact", "impacts", "run_study", "certify"]
+
+
+def ball(name="n2000"):
+    """The model's ball fitted to a preset (n2000, mlb, ncaa, softball_44_375, softball_47_525) or to
+    the [ball] table of a TOML file: a dict of mass (kg), radius (m), k1 and a of the force law F =
+    k1 u^a on a flat surface, e0 the flat-wall COR at cor_speed (m/s), cor_slope (per m/s),
+    curved_contact, and the fit's residuals (README "Balls")."""
+    return _ball(name)
 
 
 def _from_knots(name, length, z, outer_diameter, inner_diameter=None, *, interpolation="linear", slices=None,
@@ -52,25 +60,27 @@ Bat.from_knots = staticmethod(_from_knots)
 Bat.from_dimensions = staticmethod(_from_dimensions)
 
 
-def certify(bat, standard="bbcor", *, e0=None, ball_speed=None, pivot=None, modes="auto", theory="timoshenko"):
+def certify(bat, standard="bbcor", *, ball=None, e0=None, ball_speed=None, pivot=None, modes="auto",
+            theory="timoshenko"):
     """The bat in the virtual test rig of a standard ("bbcor", "besr" or "bpf"), as `sweetspot
     certify --json`: a dict with standard, z_max, e_a, the measure by its name, moi_pivot, mass,
     drop, barrel_diameter, checks (rule, value, limit, pass) and pass. e0, ball_speed (m/s) and
-    pivot (m from the knob) override the standard's rig."""
-    return _certify(bat, standard, e0, ball_speed, pivot, modes, theory)
+    pivot (m from the knob) override the standard's rig; ball (a preset's name or a TOML file with a
+    [ball] table) replaces the standard's ball, the preset "ncaa"."""
+    return _certify(bat, standard, ball, e0, ball_speed, pivot, modes, theory)
 
 _POINT = tuple(_point_arguments())  # z, ball_speed, cm_speed, center, omega, e0, ball_mass, ...
 
 
 def _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, pivot, modes,
-           mode_tolerance, accuracy, integrator, dt, tolerance, window, theory, n2000):
-    return dict(z=z, ball_speed=ball_speed, cm_speed=cm_speed, center=center, omega=omega, e0=e0,
+           mode_tolerance, accuracy, integrator, dt, tolerance, window, theory, n2000, ball=None):
+    return dict(ball=ball, z=z, ball_speed=ball_speed, cm_speed=cm_speed, center=center, omega=omega, e0=e0,
                 ball_mass=ball_mass, ball_radius=ball_radius, k1=k1, a=a, pivot=pivot, modes=modes,
                 mode_tolerance=mode_tolerance, accuracy=accuracy, integrator=integrator, dt=dt,
                 tolerance=tolerance, window=window, theory=theory, n2000=n2000)
 
 
-def impact(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, e0=None, ball_mass=None,
+def impact(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=None, e0=None, ball_mass=None,
            ball_radius=None, k1=None, a=None, pivot=False, modes=None, mode_tolerance=None, accuracy=None,
            integrator=None, dt=None, tolerance=None, window=None, theory="timoshenko", n2000=False):
     """One ball on one bat, as `sweetspot impact --json`: a dict with the same keys (status, z, vf,
@@ -78,13 +88,15 @@ def impact(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, e0=None
     energy, mode_energy, modes_kept, modes_error, contacts), NaN where the JSON has null.
 
     The swing is cm_speed (m/s) or center (m from the knob, the point at rest), with omega (rad/s).
+    `ball` names the ball (a preset's name or a TOML file with a [ball] table; default N2000's), and
+    e0, ball_mass, ball_radius, k1 and a override its values.
     None means the program's default: e0 0.5, exact stepping at 10 us, modes "auto" (a count, "all"
     or "auto"); n2000=True takes RK4 at 5 us with 18 modes unless integrator, dt or modes are given.
     The bat's modes are solved once per needed set and kept on the bat."""
     result = _impact(bat, _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a,
                                  pivot, modes, mode_tolerance, accuracy, integrator, dt, tolerance, window,
-                                 theory, n2000))
-    radius = 0.0366 if ball_radius is None else ball_radius
+                                 theory, n2000, ball))
+    radius = ball_radius if ball_radius is not None else _ball(ball or "n2000")["radius"]
     if result["u_max"] > radius:
         warnings.warn(f"the ball compressed {1e3 * result['u_max']:.3g} mm, past its radius "
                       f"{1e3 * radius:.3g} mm: the force law is not meant for that", RuntimeWarning, stacklevel=2)
@@ -111,7 +123,7 @@ def _dims(arrays, shape):
     return [owner[k] for k in range(len(shape))] if len(owner) == len(shape) else None
 
 
-def impacts(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, e0=None, ball_mass=None,
+def impacts(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=None, e0=None, ball_mass=None,
             ball_radius=None, k1=None, a=None, pivot=False, modes=None, mode_tolerance=None, accuracy=None,
             integrator=None, dt=None, tolerance=None, window=None, theory="timoshenko", n2000=False, threads=None):
     """Many impacts at once: z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1
@@ -123,7 +135,7 @@ def impacts(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, e0=Non
     import xarray as xr
 
     args = _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, pivot, modes,
-                  mode_tolerance, accuracy, integrator, dt, tolerance, window, theory, n2000)
+                  mode_tolerance, accuracy, integrator, dt, tolerance, window, theory, n2000, ball)
     arrays = {k: np.asarray(v, dtype=float) for k, v in args.items()
               if k in _POINT and v is not None and np.ndim(v) > 0}
     scalars = {k: v for k, v in args.items() if k not in arrays}
