@@ -222,7 +222,9 @@ TEST_CASE("More wall damping dissipates more and lowers the rig's BBCOR, slightl
   for (const double eta : {0.0, 1e-4, 1e-3, 1e-2}) {
     INFO("eta " << eta);
     const ModalBasis alloy = compute_modes(build_bat(alloy_with_loss(eta)), BeamTheory::timoshenko);
-    const ImpactResult r = simulate_impact(alloy, rig_scene(RigSettings{Ball{}, 60, rig_pivot, auto_modes, {}}, 0.7));
+    // At the rig's peak (z_max 0.64 m): off it, at 0.7 m, the patch-loaded wall's trampoline no
+    // longer outweighs the beam's vibration at eta = 0.01 (BBCOR 0.499), as the point load's did.
+    const ImpactResult r = simulate_impact(alloy, rig_scene(RigSettings{Ball{}, 60, rig_pivot, auto_modes, {}}, 0.64));
     REQUIRE(r.status == CollisionStatus::ok);
     if (eta == 0) CHECK(r.energy.barrel_dissipated == 0);
     if (eta > 0) {

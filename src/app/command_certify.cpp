@@ -1,4 +1,5 @@
 // sweetspot certify: a bat in the virtual test rig against a performance standard.
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -36,6 +37,17 @@ Json checks_json(const std::vector<RuleCheck>& checks) {
   return Json::array(items);
 }
 
+// A hollow bat's wall: its load and what calibrated it (null where not given).
+Json barrel_json(const Certification& c) {
+  const BarrelCalibration& b = c.barrel;
+  const double nan = std::nan("");
+  return Json::Object()
+      .add("load", std::string(b.load == WallLoad::point ? "point" : "patch"))
+      .add("calibrated", Json::boolean(b.calibrated()))
+      .add("hoop_frequency_measured", b.hoop_frequency > 0 ? b.hoop_frequency : nan)
+      .add("compression_measured", b.compression > 0 ? b.compression : nan);
+}
+
 void print_json(const std::string& ball, const Certification& c) {
   Json::Object out;
   out.add("standard", c.standard.name)
@@ -48,6 +60,10 @@ void print_json(const std::string& ball, const Certification& c) {
       .add("length", c.length)
       .add("drop", c.drop)
       .add("barrel_diameter", c.barrel_diameter)
+      .add("hoop_frequency", c.hoop_frequency)          // these four null where z_max is solid
+      .add("barrel_compression", c.barrel_compression)  // N at 0.04 in
+      .add("barrel_phi", c.barrel_phi)
+      .add("barrel_compliance", c.barrel_compliance)
       .add("pivot", c.standard.pivot)
       .add("ball_speed", c.standard.ball_speed)
       .add("ball", ball)
@@ -56,6 +72,7 @@ void print_json(const std::string& ball, const Certification& c) {
       .add("cor_slope", c.standard.ball.cor_slope)
       .add("checks", checks_json(c.checks))
       .add("pass", Json::boolean(c.pass));
+  if (c.hollow) out.add("barrel", barrel_json(c));
   std::printf("%s\n", Json(out).text().c_str());
 }
 
@@ -75,6 +92,20 @@ void print_text(const std::string& bat_name, const std::string& ball, const Cert
   std::printf("length          %.4f m (%.2f in), weight %.4f kg (%.2f oz), drop %.2f\n", c.length,
               c.length / metres_per_inch, c.mass, c.mass / kilograms_per_ounce, c.drop);
   std::printf("barrel diameter %.5f m (%.4f in)\n", c.barrel_diameter, c.barrel_diameter / metres_per_inch);
+  if (std::isfinite(c.hoop_frequency)) {
+    std::printf("barrel wall     hoop frequency %.5g Hz, compression %.5g N (%.4g lbf) at 0.04 in, there\n",
+                c.hoop_frequency, c.barrel_compression, c.barrel_compression / newtons_per_pound_force);
+    if (std::isfinite(c.barrel_phi))
+      std::printf("wall's load     %s: phi_2 %.5g, other harmonics %.4g m/N at the peak\n",
+                  c.barrel.load == WallLoad::point ? "point" : "patch", c.barrel_phi, c.barrel_compliance);
+  }
+  if (c.barrel.calibrated()) {
+    std::printf("calibrated wall");
+    if (c.barrel.hoop_frequency > 0) std::printf(" to hoop_frequency %.6g Hz", c.barrel.hoop_frequency);
+    if (c.barrel.compression > 0)
+      std::printf("%s compression %.6g N", c.barrel.hoop_frequency > 0 ? " and" : " to", c.barrel.compression);
+    std::printf(" ([barrel], at its reference section)\n");
+  }
   std::printf("%-16s %12s %12s  %s\n", "rule", "value", "limit", "result");
   for (const RuleCheck& r : c.checks)
     std::printf("%-16s %12.6g %12.6g  %s\n", r.rule.c_str(), r.value, r.limit, r.pass ? "pass" : "FAIL");

@@ -42,7 +42,17 @@ Json energy_json(const ImpactEnergy& e) {
       .add("residual", e.residual);
 }
 
-void print_json(const ImpactResult& r) {
+// A hollow bat's [barrel] table as the wall used it: its load, and what calibrated it (null: not given).
+Json barrel_json(const BarrelCalibration& b) {
+  const double nan = std::nan("");
+  return Json::Object()
+      .add("load", std::string(b.load == WallLoad::point ? "point" : "patch"))
+      .add("calibrated", Json::boolean(b.calibrated()))
+      .add("hoop_frequency_measured", b.hoop_frequency > 0 ? b.hoop_frequency : nan)
+      .add("compression_measured", b.compression > 0 ? b.compression : nan);
+}
+
+void print_json(const ImpactResult& r, const Bat& bat) {
   Json::Object out;
   out.add("status", to_string(r.status));
   if (!r.message.empty()) out.add("message", r.message);
@@ -56,6 +66,10 @@ void print_json(const ImpactResult& r) {
       .add("impulse", r.impulse)
       .add("bat_speed", r.bat_speed)
       .add("hoop_frequency", r.hoop_frequency)  // null where the struck section is solid
+      .add("barrel_compression", r.barrel_compression)  // N at 0.04 in; null where solid
+      .add("barrel_phi", r.barrel_phi)            // these three null where no wall takes the ball
+      .add("barrel_compliance", r.barrel_compliance)
+      .add("barrel_compression_eff", r.barrel_compression_eff)
       .add("e_a", r.rig.e_a)
       .add("bbcor", r.rig.bbcor)  // these three null for a free bat: no rig holds it
       .add("besr", r.rig.besr)
@@ -65,6 +79,7 @@ void print_json(const ImpactResult& r) {
       .add("modes_kept", Json::numbers({r.modes_kept.begin(), r.modes_kept.end()}))
       .add("modes_error", r.modes_error)
       .add("contacts", Json::integer(r.contacts));
+  if (bat.hollow()) out.add("barrel", barrel_json(bat.material.barrel));
   std::printf("%s\n", Json(out).text().c_str());
 }
 
@@ -87,6 +102,9 @@ void print_text(const ImpactResult& r) {
                 e.ball_dissipated, e.barrel);
     std::printf("                + dissipated in the wall %.6g\n", e.barrel_dissipated);
     std::printf("                + residual %.3g; the wall's hoop frequency %.5g Hz\n", e.residual, r.hoop_frequency);
+    if (std::isfinite(r.barrel_compression_eff))
+      std::printf("wall's load     phi_2 %.5g, other harmonics %.4g m/N, at compression %.4g mm\n", r.barrel_phi,
+                  r.barrel_compliance, 1e3 * r.barrel_compression_eff);
   } else {
     std::printf("                + vibration %.6g + dissipated in the ball %.6g + residual %.3g\n", e.vibration,
                 e.ball_dissipated, e.residual);
@@ -113,7 +131,7 @@ void run_impact(ImpactOptions& o) {
   const ModalBasis basis = compute_modes(bat, theory, request);
   const ImpactResult r = simulate_impact(basis, o.scene);
   if (r.status == CollisionStatus::refused_step) throw InputError("--dt: " + r.message);
-  if (o.json) print_json(r);
+  if (o.json) print_json(r, bat);
   else print_text(r);
   if (r.u_max > o.scene.ball.radius)
     std::fprintf(stderr, "sweetspot: warning: the ball compressed %.3g mm, past its radius %.3g mm: the force law is "

@@ -55,6 +55,14 @@ std::string bat_design_text(const BatDesign& design, const std::string& comment)
   for (const DimensionField& f : dimension_fields)
     if (!f.optional || d.*f.value > 0) out << f.name << " = " << exact(d.*f.value) << "\n";
   out << "end = " << quoted(to_string(d.end)) << "\n";
+  // The [barrel] table, only where the bat file had one that says something.
+  const BarrelCalibration& b = m.barrel;
+  if (b.load != WallLoad::patch || b.calibrated()) {
+    out << "\n[barrel]\n";
+    if (b.load != WallLoad::patch) out << "load = \"point\"\n";
+    if (b.hoop_frequency > 0) out << "hoop_frequency = " << exact(b.hoop_frequency) << "  # Hz\n";
+    if (b.compression > 0) out << "compression = " << exact(b.compression) << "  # N at 0.04 in\n";
+  }
   return out.str();
 }
 

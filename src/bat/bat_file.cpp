@@ -218,6 +218,39 @@ void read_material(const Section& s, BatDesign& design) {
   m.wall_loss_factor = s.fraction("wall_loss_factor", default_wall_loss_factor);
 }
 
+// A measured value of [barrel]: absent 0; given, a finite number in [low, high] (unit).
+double measured(const Section& s, std::string_view key, double low, double high, std::string_view unit) {
+  if (!s.table.contains(key)) return 0;
+  const toml::node& node = *s.table.get(key);
+  const auto x = node.is_number() ? node.value<double>() : std::nullopt;
+  if (x && *x >= low && *x <= high) return *x;
+  fail(s.where(key), "value " + describe(node) + " must be a measured " + std::string(unit) + " from " +
+                         format_number(low) + " to " + format_number(high));
+}
+
+WallLoad parse_wall_load(const std::string& text) {
+  if (text == "patch") return WallLoad::patch;
+  if (text == "point") return WallLoad::point;
+  throw InputError("load: expected 'patch' or 'point'");
+}
+
+// The optional [barrel] table (barrel_wall.hpp): how the ball loads a hollow wall, and measured
+// values that calibrate it. Only a hollow bat has a wall.
+void read_barrel(const Section& top, BatDesign& design) {
+  if (!top.table.contains("barrel")) return;
+  const Section s = top.section("barrel");
+  s.reject_unknown({"load", "hoop_frequency", "compression"});
+  const bool hollow = design.dimensions ? design.dimensions->wall_thickness > 0
+                                        : std::ranges::any_of(design.profile.inner, [](double d) { return d > 0; });
+  if (!hollow)
+    fail(top.where("barrel"), "a [barrel] table on a solid bat; expected a hollow bat (wall_thickness in "
+                              "[dimensions], or a profile with inner_diameter_m)");
+  BarrelCalibration& b = design.material.barrel;
+  if (s.table.contains("load")) b.load = s.choice("load", parse_wall_load);
+  b.hoop_frequency = measured(s, "hoop_frequency", 100, 20000, "hoop frequency (Hz)");
+  b.compression = measured(s, "compression", 10, 1e6, "barrel compression (N at 0.04 in)");
+}
+
 // [dimensions] (dimensions.hpp): lengths in m; end and its depth and the wall optional.
 Dimensions read_dimension_table(const Section& s) {
   std::vector<std::string_view> known = {"end"};
@@ -478,7 +511,7 @@ BatDesign load_bat_design(const std::filesystem::path& toml_path, BatSource& sou
   source = {toml_path, {}, read_text(toml_path), {}};
   const toml::table doc = parse_toml(toml_path, source.toml_text);
   const Section top{toml_path, doc, ""};
-  top.reject_unknown({"name", "length", "material", "profile", "dimensions", "interpolation", "slices"});
+  top.reject_unknown({"name", "length", "material", "profile", "dimensions", "interpolation", "slices", "barrel"});
   BatDesign design;
   design.name = top.text("name");
   design.length = top.positive("length", "m");
@@ -488,6 +521,7 @@ BatDesign load_bat_design(const std::filesystem::path& toml_path, BatSource& sou
   require_one_shape(top);
   if (top.table.contains("dimensions")) {
     read_dimensions(top, options, design);
+    read_barrel(top, design);
     return design;
   }
   source.profile_file = profile_path(toml_path, top);
@@ -495,6 +529,7 @@ BatDesign load_bat_design(const std::filesystem::path& toml_path, BatSource& sou
       read_text(source.profile_file, " (the profile named by key 'profile' in " + toml_path.string() + ")");
   require_text(source.profile_file, source.profile_text);  // TOML itself must be UTF-8 already
   read_profile(source.profile_file, source.profile_text, options, design);
+  read_barrel(top, design);
   return design;
 }
 

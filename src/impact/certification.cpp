@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "sweetspot/impact/impact.hpp"
 #include "sweetspot/input_error.hpp"
 
 namespace sweetspot {
@@ -82,7 +83,16 @@ Certification certify(const BatDesign& design, const Standard& standard, const C
   c.z_max = peak.x;
   c.measure = peak.value;
   c.at_max = rig_hit(basis, rig, peak.x);
-  if (const WallMode* wall = basis.wall_at(peak.x)) c.hoop_frequency = wall->frequency_hz();
+  if (const WallMode* wall = basis.wall_at(peak.x)) {
+    c.hoop_frequency = wall->frequency_hz();
+    c.barrel_compression = barrel_compression(*wall);
+  }
+  // The wall's load at the peak: the hit again, whole (rig_hit keeps the measures alone).
+  const ImpactResult hit = simulate_impact(basis, rig_scene(rig, peak.x));
+  c.barrel_phi = hit.barrel_phi;
+  c.barrel_compliance = hit.barrel_compliance;
+  c.hollow = !design_profile(design).inner.empty();
+  c.barrel = design.material.barrel;
   c.evaluations = peak.evaluations + 1;
   const MassProperties exact = design_mass_properties(design);
   c.mass = exact.mass;

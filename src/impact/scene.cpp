@@ -78,12 +78,15 @@ void validate_history(const HistoryRequest& h, double length) {
 }
 
 // The wall's ovaling as one more mode of the contact (barrel_wall.hpp): mass-normalised, its
-// shape at the contact point is 1 / sqrt(m_w); it starts at rest, whatever the bat's swing. A bat
-// kept rigid (no vibrational mode) has no wall either, though its section has a hoop frequency.
+// shape at the contact point is 1 / sqrt(m_w) under a point load; it starts at rest, whatever the
+// bat's swing. A patch-loaded wall scales that shape by phi_2 and adds its other harmonics to the
+// residual compliance (impact.cpp, at the impact's effective compression). A bat kept rigid (no
+// vibrational mode) has no wall either, though its section has a hoop frequency.
 void add_wall_mode(const ImpactScene& scene, const ModalBasis& basis, SceneGeometry& g) {
   const WallMode* wall = basis.wall_at(g.z);
   if (!wall) return;
   g.hoop_frequency = wall->frequency_hz();
+  g.barrel_compression = barrel_compression(*wall);
   if (scene.vibrational_modes == 0) return;
   ModalContact& c = g.contact;
   const int n = c.count();
@@ -93,6 +96,8 @@ void add_wall_mode(const ImpactScene& scene, const ModalBasis& basis, SceneGeome
   c.omega(n) = wall->omega;
   c.psi(n) = 1 / std::sqrt(wall->mass);
   c.velocity0(n) = 0;
+  g.wall_point_shape = c.psi(n);
+  g.beam_compliance = c.residual_compliance;
   // Its loss factor eta as viscous damping, zeta = eta / 2 (equal loss per cycle at resonance,
   // barrel_wall.hpp); a lossless wall leaves every mode undamped, the undamped code paths.
   if (wall->loss_factor > 0) {

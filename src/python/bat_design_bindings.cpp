@@ -95,6 +95,10 @@ py::dict certification(const BatHandle& b, const std::string& standard, std::opt
   d["length"] = c.length;
   d["drop"] = c.drop;
   d["barrel_diameter"] = c.barrel_diameter;
+  d["hoop_frequency"] = c.hoop_frequency;
+  d["barrel_compression"] = c.barrel_compression;
+  d["barrel_phi"] = c.barrel_phi;
+  d["barrel_compliance"] = c.barrel_compliance;
   d["pivot"] = c.standard.pivot;
   d["ball_speed"] = c.standard.ball_speed;
   d["ball"] = ball.value_or("ncaa");
@@ -103,6 +107,15 @@ py::dict certification(const BatHandle& b, const std::string& standard, std::opt
   d["cor_slope"] = c.standard.ball.cor_slope;
   d["checks"] = checks;
   d["pass"] = c.pass;
+  if (c.hollow) {
+    py::dict b;
+    const double nan = std::nan("");
+    b["load"] = c.barrel.load == WallLoad::point ? "point" : "patch";
+    b["calibrated"] = c.barrel.calibrated();
+    b["hoop_frequency_measured"] = c.barrel.hoop_frequency > 0 ? c.barrel.hoop_frequency : nan;
+    b["compression_measured"] = c.barrel.compression > 0 ? c.barrel.compression : nan;
+    d["barrel"] = b;
+  }
   return d;
 }
 

@@ -41,13 +41,26 @@ ImpactResult run_impact(BatHandle& bat, const SceneArgs& args) {
 }
 
 // The result under the names of `sweetspot impact --json`, in its order; NaN where JSON has null.
-py::dict result_dict(const ImpactResult& r) {
+py::dict barrel_dict(const BarrelCalibration& b) {
+  py::dict d;
+  const double nan = std::nan("");
+  d["load"] = b.load == WallLoad::point ? "point" : "patch";
+  d["calibrated"] = b.calibrated();
+  d["hoop_frequency_measured"] = b.hoop_frequency > 0 ? b.hoop_frequency : nan;
+  d["compression_measured"] = b.compression > 0 ? b.compression : nan;
+  return d;
+}
+
+py::dict result_dict(const ImpactResult& r, const Bat& bat) {
   py::dict d;
   d["status"] = to_string(r.status);
   if (!r.message.empty()) d["message"] = r.message;
   d["z"] = r.z, d["vf"] = r.vf, d["e_eff"] = r.e_eff, d["contact_time"] = r.contact_time;
   d["collision_time"] = r.collision_time, d["u_max"] = r.u_max, d["peak_force"] = r.peak_force;
-  d["impulse"] = r.impulse, d["bat_speed"] = r.bat_speed, d["hoop_frequency"] = r.hoop_frequency, d["e_a"] = r.rig.e_a, d["bbcor"] = r.rig.bbcor;
+  d["impulse"] = r.impulse, d["bat_speed"] = r.bat_speed, d["hoop_frequency"] = r.hoop_frequency;
+  d["barrel_compression"] = r.barrel_compression, d["barrel_phi"] = r.barrel_phi;
+  d["barrel_compliance"] = r.barrel_compliance, d["barrel_compression_eff"] = r.barrel_compression_eff;
+  d["e_a"] = r.rig.e_a, d["bbcor"] = r.rig.bbcor;
   d["besr"] = r.rig.besr, d["bpf"] = r.rig.bpf;
   py::dict e;
   e["initial"] = r.energy.initial, e["ball"] = r.energy.ball, e["bat_translation"] = r.energy.bat_translation;
@@ -59,6 +72,7 @@ py::dict result_dict(const ImpactResult& r) {
   d["modes_kept"] = py::array_t<int>(r.modes_kept.size(), r.modes_kept.data());
   d["modes_error"] = r.modes_error;
   d["contacts"] = r.contacts;
+  if (bat.hollow()) d["barrel"] = barrel_dict(bat.material.barrel);
   return d;
 }
 
@@ -68,7 +82,7 @@ const std::vector<std::string> impacts_outputs = {
     "bpf",    "contact_time", "collision_time", "u_max",      "peak_force", "impulse",
     "energy_initial", "energy_ball", "energy_bat_translation", "energy_bat_rotation", "energy_vibration",
     "energy_ball_dissipated", "energy_residual", "modes_error", "hoop_frequency", "energy_barrel",
-    "energy_barrel_dissipated"};
+    "energy_barrel_dissipated", "barrel_compression"};
 
 void fill_row(const ImpactResult& r, double* row) {
   const double values[] = {r.vf,
@@ -93,7 +107,8 @@ void fill_row(const ImpactResult& r, double* row) {
                            r.modes_error,
                            r.hoop_frequency,
                            r.energy.barrel,
-                           r.energy.barrel_dissipated};
+                           r.energy.barrel_dissipated,
+                           r.barrel_compression};
   std::copy(std::begin(values), std::end(values), row);
 }
 
@@ -243,7 +258,7 @@ PYBIND11_MODULE(_sweetspot, m) {
       py::gil_scoped_release release;
       r = run_impact(bat, scene);
     }
-    return result_dict(r);
+    return result_dict(r, bat.bat());
   });
   m.def("_impacts", &run_impacts, py::arg("bat"), py::arg("scalars"), py::arg("arrays"), py::arg("threads") = 0);
   m.def("_describe", [](const std::string& name) {

@@ -114,6 +114,7 @@ constexpr OutputSpec outputs[] = {
     {"vf_van_zandt", impact | toy, toy},
     {"bat_speed", impact, 0},
     {"hoop_frequency", bat_kinds, 0},
+    {"barrel_compression", bat_kinds, 0},
     {"bbs", impact, 0},
     {"bbs_linear", impact, 0},
     {"e_eff", ball_kinds, ball_kinds},

@@ -27,6 +27,7 @@ ImpactResult certification_point(const GridPoint& point) {
   r.z = c.z_max;
   r.rig = c.at_max;
   r.hoop_frequency = c.hoop_frequency;
+  r.barrel_compression = c.barrel_compression;
   r.certified = c.pass ? 1 : 0;
   if (!std::isfinite(c.measure)) r.status = CollisionStatus::non_finite, r.message = "the rig's measure is not finite";
   return r;

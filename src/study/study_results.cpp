@@ -61,6 +61,9 @@ const std::map<std::string, Description>& descriptions() {
       {"energy_barrel", {"J", "final energy of the barrel wall's ovaling (hollow barrels)"}},
       {"energy_barrel_dissipated", {"J", "energy dissipated by the barrel wall's damping (its loss factor)"}},
       {"hoop_frequency", {"Hz", "lowest hoop (ovaling) frequency of the struck section's wall; NaN where solid"}},
+      {"barrel_compression",
+       {"N", "force compressing the struck section's barrel by 0.04 in between opposite platens (ASTM F2844 style); "
+             "NaN where solid"}},
       {"mode_energy", {"J", "final energy of each vibrational mode"}},
       {"mode_response", {"1", "response R_n = m psi_n^2 g(omega_n) of each kept vibrational mode"}},
       {"force_response", {"1", "g(omega tau) = |integral of F(t)/impulse exp(i omega t) dt|^2 of the force profile"}},
@@ -138,6 +141,7 @@ double scalar_value(const ImpactResult& r, const std::string& name) {
   if (name == "vf" || name == "bbs") return r.vf;  // the ball's exit speed is the batted-ball speed
   if (name == "bat_speed") return r.bat_speed;
   if (name == "hoop_frequency") return r.hoop_frequency;
+  if (name == "barrel_compression") return r.barrel_compression;
   if (name == "bbs_linear") return r.bbs_linear;
   if (name == "vf_rigid") return r.vf_rigid;
   if (name == "vf_van_zandt") return r.vf_van_zandt;

@@ -14,6 +14,20 @@ namespace sweetspot {
 // & Petersson, "Structure-Borne Sound", table of material loss factors).
 inline constexpr double default_wall_loss_factor = 1e-4;
 
+// How the ball loads a hollow barrel's wall (barrel_wall.hpp): over its contact patch (the
+// default), or at a point (the model before the patch: phi = 1, no other harmonics).
+enum class WallLoad { patch, point };
+
+// The bat file's optional [barrel] table (README "Hollow barrels"): the wall's load, and measured
+// values that calibrate the wall's effective hoop modulus (and, both given, its mode's mass).
+struct BarrelCalibration {
+  WallLoad load = WallLoad::patch;
+  double hoop_frequency = 0;  // Hz, a measured lowest hoop frequency; 0: not given
+  double compression = 0;     // N at 0.04 in (ASTM F2844), a measured barrel compression; 0: not given
+
+  bool calibrated() const { return hoop_frequency > 0 || compression > 0; }
+};
+
 struct Material {
   double density = 0;            // kg/m^3
   double youngs_modulus = 0;     // Pa
@@ -23,6 +37,7 @@ struct Material {
   // wall's hoop (circumferential) modulus may differ: 0 means an isotropic wall (youngs_modulus).
   double hoop_modulus = 0;      // Pa
   double wall_loss_factor = default_wall_loss_factor;  // eta of the wall's ovaling, in [0, 1)
+  BarrelCalibration barrel{};   // the [barrel] table: load and calibration of the wall
 
   double wall_hoop_modulus() const { return hoop_modulus > 0 ? hoop_modulus : youngs_modulus; }
 };

@@ -5,6 +5,7 @@ namespace sweetspot {
 inline constexpr double metres_per_inch = 0.0254;
 inline constexpr double kilograms_per_ounce = 0.028349523125;
 inline constexpr double metres_per_second_per_mph = 0.44704;
+inline constexpr double newtons_per_pound_force = 4.4482216152605;  // lbf: 0.45359237 kg x 9.80665 m/s^2
 
 // The pivot of the swing-weight (MOI) measurement and of the bat-test rig, 6 in from the knob
 // (ASTM F2398; NCAA).

@@ -51,6 +51,14 @@ struct Certification {
   RigMeasures at_max;    // every measure there
   // The lowest hoop frequency of the wall there (barrel_wall.hpp), Hz; NaN for a solid section.
   double hoop_frequency = std::numeric_limits<double>::quiet_NaN();
+  // The same section's barrel compression (ASTM F2844 style, barrel_wall.hpp): N at 0.04 in; NaN
+  // for a solid section. The wall's load there at the peak (phi_2, the other harmonics'
+  // compliance m/N, NaN where no wall), and the bat's [barrel] table (load, calibration).
+  double barrel_compression = std::numeric_limits<double>::quiet_NaN();
+  double barrel_phi = std::numeric_limits<double>::quiet_NaN();
+  double barrel_compliance = std::numeric_limits<double>::quiet_NaN();
+  bool hollow = false;
+  BarrelCalibration barrel;
   // The designer's numbers, exact for the designed shape (design_mass_properties), not summed
   // over slices: mass, MOI about the pivot, drop, length, the largest outer diameter.
   double mass = 0, moi_pivot = 0, drop = 0, length = 0, barrel_diameter = 0;

@@ -47,6 +47,14 @@ struct ImpactResult {
   double bat_speed = 0;       // m/s: the struck point's speed toward the ball at first touch
   // The struck slice's lowest hoop frequency (barrel_wall.hpp), Hz; NaN where it is solid.
   double hoop_frequency = std::numeric_limits<double>::quiet_NaN();
+  // The same section's barrel compression (barrel_wall.hpp, ASTM F2844): N at 0.04 in; NaN where solid.
+  double barrel_compression = std::numeric_limits<double>::quiet_NaN();
+  // A patch-loaded wall (barrel_wall.hpp): the n = 2 mode's patch factor phi_2 and the other
+  // harmonics' compliance (m/N) the collision used, at the effective compression (m) they were
+  // evaluated at. NaN where no wall takes the ball; phi 1 and compliance 0 for a point load.
+  double barrel_phi = std::numeric_limits<double>::quiet_NaN();
+  double barrel_compliance = std::numeric_limits<double>::quiet_NaN();
+  double barrel_compression_eff = std::numeric_limits<double>::quiet_NaN();
   // The rules' linear estimate of vf (batted_ball.hpp), NaN unless the scene asks for it.
   double bbs_linear = std::numeric_limits<double>::quiet_NaN();
   // Exit speeds to compare with vf (physics.md §5), NaN unless the scene asks for them: the rigid
@@ -76,6 +84,11 @@ struct ImpactResult {
 // exceeds balance_limit of the initial energy is marked unbalanced: its step was far too coarse
 // for the pulse, and its numbers are not to be reported as if they were right.
 constexpr double balance_limit = 1e-2;
+// A patch-loaded wall's effective compression over the largest (impact.cpp): the force-weighted
+// mean compression int F u dt / int F dt of a ball on a rigid wall, both branches of its power-law
+// force, (f(a) + e0 f(b)) / (1 + e0) with f(p) = B(1 + 1/(p+1), 1/2) / 2 (0.874 for N2000's ball).
+double mean_compression_fraction(const Ball& ball);
+
 void close_balance(ImpactResult& result);
 
 // The values a result gives only when asked, NaN otherwise (a study may not ask).

@@ -105,6 +105,15 @@ struct SceneGeometry {
   // A hollow struck slice's wall mode (barrel_wall.hpp), the contact's last mode; -1 for none.
   int wall = -1;
   double hoop_frequency = std::numeric_limits<double>::quiet_NaN();  // Hz of the struck slice's wall
+  double barrel_compression = std::numeric_limits<double>::quiet_NaN();  // N at 0.04 in, the same wall's
+  // The wall's point-load shape 1 / sqrt(m_w) and the contact's residual compliance without the
+  // wall's other harmonics: what a patch-loaded wall (impact.cpp) scales and adds to.
+  double wall_point_shape = 0;
+  double beam_compliance = 0;
+  // The patch the collision used (phi_2 and the harmonics' compliance) and the effective
+  // compression it was taken at (NaN for a point load or no wall).
+  PatchLoad wall_patch;
+  double wall_compression = std::numeric_limits<double>::quiet_NaN();
 
   // The shapes of the contact's modes at any point z of the bat (ModalBasis::shapes_at).
   Eigen::VectorXd shapes_at(const ModalBasis& basis, double z) const;
