@@ -192,7 +192,7 @@ TEST_CASE("The energy balance closes with a damped wall, free and pivoted", "[ba
                                           : barrel_scene(z);
         const ImpactResult r = simulate_impact(alloy, scene);
         REQUIRE(r.status == CollisionStatus::ok);
-        CHECK(r.energy.barrel_dissipated > 0);
+        CHECK(r.energy.damped > 0);
         CHECK(std::abs(r.energy.residual) <= 1e-6 * r.energy.initial);
       }
     }
@@ -213,8 +213,8 @@ TEST_CASE("rk4, exact and dopri agree on a damped wall's exit speed and loss", "
   }
   CHECK(r[0].vf == Approx(r[1].vf).epsilon(1e-6));
   CHECK(r[2].vf == Approx(r[1].vf).epsilon(1e-6));
-  CHECK(r[0].energy.barrel_dissipated == Approx(r[1].energy.barrel_dissipated).epsilon(1e-5));
-  CHECK(r[2].energy.barrel_dissipated == Approx(r[1].energy.barrel_dissipated).epsilon(1e-5));
+  CHECK(r[0].energy.damped == Approx(r[1].energy.damped).epsilon(1e-5));
+  CHECK(r[2].energy.damped == Approx(r[1].energy.damped).epsilon(1e-5));
 }
 
 TEST_CASE("More wall damping dissipates more and lowers the rig's BBCOR, slightly", "[barrel][damping]") {
@@ -226,17 +226,17 @@ TEST_CASE("More wall damping dissipates more and lowers the rig's BBCOR, slightl
     // longer outweighs the beam's vibration at eta = 0.01 (BBCOR 0.499), as the point load's did.
     const ImpactResult r = simulate_impact(alloy, rig_scene(RigSettings{Ball{}, 60, rig_pivot, auto_modes, {}}, 0.64));
     REQUIRE(r.status == CollisionStatus::ok);
-    if (eta == 0) CHECK(r.energy.barrel_dissipated == 0);
+    if (eta == 0) CHECK(r.energy.damped == 0);
     if (eta > 0) {
-      CHECK(r.energy.barrel_dissipated > previous_loss);
+      CHECK(r.energy.damped > previous_loss);
       CHECK(r.rig.bbcor < previous_bbcor);
       // Bounded: the wall never holds more than the initial energy, so a'^2 <= 2 E_initial and
       // int 2 zeta w a'^2 dt <= 2 eta w T E_initial over the contact time T. And the trampoline stays.
       const double omega = 2 * std::numbers::pi * r.hoop_frequency;
-      CHECK(r.energy.barrel_dissipated <= 2 * eta * omega * r.contact_time * r.energy.initial);
+      CHECK(r.energy.damped <= 2 * eta * omega * r.contact_time * r.energy.initial);
       CHECK(r.rig.bbcor > Ball{}.e0);
     }
-    previous_bbcor = r.rig.bbcor, previous_loss = r.energy.barrel_dissipated;
+    previous_bbcor = r.rig.bbcor, previous_loss = r.energy.damped;
   }
 }
 

@@ -38,7 +38,7 @@ Json energy_json(const ImpactEnergy& e) {
       .add("vibration", e.vibration)
       .add("ball_dissipated", e.ball_dissipated)
       .add("barrel", e.barrel)
-      .add("barrel_dissipated", e.barrel_dissipated)
+      .add("damped", e.damped)
       .add("residual", e.residual);
 }
 
@@ -100,11 +100,15 @@ void print_text(const ImpactResult& r) {
   if (std::isfinite(r.hoop_frequency)) {  // a hollow struck section: its wall takes a share
     std::printf("                + vibration %.6g + dissipated in the ball %.6g + barrel wall %.6g\n", e.vibration,
                 e.ball_dissipated, e.barrel);
-    std::printf("                + dissipated in the wall %.6g\n", e.barrel_dissipated);
+    std::printf("                + dissipated by the bat's damping %.6g\n", e.damped);
     std::printf("                + residual %.3g; the wall's hoop frequency %.5g Hz\n", e.residual, r.hoop_frequency);
     if (std::isfinite(r.barrel_compression_eff))
       std::printf("wall's load     phi_2 %.5g, other harmonics %.4g m/N, at compression %.4g mm\n", r.barrel_phi,
                   r.barrel_compliance, 1e3 * r.barrel_compression_eff);
+  } else if (e.damped != 0) {  // a damped beam
+    std::printf("                + vibration %.6g + dissipated in the ball %.6g + by the bat's damping %.6g\n",
+                e.vibration, e.ball_dissipated, e.damped);
+    std::printf("                + residual %.3g\n", e.residual);
   } else {
     std::printf("                + vibration %.6g + dissipated in the ball %.6g + residual %.3g\n", e.vibration,
                 e.ball_dissipated, e.residual);

@@ -27,11 +27,13 @@ constexpr std::array<MaterialField, 4> material_fields = {{
     {"shear_coefficient", "", &Material::shear_coefficient},
 }};
 
-// The wall's constants (barrel_wall.hpp), study axes like the others but with rules of their own:
-// a hoop modulus of 0 stands for the isotropic wall (youngs_modulus), a loss factor lies in [0, 1).
-constexpr std::array<MaterialField, 2> wall_fields = {{
+// The wall's constants (barrel_wall.hpp) and the beam's loss factor, study axes like the others
+// but with rules of their own: a hoop modulus of 0 stands for the isotropic wall (youngs_modulus),
+// a loss factor lies in [0, 1).
+constexpr std::array<MaterialField, 3> wall_fields = {{
     {"hoop_modulus", "Pa", &Material::hoop_modulus},
     {"wall_loss_factor", "", &Material::wall_loss_factor},
+    {"loss_factor", "", &Material::loss_factor},
 }};
 
 std::string with_unit(double value, std::string_view unit) {
@@ -51,6 +53,8 @@ std::optional<RuleBreak> wall_material_rule_break(const Material& m) {
                                          " is not a positive, finite number (or 0 for youngs_modulus)"};
   if (!(m.wall_loss_factor >= 0 && m.wall_loss_factor < 1))
     return RuleBreak{"wall_loss_factor", "wall_loss_factor " + format_number(m.wall_loss_factor) + " is not in [0, 1)"};
+  if (!(m.loss_factor >= 0 && m.loss_factor < 1))
+    return RuleBreak{"loss_factor", "loss_factor " + format_number(m.loss_factor) + " is not in [0, 1)"};
   return std::nullopt;
 }
 

@@ -1,5 +1,7 @@
 #include "sweetspot/bat/bat_design_text.hpp"
 
+#include "sweetspot/bat/material_presets.hpp"
+
 #include <cstdio>
 #include <sstream>
 #include <stdexcept>
@@ -50,6 +52,10 @@ std::string bat_design_text(const BatDesign& design, const std::string& comment)
   // modulus; the default loss factor), so that a wooden bat's text is what it always was.
   if (m.hoop_modulus > 0) out << "hoop_modulus = " << exact(m.hoop_modulus) << "  # Pa\n";
   if (m.wall_loss_factor != default_wall_loss_factor) out << "wall_loss_factor = " << exact(m.wall_loss_factor) << "\n";
+  // The beam's loss factor where it is not what an absent key reads as (a preset's, else 0).
+  const MaterialPreset* preset = find_material_preset(design.material_name);
+  if (m.loss_factor != (preset ? preset->material.loss_factor : 0.0))
+    out << "loss_factor = " << exact(m.loss_factor) << "\n";
   out << "\n[dimensions]  # m\n";
   const Dimensions& d = *design.dimensions;
   for (const DimensionField& f : dimension_fields)

@@ -198,7 +198,8 @@ toml::table parse_toml(const fs::path& file, const std::string& text) {
 // The wood's constants as given, or a preset's with any of them given overriding it.
 void read_material(const Section& s, BatDesign& design) {
   s.reject_unknown(
-      {"preset", "density", "youngs_modulus", "shear_modulus", "shear_coefficient", "hoop_modulus", "wall_loss_factor"});
+      {"preset", "density", "youngs_modulus", "shear_modulus", "shear_coefficient", "hoop_modulus", "wall_loss_factor",
+       "loss_factor"});
   if (s.table.contains("preset")) {
     const std::string name = s.text("preset");
     try {
@@ -216,6 +217,7 @@ void read_material(const Section& s, BatDesign& design) {
   // A hollow barrel's wall (barrel_wall.hpp): absent, the hoop modulus is youngs_modulus (0).
   m.hoop_modulus = s.positive("hoop_modulus", "Pa", 0.0);
   m.wall_loss_factor = s.fraction("wall_loss_factor", default_wall_loss_factor);
+  m.loss_factor = s.fraction("loss_factor", m.loss_factor);  // a preset's, else 0
 }
 
 // A measured value of [barrel]: absent 0; given, a finite number in [low, high] (unit).

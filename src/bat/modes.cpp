@@ -137,6 +137,7 @@ ModalBasis compute_modes(const Bat& bat, BeamTheory theory, ModeRequest request)
   if (!request.is_rigid_only()) basis.flexibility = vibrational_flexibility_band(s, mass, basis.vectors.leftCols(2));
   basis.wall = barrel_wall(bat);
   for (const double d : bat.outer_diameter) basis.section_radius.push_back(d / 2);
+  basis.loss_factor = bat.material.loss_factor;
   return basis;
 }
 

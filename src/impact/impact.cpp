@@ -30,7 +30,7 @@ void bat_energies(const ImpactScene& scene, const SceneGeometry& g, const ModalB
     r.energy.vibration += r.mode_energy.back();
   }
   if (g.wall >= 0) r.energy.barrel = c.mode_energy(g.contact, g.wall);
-  r.energy.barrel_dissipated = c.damping_dissipated;  // only the wall is damped
+  r.energy.damped = c.damping_dissipated;  // the beam's modes' and the wall's damping
   if (scene.pivoted) {
     const double arm = basis.z_cm - g.pivot;
     const double translation_share = basis.mass * arm * arm / (basis.moment_of_inertia_cm + basis.mass * arm * arm);
@@ -81,7 +81,7 @@ void close_balance(ImpactResult& r) {
   ImpactEnergy& e = r.energy;
   // The barrel's terms last: 0 for a solid section, so a wooden bat's sum is what it always was.
   e.residual = e.initial - (e.ball + e.bat_translation + e.bat_rotation + e.vibration + e.ball_dissipated + e.barrel +
-                            e.barrel_dissipated);
+                            e.damped);
   if (r.status != CollisionStatus::ok || std::abs(e.residual) <= balance_limit * e.initial) return;  // NaN: not
   char text[200];
   std::snprintf(text, sizeof text,
@@ -114,7 +114,7 @@ const char* first_non_finite(const ImpactResult& r, const AskedValues& asked) {
       {"vf_van_zandt", asked.vf_van_zandt ? r.vf_van_zandt : 0.0},
       {"bbs_linear", asked.bbs_linear ? r.bbs_linear : 0.0},
       {"energy", e.initial + e.ball + e.bat_translation + e.bat_rotation + e.vibration + e.ball_dissipated + e.residual +
-                     e.barrel + e.barrel_dissipated},
+                     e.barrel + e.damped},
   };
   for (const auto& [name, value] : scalars)
     if (!std::isfinite(value)) return name;

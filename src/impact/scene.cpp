@@ -68,6 +68,17 @@ ModalContact constrained_modes(const ModalContact& free, const Eigen::VectorXd& 
   return held;
 }
 
+// The bat's loss factor eta damps every vibrational mode of the struck body, free or held, at
+// zeta = eta / 2: the viscous damping that dissipates a mode's 2 pi eta per cycle at resonance,
+// as the wall's (barrel_wall.hpp; Cremer, Heckl & Petersson, "Structure-Borne Sound", ch. 3). A
+// held bat's modes are damped as modes of their own (its damping in the free modes' coordinates,
+// eta times their frequencies, is not diagonal in the held ones: taken so, the loss per cycle of
+// each is the material's). Rigid motions (omega = 0) are not damped; eta = 0 changes nothing.
+void damp_beam_modes(double loss_factor, ModalContact& c) {
+  if (loss_factor == 0) return;
+  c.damping_ratio = (c.omega.array() > 0).select(Eigen::VectorXd::Constant(c.count(), loss_factor / 2), 0.0);
+}
+
 void validate_history(const HistoryRequest& h, double length) {
   require_positive("history_window", h.window);
   require_positive("history_step", h.step);
@@ -99,9 +110,10 @@ void add_wall_mode(const ImpactScene& scene, const ModalBasis& basis, SceneGeome
   g.wall_point_shape = c.psi(n);
   g.beam_compliance = c.residual_compliance;
   // Its loss factor eta as viscous damping, zeta = eta / 2 (equal loss per cycle at resonance,
-  // barrel_wall.hpp); a lossless wall leaves every mode undamped, the undamped code paths.
-  if (wall->loss_factor > 0) {
-    c.damping_ratio = Eigen::VectorXd::Zero(n + 1);
+  // barrel_wall.hpp); a lossless wall on an undamped beam leaves every mode undamped, the
+  // undamped code paths. The beam's own damping (damp_beam_modes) is kept.
+  if (wall->loss_factor > 0 || c.damping_ratio.size()) {
+    c.damping_ratio.conservativeResizeLike(Eigen::VectorXd::Zero(n + 1));
     c.damping_ratio(n) = wall->loss_factor / 2;
   }
   g.wall = n;
@@ -216,6 +228,7 @@ SceneGeometry scene_geometry(const ImpactScene& scene, const ModalBasis& basis) 
     g.contact = constrained_modes(free, basis.shapes_at(g.pivot)(kept), g.held);
     g.contact.residual_compliance = free.residual_compliance;
   }
+  damp_beam_modes(basis.loss_factor, g.contact);
   add_wall_mode(scene, basis, g);
   return g;
 }

@@ -66,7 +66,7 @@ py::dict result_dict(const ImpactResult& r, const Bat& bat) {
   e["initial"] = r.energy.initial, e["ball"] = r.energy.ball, e["bat_translation"] = r.energy.bat_translation;
   e["bat_rotation"] = r.energy.bat_rotation, e["vibration"] = r.energy.vibration;
   e["ball_dissipated"] = r.energy.ball_dissipated, e["barrel"] = r.energy.barrel,
-  e["barrel_dissipated"] = r.energy.barrel_dissipated, e["residual"] = r.energy.residual;
+  e["damped"] = r.energy.damped, e["residual"] = r.energy.residual;
   d["energy"] = e;
   d["mode_energy"] = array(r.mode_energy);
   d["modes_kept"] = py::array_t<int>(r.modes_kept.size(), r.modes_kept.data());
@@ -82,7 +82,7 @@ const std::vector<std::string> impacts_outputs = {
     "bpf",    "contact_time", "collision_time", "u_max",      "peak_force", "impulse",
     "energy_initial", "energy_ball", "energy_bat_translation", "energy_bat_rotation", "energy_vibration",
     "energy_ball_dissipated", "energy_residual", "modes_error", "hoop_frequency", "energy_barrel",
-    "energy_barrel_dissipated", "barrel_compression"};
+    "energy_damped", "barrel_compression"};
 
 void fill_row(const ImpactResult& r, double* row) {
   const double values[] = {r.vf,
@@ -107,7 +107,7 @@ void fill_row(const ImpactResult& r, double* row) {
                            r.modes_error,
                            r.hoop_frequency,
                            r.energy.barrel,
-                           r.energy.barrel_dissipated,
+                           r.energy.damped,
                            r.barrel_compression};
   std::copy(std::begin(values), std::end(values), row);
 }

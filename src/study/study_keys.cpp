@@ -137,7 +137,7 @@ constexpr OutputSpec outputs[] = {
     {"energy_vibration", impact | toy, toy},
     {"energy_ball_dissipated", ball_kinds, 0},
     {"energy_barrel", impact, 0},
-    {"energy_barrel_dissipated", impact, 0},
+    {"energy_damped", impact, 0},
     {"energy_residual", collision_kinds, 0},
     {"mode_energy", impact, 0},
     {"sweet_spot_z", impact, 0},

@@ -59,7 +59,7 @@ const std::map<std::string, Description>& descriptions() {
       {"energy_ball_dissipated", {"J", "energy dissipated in the ball"}},
       {"energy_residual", {"J", "energy balance residual (integration error)"}},
       {"energy_barrel", {"J", "final energy of the barrel wall's ovaling (hollow barrels)"}},
-      {"energy_barrel_dissipated", {"J", "energy dissipated by the barrel wall's damping (its loss factor)"}},
+      {"energy_damped", {"J", "energy dissipated by the bat's damping (its modes' and its barrel wall's loss factors)"}},
       {"hoop_frequency", {"Hz", "lowest hoop (ovaling) frequency of the struck section's wall; NaN where solid"}},
       {"barrel_compression",
        {"N", "force compressing the struck section's barrel by 0.04 in between opposite platens (ASTM F2844 style); "
@@ -131,7 +131,7 @@ double energy_value(const ImpactEnergy& e, const std::string& name) {
   if (name == "energy_vibration") return e.vibration;
   if (name == "energy_ball_dissipated") return e.ball_dissipated;
   if (name == "energy_barrel") return e.barrel;
-  if (name == "energy_barrel_dissipated") return e.barrel_dissipated;
+  if (name == "energy_damped") return e.damped;
   return e.residual;
 }
 

@@ -37,6 +37,11 @@ struct Material {
   // wall's hoop (circumferential) modulus may differ: 0 means an isotropic wall (youngs_modulus).
   double hoop_modulus = 0;      // Pa
   double wall_loss_factor = default_wall_loss_factor;  // eta of the wall's ovaling, in [0, 1)
+  // The bat's own structural loss factor eta, in [0, 1): every vibrational mode of the beam is
+  // damped at zeta = eta / 2 (README "Damping"). 0, the default of a material given by its
+  // constants (N2000's R161), leaves the beam undamped, bit for bit as before; the wood presets
+  // carry wood's 0.01.
+  double loss_factor = 0;
   BarrelCalibration barrel{};   // the [barrel] table: load and calibration of the wall
 
   double wall_hoop_modulus() const { return hoop_modulus > 0 ? hoop_modulus : youngs_modulus; }

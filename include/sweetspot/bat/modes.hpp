@@ -39,6 +39,8 @@ struct ModalBasis {
   Eigen::MatrixXd flexibility;
   // The barrel wall's hoop mode per slice (barrel_wall.hpp); empty for a solid bat.
   std::vector<WallMode> wall;
+  // The bat's structural loss factor (Material::loss_factor): its vibrational modes' damping.
+  double loss_factor = 0;
   // Outer radius of each slice, m: the surface the ball meets (Ball::curvature_factor).
   std::vector<double> section_radius;
 

@@ -15,7 +15,7 @@
 namespace sweetspot {
 
 // Energies in J. initial = ball + bat_translation + bat_rotation + vibration + ball_dissipated +
-// barrel + barrel_dissipated + residual; the residual measures the integration error.
+// barrel + damped + residual; the residual measures the integration error.
 struct ImpactEnergy {
   double initial = 0;
   double ball = 0;
@@ -27,10 +27,11 @@ struct ImpactEnergy {
   // A hollow barrel's wall (barrel_wall.hpp): the energy its ovaling holds after the collision
   // (0 where the struck slice is solid). It is a normal mode of its own, apart from `vibration`.
   double barrel = 0;
-  // What the wall's damping (its loss factor) dissipated from first touch to the last separation,
-  // the contacts and the free flights between them: int 2 zeta omega a'^2 dt, integrated with
-  // the collision (not inferred from the balance); 0 for a solid section or a lossless wall.
-  double barrel_dissipated = 0;
+  // What the bat's damping (its loss factor's on the beam's vibrational modes, the wall's on its
+  // ovaling) dissipated from first touch to the last separation, the contacts and the free flights
+  // between them: int sum 2 zeta omega a'^2 dt, integrated with the collision (not inferred from
+  // the balance); 0 for an undamped beam with a solid section or a lossless wall.
+  double damped = 0;
 };
 
 struct ImpactResult {
