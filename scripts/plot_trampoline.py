@@ -66,7 +66,7 @@ def main(argv):
         ax.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
         ax.set_xlabel("lowest hoop frequency of the struck barrel (kHz)")
         ax.grid(alpha=0.3)
-    ax_cor.axhline(BBCOR_LIMIT, color="k", ls="--", lw=1, label="BBCOR limit 0.50 (= the ball's e0)")
+    ax_cor.axhline(BBCOR_LIMIT, color="k", ls="--", lw=1, label="BBCOR limit 0.50")
     ax_cor.set_ylabel("BBCOR at its maximum over the barrel")
     ax_cor.set_title("Virtual rig (labels: wall thickness, mm)")
     ax_vf.set_ylabel("peak exit speed along the barrel (m/s)")

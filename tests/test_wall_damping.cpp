@@ -89,10 +89,12 @@ CollisionOptions options_for(Method method) {
   return options;
 }
 
+// The alloy bat with its wall's loss factor eta and its beam undamped: the wall's damping alone.
 BatDesign alloy_with_loss(double eta) {
   BatSource source;
   BatDesign design = load_bat_design(source_path("studies/bats/alloy_bbcor.toml"), source);
   set_design_parameter(design, "wall_loss_factor", eta);
+  set_design_parameter(design, "loss_factor", 0);
   return design;
 }
 
