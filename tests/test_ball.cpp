@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -22,6 +24,8 @@
 #include "sweetspot/impact/bat_test_rig.hpp"
 #include "sweetspot/impact/certification.hpp"
 #include "sweetspot/impact/impact.hpp"
+#include "sweetspot/optimize/problem.hpp"
+#include "sweetspot/study/study.hpp"
 #include "temp_dir.hpp"
 
 using namespace sweetspot;
@@ -209,4 +213,33 @@ TEST_CASE("sweetspot ball runs the standard tests and refuses a ball that is not
   require_refused(run_program("impact --bat " + source_path("studies/bats/r161.toml") +
                               " --z 0.7 --ball-speed 40 --cm-speed 10 --omega 0 --ball nope"),
                   {"--ball: preset = \"nope\""});
+}
+
+TEST_CASE("A [ball] table is the ball of a study's scene, a certification's rig and an optimisation's pitch",
+          "[ball]") {
+  const Ball mlb = preset_ball(find_ball_preset("mlb", "test")).ball;
+  const StudyDir d(3);
+  const Study study = load_study(d.dir.write("s.toml", "[ball]\npreset = \"mlb\"\n[scene]\nbat = \"bats/r161.toml\"\n"
+                                                       "ball_speed = 40\ncm_speed = 10\nomega = 0\n[axes]\n"
+                                                       "z = [0.6, 0.7]\n"));
+  CHECK(study.base.ball.k1 == mlb.k1);
+  CHECK(study.base.ball.cor_slope == mlb.cor_slope);
+  CHECK(study.base.ball.curved_contact);
+  // [scene] keys override the table's values.
+  const Study overridden = load_study(d.dir.write("o.toml", "[ball]\npreset = \"mlb\"\n[scene]\nbat = \"bats/r161.toml\"\n"
+                                                           "ball_speed = 40\ncm_speed = 10\nomega = 0\nz = 0.7\n"
+                                                           "e0 = 0.5\ncor_slope = 0\n"));
+  CHECK(overridden.base.ball.e0 == 0.5);
+  CHECK_FALSE(overridden.base.ball.speed_dependent());
+  // An optimisation's pitched ball: the repository's optimisation file with a [ball] table added.
+  std::ifstream in(source_path("studies/optimize_maple.toml"));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  text.replace(text.find("e0 = 0.5\n"), 9, "");
+  text.replace(text.find("\"bats/maple_271.toml\""), 22, "\"" + source_path("studies/bats/maple_271.toml") + "\"");
+  const auto file = d.dir.write("opt.toml", text + "\n[ball]\npreset = \"mlb\"\n");
+  CHECK(load_optimization(file).player.ball.cor_slope == mlb.cor_slope);
+  require_refused(run_program("run " + d.dir.write("bad.toml", "[ball]\npreset = \"nope\"\n[scene]\nbat = \"bats/r161.toml\"\n"
+                                                              "ball_speed = 40\ncm_speed = 10\nomega = 0\nz = 0.7\n").string() +
+                              " -o " + d / "bad.h5"),
+                  {"bad.toml: [ball]: preset = \"nope\"", "expected one of n2000"});
 }

@@ -39,7 +39,7 @@ void evolve_free(const ModalContact& body, const VectorXd& y, double tau, Vector
       const detail::FreeEvolution e = detail::damped_free_evolution(w, zeta, tau);
       out(2 + i) = e.aa * a + e.av * v;
       out(2 + n + i) = e.va * a + e.vv * v;
-      out(2 + 2 * n) += detail::free_decay_loss(w, a, v, out(2 + i), out(2 + n + i));
+      if (out.size() > 2 + 2 * n) out(2 + 2 * n) += detail::free_decay_loss(w, a, v, out(2 + i), out(2 + n + i));
       continue;
     }
     const double c = std::cos(w * tau), s = std::sin(w * tau);
@@ -122,7 +122,7 @@ template <class Stepper>
 class CollisionRun {
  public:
   CollisionRun(const ModalContact& body, const Ball& ball, double ball_speed, const CollisionOptions& options)
-      : body_(body), ball_(ball), options_(options), state_(body, ball),
+      : body_(body), ball_(ball), options_(options), state_(body, ball, options.damping_loss),
         stepper_(make_stepper(ball_speed)), y_(state_.size()) {
     y_.setZero();
     y_(1) = -ball_speed;
@@ -315,6 +315,7 @@ class CollisionRun {
     result_.a = y_.segment(2, n);
     result_.a_dot = y_.segment(2 + n, n);
     if (const int k = state_.dissipated_index(); k >= 0) result_.damping_dissipated = y_(k);
+    else if (body_.damped()) result_.damping_dissipated = std::nan("");  // not asked
     if (!options_.find_collision_time) result_.collision_time = std::nan("");
     else if (result_.status == CollisionStatus::ok) result_.collision_time = impulse_time(samples_, 0.99);
     if (options_.record_force) result_.force = std::move(samples_);

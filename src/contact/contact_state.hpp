@@ -15,17 +15,17 @@ namespace sweetspot::detail {
 
 class ContactState {
  public:
-  ContactState(const ModalContact& body, const Ball& ball)
-      : body_(body), n_(body.count()), mass_(ball.mass), omega2_(body.omega.array().square()),
+  ContactState(const ModalContact& body, const Ball& ball, bool damping_loss = true)
+      : body_(body), n_(body.count()), mass_(ball.mass), damping_loss_(damping_loss), omega2_(body.omega.array().square()),
         compliance_(body.residual_compliance), mobility_(1 / ball.mass + body.psi.squaredNorm()) {
     for (int i = 0; i < n_; ++i)
       if (body.damping(i) != 0) damped_.push_back({i, 2 * body.damping(i) * body.omega(i)});
   }
 
   int modes() const { return n_; }
-  int size() const { return 2 + 2 * n_ + (damped_.empty() ? 0 : 1); }
-  // The index of the dissipated energy in y, or -1 without damped modes.
-  int dissipated_index() const { return damped_.empty() ? -1 : 2 + 2 * n_; }
+  int size() const { return 2 + 2 * n_ + (dissipated_index() < 0 ? 0 : 1); }
+  // The index of the dissipated energy in y, or -1 without damped modes or when it is not asked.
+  int dissipated_index() const { return damped_.empty() || !damping_loss_ ? -1 : 2 + 2 * n_; }
   // A damped mode and its rate 2 zeta omega (the damping force per unit velocity).
   struct DampedMode {
     int mode;
@@ -119,13 +119,14 @@ class ContactState {
       dy(2 + n_ + d.mode) -= d.rate * v;
       power += d.rate * v * v;
     }
-    dy(2 + 2 * n_) = power;
+    if (damping_loss_) dy(2 + 2 * n_) = power;
   }
 
  private:
   const ModalContact& body_;
   int n_;
   double mass_;
+  bool damping_loss_;
   Eigen::ArrayXd omega2_;
   double compliance_;
   double mobility_;

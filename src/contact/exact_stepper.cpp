@@ -78,18 +78,24 @@ void damped_monomial_responses(double w, double zeta, double tau, const ImpulseR
     return;
   }
   constexpr int terms = 48;  // (w tau)^m / m! < 1e-28 of the leading term by m = 48 at w tau = 4
+  // Only the terms that count: up to where (w tau)^m / m! falls below 1e-20 (fewer for the many
+  // slow modes; 48 at w tau = 4).
+  int used = 2;
+  for (double term = x * x / 2; used < terms && (term > 1e-20 || used <= x); ++used) term *= x / (used + 1);
   double beta[terms] = {0, tau};
-  for (int m = 0; m + 2 < terms; ++m) beta[m + 2] = -2 * sigma * tau * beta[m + 1] - x * x * beta[m];
+  for (int m = 0; m + 2 < used; ++m) beta[m + 2] = -2 * sigma * tau * beta[m + 1] - x * x * beta[m];
+  // 1/n! for n up to the last term's: a table, not a division per term (a damped bat damps every
+  // mode, and this runs for each at every step length a run meets).
+  static const std::array<double, terms + powers + 1> inverse_factorial = [] {
+    std::array<double, terms + powers + 1> t{1};
+    for (std::size_t n = 1; n < t.size(); ++n) t[n] = t[n - 1] / static_cast<double>(n);
+    return t;
+  }();
   double factorial = 1;  // k!
   for (int k = 0; k < powers; ++k) {
     if (k > 0) factorial *= k;
-    double inverse = 1;  // 1 / (k + m + 1)!, from m = 0
-    for (int j = 2; j <= k + 1; ++j) inverse /= j;
     double sum = 0;
-    for (int m = 0; m < terms; ++m) {
-      sum += beta[m] * inverse;
-      inverse /= k + m + 2;
-    }
+    for (int m = 0; m < used; ++m) sum += beta[m] * inverse_factorial[k + m + 1];
     p[k] = factorial * tau_power[k + 1] * sum;
   }
   q[0] = g.g;
@@ -205,24 +211,66 @@ const ModeCoefficients& memoized_coefficients(double w, double h, double past_ra
   return it->second;
 }
 
+// A damped mode's step response and dissipation quadrature, remembered as memoized_coefficients
+// remembers an undamped mode's: a damped bat (Material::loss_factor) damps every vibrational mode,
+// whose closed forms (an exponential, a sine and a cosine at the end and at 8 Gauss nodes) would
+// otherwise be computed anew for every kept set of modes a run meets.
+struct DampedCoefficients {
+  ModeCoefficients end;
+  DampedQuadrature quadrature;  // its `mode` set by the caller; empty when not asked
+};
+
+DampedCoefficients damped_coefficients(double w, double zeta, double h, const Basis& b, bool quadrature) {
+  return {damped_mode_coefficients(w, zeta, h, b), quadrature ? damped_quadrature(0, w, zeta, h, b) : DampedQuadrature{}};
+}
+
+const DampedCoefficients& memoized_damped_coefficients(double w, double zeta, double h, double past_ratio,
+                                                       const Basis& b, bool quadrature) {
+  struct Key {
+    double w, zeta, h, past_ratio;
+    bool quadrature;
+    bool operator==(const Key&) const = default;
+  };
+  struct Hash {
+    std::size_t operator()(const Key& k) const {
+      return (((std::hash<double>()(k.w) * 31 + std::hash<double>()(k.zeta)) * 31 + std::hash<double>()(k.h)) * 31 +
+              std::hash<double>()(k.past_ratio)) * 2 + k.quadrature;
+    }
+  };
+  thread_local std::unordered_map<Key, DampedCoefficients, Hash> memo;
+  if (memo.size() > 20000) memo.clear();  // bounded: about 20 MB per thread
+  const auto [it, inserted] = memo.try_emplace(Key{w, zeta, h, past_ratio, quadrature});
+  if (inserted) it->second = damped_coefficients(w, zeta, h, b, quadrature);
+  return it->second;
+}
+
 }  // namespace
 
 ModeResponse::ModeResponse(const Eigen::ArrayXd& w, const Eigen::ArrayXd& zeta, double step, double ball_mass,
-                           double past, bool memoize)
-    : h(step), past_ratio(past), omega(w), damping(zeta) {
+                           double past, bool memoize, bool with_quadrature)
+    : h(step), past_ratio(past), omega(w), damping(zeta), quadrature(with_quadrature) {
   const int n = static_cast<int>(omega.size());
   c.resize(n), sn.resize(n), w2sn.resize(n), cv.resize(n), d.resize(n, data_count), q.resize(n, data_count);
   const Basis b = interpolant_basis(past_ratio, h);
-  for (int i = 0; i < n; ++i) {
-    const bool damped_mode = damping.size() && damping(i) != 0;
-    const ModeCoefficients computed = damped_mode ? damped_mode_coefficients(omega(i), damping(i), h, b)
-                                      : memoize   ? ModeCoefficients{}
-                                                  : mode_coefficients(omega(i), h, b);
-    const ModeCoefficients& m =
-        memoize && !damped_mode ? memoized_coefficients(omega(i), h, past_ratio, b) : computed;
+  const auto set_mode = [&](int i, const ModeCoefficients& m) {
     c(i) = m[0], sn(i) = m[1], w2sn(i) = m[2], cv(i) = m[3];
     for (int j = 0; j < data_count; ++j) d(i, j) = m[free_count + j], q(i, j) = m[free_count + data_count + j];
-    if (damped_mode) damped.push_back(damped_quadrature(i, omega(i), damping(i), h, b));
+  };
+  for (int i = 0; i < n; ++i) {
+    const bool damped_mode = damping.size() && damping(i) != 0;
+    if (damped_mode) {
+      const DampedCoefficients computed =
+          memoize ? DampedCoefficients{} : damped_coefficients(omega(i), damping(i), h, b, quadrature);
+      const DampedCoefficients& m =
+          memoize ? memoized_damped_coefficients(omega(i), damping(i), h, past_ratio, b, quadrature) : computed;
+      set_mode(i, m.end);
+      if (!quadrature) continue;
+      damped.push_back(m.quadrature);
+      damped.back().mode = i;
+      continue;
+    }
+    const ModeCoefficients computed = memoize ? ModeCoefficients{} : mode_coefficients(omega(i), h, b);
+    set_mode(i, memoize ? memoized_coefficients(omega(i), h, past_ratio, b) : computed);
   }
   const ModeCoefficients ball = mode_coefficients(0, h, b);
   for (int j = 0; j < data_count; ++j) {
@@ -252,7 +300,7 @@ namespace {
 // large.
 std::shared_ptr<const ModeResponse> cached_response(const Eigen::ArrayXd& omega, const Eigen::ArrayXd& damping,
                                                     std::size_t omega_key, double h, double ball_mass,
-                                                    double past_ratio) {
+                                                    double past_ratio, bool quadrature) {
   const std::size_t key = omega_key ^ std::hash<double>()(h) ^ (std::hash<double>()(ball_mass) << 1) ^
                           (std::hash<double>()(past_ratio) << 2);
   thread_local std::unordered_multimap<std::size_t, std::pair<double, std::shared_ptr<const ModeResponse>>> cache;
@@ -261,13 +309,14 @@ std::shared_ptr<const ModeResponse> cached_response(const Eigen::ArrayXd& omega,
     const auto& [mass, response] = it->second;
     if (response->h == h && response->past_ratio == past_ratio && mass == ball_mass &&
         response->omega.size() == omega.size() && (response->omega == omega).all() &&
-        response->damping.size() == damping.size() && (response->damping == damping).all())
+        response->damping.size() == damping.size() && (response->damping == damping).all() &&
+        response->quadrature == quadrature)
       return response;
   }
   thread_local std::size_t stored = 0;  // doubles held: at most about 32 MB per thread
   if (stored > 4'000'000) cache.clear(), stored = 0;
   stored += (free_count + 2 * data_count) * omega.size();
-  auto response = std::make_shared<const ModeResponse>(omega, damping, h, ball_mass, past_ratio, true);
+  auto response = std::make_shared<const ModeResponse>(omega, damping, h, ball_mass, past_ratio, true, quadrature);
   cache.emplace(key, std::make_pair(ball_mass, response));
   return response;
 }
@@ -294,7 +343,9 @@ const StepCoefficients& ExactStepper::coefficients(double h, double past_ratio) 
   for (const StepCoefficients& k : kept_)
     if (k.h() == h && k.past_ratio() == past_ratio) return k;
   kept_.emplace_back(
-      cached_response(state_.body().omega.array(), damping_, omega_key_, h, state_.ball_mass(), past_ratio), psi2_,
+      cached_response(state_.body().omega.array(), damping_, omega_key_, h, state_.ball_mass(), past_ratio,
+                      options_.damping_loss),
+      psi2_,
       state_.compliance());
   return kept_.back();
 }

@@ -45,11 +45,13 @@ struct ModeResponse {
   Eigen::ArrayXd c, sn, w2sn, cv;
   Eigen::ArrayXXd d, q;
   double ball_d[data_count] = {}, ball_q[data_count] = {};  // the ball (omega = 0, times 1/m)
-  std::vector<DampedQuadrature> damped;
+  std::vector<DampedQuadrature> damped;  // empty without `quadrature`
+  bool quadrature = true;
 
   // memoize: take each mode's coefficients from (and add them to) this thread's memory.
+  // quadrature: the damped modes' dissipation quadrature too (CollisionOptions::damping_loss).
   ModeResponse(const Eigen::ArrayXd& omega, const Eigen::ArrayXd& damping, double h, double ball_mass,
-               double past_ratio, bool memoize = false);
+               double past_ratio, bool memoize = false, bool quadrature = true);
 };
 
 // A response with the sums over the contact point's mode shapes that tie the ball's compression

@@ -43,6 +43,7 @@ RigSettings certification_rig(const Standard& standard, const CertifyOptions& op
   rig.ball_speed = options.ball_speed.value_or(standard.ball_speed);
   rig.pivot = options.pivot.value_or(standard.pivot);
   rig.vibrational_modes = options.vibrational_modes;
+  rig.integrator.damping_loss = false;  // the measures need no energy balance
   if (!(rig.ball.e0 > 0 && rig.ball.e0 <= 1)) reject("e0", rig.ball.e0, "a number in (0, 1]");
   if (!(rig.ball_speed > 0) || !std::isfinite(rig.ball_speed))
     reject("ball speed", rig.ball_speed, "a finite speed > 0 (m/s) toward the bat at rest");

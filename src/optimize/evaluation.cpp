@@ -179,7 +179,8 @@ DesignEvaluation evaluate_design(const OptimizationProblem& problem, const std::
       if (problem.constraints[i].quantity != Quantity::measure)
         e.constraints[i] = shape_quantity(problem.constraints[i].quantity, design, exact);
     ImpactScene scene;
-    scene.ball.e0 = problem.player.e0;
+    scene.ball = problem.player.ball;
+    scene.integrator.damping_loss = false;  // the objective is a speed: no energy balance
     scene.ball_speed = problem.player.ball_speed;
     scene.swing = design_swing(problem.player, exact);
     scene.vibrational_modes = problem.model.vibrational_modes;

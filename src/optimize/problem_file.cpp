@@ -4,6 +4,7 @@
 // of their own.
 #include <string>
 
+#include "ball/ball_table.hpp"
 #include "problem_values.hpp"
 #include "sweetspot/input_error.hpp"
 
@@ -116,7 +117,12 @@ Player read_player(const Where& top, const toml::table& doc, OptimizationProblem
   p.swing.omega = required_number(at, t, "omega", finite, "the swing's angular speed (rad/s), finite");
   p.ball_speed = required_number(at, t, "ball_speed", [](double v) { return v >= 0; },
                                  "the pitch's speed toward the bat (m/s), finite and >= 0");
-  p.e0 = number_key(at, t, "e0", 0.5, [](double v) { return v > 0 && v <= 1; }, "a COR in (0, 1]");
+  // The pitched ball: the file's [ball] table (README "Balls"), N2000's without one; e0 sets its COR.
+  if (const toml::node* ball = doc.get("ball")) {
+    if (!ball->is_table()) reject(top.child("ball", *ball), describe(*ball), "expected a table [ball]");
+    p.ball = detail::read_ball_table(*ball->as_table(), top.file->string() + ": [ball]").ball;
+  }
+  p.ball.e0 = number_key(at, t, "e0", p.ball.e0, [](double v) { return v > 0 && v <= 1; }, "a COR in (0, 1]");
   if (!p.equal_effort) {
     for (const char* key : {"reference_bat", "swing_exponent"})
       if (const toml::node* node = t.get(key))
@@ -222,7 +228,7 @@ OptimizationProblem load_optimization(const fs::path& file) {
   problem.text = study_detail::read_text(file, "optimisation file");
   const toml::table doc = study_detail::parse_toml(file, problem.text);
   const Where top{&problem.file, "", 0};
-  reject_unknown(top, doc, {"title", "bat", "free", "player", "model", "objective", "constraints", "optimizer"});
+  reject_unknown(top, doc, {"title", "bat", "free", "player", "model", "objective", "constraints", "optimizer", "ball"});
   problem.title = string_key(top, doc, "title", file.stem().string(), "a title (string)");
   const std::string bat = string_key(top, doc, "bat", "", "the base bat file (its [dimensions] are what is optimised)");
   if (bat.empty()) reject(top.missing("bat"), "", "expected the base bat file (a bat of named [dimensions])");

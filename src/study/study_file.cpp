@@ -65,6 +65,9 @@ Study load_study(const fs::path& file) {
   base.scene.force_response = std::ranges::count(study.outputs, "force_response") > 0;
   base.scene.mode_response = std::ranges::count(study.outputs, "mode_response") > 0;
   base.scene.integrator.find_collision_time = std::ranges::count(study.outputs, "collision_time") > 0;
+  // A damped bat's loss is integrated only for a study that stores energies.
+  base.scene.integrator.damping_loss =
+      std::ranges::any_of(study.outputs, [](const std::string& name) { return name.starts_with("energy_"); });
   base.scene.swing.about_center = s["center"] != nullptr;
   study.base = base.scene;
   study.omega_tau = base.omega_tau;

@@ -99,6 +99,7 @@ struct AskedValues {
   bool vf_van_zandt = false;
   bool bbs_linear = false;
   bool e_a = false;  // a bat was struck: the collision efficiency exists (the wall and toy have none)
+  bool energy = true;  // the energy balance (not asked of a damped bat whose loss is not integrated)
 };
 
 // No NaN or infinite output comes with status ok: an ok result with one (a degenerate pulse, an

@@ -31,7 +31,7 @@ struct Player {
   double reference_moi = 0;  // kg m^2, the reference bat's exact MOI about the knob
   double swing_exponent = 0;
   double ball_speed = 0;     // m/s, the pitch
-  double e0 = 0;             // the ball's COR
+  Ball ball;                 // the pitched ball: the file's [ball] (N2000's by default), [player] e0 over it
 };
 
 enum class ObjectiveKind {
