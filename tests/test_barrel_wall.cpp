@@ -233,7 +233,7 @@ TEST_CASE("The energy balance closes with the wall at default settings", "[barre
   for (const double z : {0.62, 0.7, 0.78}) {
     for (const bool pivoted : {false, true}) {
       ImpactScene scene = barrel_scene(z);
-      if (pivoted) scene = rig_scene(RigSettings{Ball{}, 60, rig_pivot}, z);
+      if (pivoted) scene = rig_scene(RigSettings{Ball{}, 60, rig_pivot, auto_modes, {}}, z);
       const ImpactResult r = simulate_impact(alloy, scene);
       REQUIRE(r.status == CollisionStatus::ok);
       CHECK(r.energy.barrel > 0);

@@ -68,8 +68,8 @@ TEST_CASE("An output path that cannot be written is refused before any work, in 
   s.dir.write("out.h5", "an earlier result");
   struct Case {
     std::string output, expected;
-    std::string in_the_way;  // a directory where a file is written beside the output
-    bool mpi = false;        // tried under mpirun too (a few: each mpirun takes a second)
+    std::string in_the_way = "";  // a directory where a file is written beside the output
+    bool mpi = false;             // tried under mpirun too (a few: each mpirun takes a second)
   };
   const Case cases[] = {
       {s / "existing_dir", "existing_dir: is a directory; expected the name of a file to write", "", true},

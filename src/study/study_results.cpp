@@ -215,7 +215,8 @@ Variable output_variable(const std::string& name, std::vector<std::string> dims,
     std::string meanings;
     for (int k = 0; k <= static_cast<int>(CollisionStatus::failed); ++k) {
       flags.push_back(k);
-      meanings += (k ? " " : "") + std::string(to_string(static_cast<CollisionStatus>(k)));
+      if (k) meanings += ' ';
+      meanings += to_string(static_cast<CollisionStatus>(k));
     }
     v.int_attributes.push_back({"flag_values", flags});
     v.text_attributes.push_back({"flag_meanings", meanings});
