@@ -37,17 +37,6 @@ Json checks_json(const std::vector<RuleCheck>& checks) {
   return Json::array(items);
 }
 
-// A hollow bat's wall: its load and what calibrated it (null where not given).
-Json barrel_json(const Certification& c) {
-  const BarrelCalibration& b = c.barrel;
-  const double nan = std::nan("");
-  return Json::Object()
-      .add("load", std::string(b.load == WallLoad::point ? "point" : "patch"))
-      .add("calibrated", Json::boolean(b.calibrated()))
-      .add("hoop_frequency_measured", b.hoop_frequency > 0 ? b.hoop_frequency : nan)
-      .add("compression_measured", b.compression > 0 ? b.compression : nan);
-}
-
 void print_json(const std::string& ball, const Certification& c) {
   Json::Object out;
   out.add("standard", c.standard.name)
@@ -72,7 +61,7 @@ void print_json(const std::string& ball, const Certification& c) {
       .add("cor_slope", c.standard.ball.cor_slope)
       .add("checks", checks_json(c.checks))
       .add("pass", Json::boolean(c.pass));
-  if (c.hollow) out.add("barrel", barrel_json(c));
+  if (c.hollow) out.add("barrel", barrel_json(c.barrel));
   std::printf("%s\n", Json(out).text().c_str());
 }
 

@@ -42,16 +42,6 @@ Json energy_json(const ImpactEnergy& e) {
       .add("residual", e.residual);
 }
 
-// A hollow bat's [barrel] table as the wall used it: its load, and what calibrated it (null: not given).
-Json barrel_json(const BarrelCalibration& b) {
-  const double nan = std::nan("");
-  return Json::Object()
-      .add("load", std::string(b.load == WallLoad::point ? "point" : "patch"))
-      .add("calibrated", Json::boolean(b.calibrated()))
-      .add("hoop_frequency_measured", b.hoop_frequency > 0 ? b.hoop_frequency : nan)
-      .add("compression_measured", b.compression > 0 ? b.compression : nan);
-}
-
 void print_json(const ImpactResult& r, const Bat& bat) {
   Json::Object out;
   out.add("status", to_string(r.status));
@@ -155,6 +145,16 @@ int parse_modes(const std::string& text) {
   } catch (const std::exception&) {
   }
   throw InputError("--modes " + text + ": expected a number of vibrational modes (0, 1, 2, ...), 'all' or 'auto'");
+}
+
+// A hollow bat's [barrel] table as the wall used it: its load, and what calibrated it (null: not given).
+Json barrel_json(const BarrelCalibration& b) {
+  const double nan = std::nan("");
+  return Json::Object()
+      .add("load", std::string(b.load == WallLoad::point ? "point" : "patch"))
+      .add("calibrated", Json::boolean(b.calibrated()))
+      .add("hoop_frequency_measured", b.hoop_frequency > 0 ? b.hoop_frequency : nan)
+      .add("compression_measured", b.compression > 0 ? b.compression : nan);
 }
 
 void add_ball_options(CLI::App& cmd, Ball& ball, std::string& named_ball) {

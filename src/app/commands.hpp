@@ -2,6 +2,8 @@
 // The program's subcommands. Each adds itself to the command line and runs when chosen.
 #include <CLI/CLI.hpp>
 
+#include "json.hpp"
+#include "sweetspot/bat/bat.hpp"
 #include "sweetspot/contact/ball.hpp"
 #include "sweetspot/contact/collision.hpp"
 
@@ -16,6 +18,10 @@ void add_run_command(CLI::App& app);
 void add_convergence_command(CLI::App& app);
 void add_certify_command(CLI::App& app);
 void add_optimize_command(CLI::App& app);
+
+// A hollow bat's [barrel] table as the wall used it: its load, and what calibrated it (null: not
+// given), in `impact --json` and `certify --json`.
+Json barrel_json(const BarrelCalibration& barrel);
 
 // --modes: a number of vibrational modes, "all" or "auto"; InputError naming --modes otherwise.
 int parse_modes(const std::string& text);
