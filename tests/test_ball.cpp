@@ -236,7 +236,7 @@ TEST_CASE("A [ball] table is the ball of a study's scene, a certification's rig 
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   text.replace(text.find("e0 = 0.5\n"), 9, "");
   const std::string base_bat = source_path("studies/bats/maple_271.toml");  // the file's is relative
-  text.replace(text.find("bats/maple_271.toml"), 19, base_bat);
+  text.replace(text.find("bats/maple_271.toml\"\n"), 19, base_bat);
   const auto file = d.dir.write("opt.toml", text + "\n[ball]\npreset = \"mlb\"\n");
   CHECK(load_optimization(file).player.ball.cor_slope == mlb.cor_slope);
   require_refused(run_program("run " + d.dir.write("bad.toml", "[ball]\npreset = \"nope\"\n[scene]\nbat = \"bats/r161.toml\"\n"
