@@ -210,6 +210,11 @@ TEST_CASE("sweetspot ball runs the standard tests and refuses a ball that is not
   refused("preset = \"mlb\"\nmass = 0\n", {"mass = 0"});
   refused("preset = \"mlb\"\ncolor = \"red\"\n", {"unknown key 'color'"});
   refused("mass = 0.145\nradius = 0.0366\ncor = 0.5\n", {"stiffness one way", "0 given"});
+  refused("", {"b.toml: [ball]: is empty", "preset"});
+  refused("preset = \"mlb\"\na = 0\n", {"a = 0", "positive"});
+  refused("preset = \"mlb\"\nk1 = 0\n", {"k1 = 0", "positive"});
+  // Stiffness that grows a thousandfold with speed: no power law of exponent 1 to 3 does that.
+  refused("preset = \"mlb\"\ndynamic_stiffness = [[20, 1e6], [40, 1e9]]\n", {"exponent a = -1.5", "1 to 3"});
   require_refused(run_program("impact --bat " + source_path("studies/bats/r161.toml") +
                               " --z 0.7 --ball-speed 40 --cm-speed 10 --omega 0 --ball nope"),
                   {"--ball: preset = \"nope\""});

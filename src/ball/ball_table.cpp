@@ -1,6 +1,7 @@
 #include "ball/ball_table.hpp"
 
 #include <array>
+#include <cmath>
 #include <string_view>
 
 #include "sweetspot/ball/ball_presets.hpp"
@@ -49,10 +50,19 @@ std::vector<SpeedValue> speed_values(const toml::table& t, std::string_view valu
   return values;
 }
 
+// A stiffness given replaces the preset's, and the exponent that went with it (refitted or given).
 void clear_stiffness(BallTests& t) {
   t.dynamic_stiffness.clear();
   t.compression_force = 0;
   t.k1 = 0;
+  t.exponent = 0;
+}
+
+// A value that 0 would mean "absent" to the fit must be given as a positive number.
+double positive_number(const toml::table& t, std::string_view key, const std::string& where) {
+  const double x = number(t, key, where);
+  if (!(x > 0) || !std::isfinite(x)) reject(where, key, *t.get(key), "a positive, finite number");
+  return x;
 }
 
 }  // namespace
@@ -67,6 +77,8 @@ BallFit read_ball_table(const toml::table& table, const std::string& where) {
     if (!node.is_string()) reject(where, "preset", node, "a preset's name");
     t = find_ball_preset(node.as_string()->get(), where).tests;
   }
+  if (table.empty())
+    throw InputError(where + ": is empty: expected a preset or the ball's test values (" + join(known_keys) + ")");
   if (table.contains("mass")) t.mass = number(table, "mass", where);
   if (table.contains("radius")) t.radius = number(table, "radius", where);
   if (table.contains("cor")) {
@@ -84,15 +96,15 @@ BallFit read_ball_table(const toml::table& table, const std::string& where) {
     t.stiffness_cylinder_diameter = number(table, "stiffness_cylinder_diameter", where);
   if (table.contains("compression")) {
     clear_stiffness(t);
-    t.compression_force = number(table, "compression", where);
+    t.compression_force = positive_number(table, "compression", where);
   }
   if (table.contains("compression_displacement"))
     t.compression_displacement = number(table, "compression_displacement", where);
   if (table.contains("k1")) {
     clear_stiffness(t);
-    t.k1 = number(table, "k1", where);
+    t.k1 = positive_number(table, "k1", where);
   }
-  if (table.contains("a")) t.exponent = number(table, "a", where);
+  if (table.contains("a")) t.exponent = positive_number(table, "a", where);
   if (table.contains("curved_contact")) {
     const toml::node& node = *table.get("curved_contact");
     if (!node.is_boolean()) reject(where, "curved_contact", node, "true or false");
