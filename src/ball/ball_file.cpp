@@ -8,8 +8,8 @@
 
 namespace sweetspot {
 
-BallFit load_ball(const std::string& preset_or_file) {
-  if (!preset_or_file.ends_with(".toml")) return preset_ball(find_ball_preset(preset_or_file, "--ball"));
+BallFit load_ball(const std::string& preset_or_file, const std::string& option) {
+  if (!preset_or_file.ends_with(".toml")) return preset_ball(find_ball_preset(preset_or_file, option));
   if (!std::filesystem::is_regular_file(preset_or_file))
     throw InputError(preset_or_file + ": no such ball file (expected a preset's name or a TOML file with a [ball] table)");
   toml::table file;

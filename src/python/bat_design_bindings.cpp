@@ -68,7 +68,7 @@ py::dict certification(const BatHandle& b, const std::string& standard, std::opt
                        std::optional<double> ball_speed, std::optional<double> pivot, const py::object& modes,
                        const std::string& theory) {
   CertifyOptions options;
-  if (ball) options.ball = load_ball(*ball).ball;
+  if (ball) options.ball = load_ball(*ball, "ball").ball;
   options.e0 = e0;
   options.ball_speed = ball_speed;
   options.pivot = pivot;

@@ -273,7 +273,7 @@ PYBIND11_MODULE(_sweetspot, m) {
   });
   m.def("_point_arguments", [] { return point_arguments(); });
   m.def("_ball", [](const std::string& name) {
-    const BallFit fit = load_ball(name);
+    const BallFit fit = load_ball(name, "ball");
     const Ball& b = fit.ball;
     py::dict d;  // the fitted ball, as `sweetspot ball --json` states it
     d["mass"] = b.mass, d["radius"] = b.radius, d["k1"] = b.k1, d["a"] = b.a, d["e0"] = b.e0;

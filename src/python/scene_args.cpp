@@ -76,7 +76,7 @@ SceneArgs scene_args(const py::dict& args, const std::set<std::string>& per_poin
     if (!py::isinstance<py::str>(get("ball")))
       throw InputError("ball " + py::str(get("ball")).cast<std::string>() +
                        ": expected a preset's name or a TOML file with a [ball] table");
-    s.ball = load_ball(get("ball").cast<std::string>()).ball;
+    s.ball = load_ball(get("ball").cast<std::string>(), "ball").ball;
   }
   const auto& names = point_arguments();
   for (std::size_t k = 0; k < names.size(); ++k)

@@ -7,7 +7,7 @@
 
 namespace sweetspot {
 
-// Throws InputError naming the file (or the preset list) and what was wrong.
-BallFit load_ball(const std::string& preset_or_file);
+// Throws InputError naming the file (or `option`, the preset list) and what was wrong.
+BallFit load_ball(const std::string& preset_or_file, const std::string& option = "--ball");
 
 }  // namespace sweetspot
