@@ -79,6 +79,65 @@ void damp_beam_modes(double loss_factor, ModalContact& c) {
   c.damping_ratio = (c.omega.array() > 0).select(Eigen::VectorXd::Constant(c.count(), loss_factor / 2), 0.0);
 }
 
+// The bat held at a pivot, over every solved mode: its modes (columns over the free ones, the
+// first the rotation about the pivot) and frequencies. One per basis and pivot, kept per thread:
+// the rig strikes one held bat at every point of its scan.
+struct HeldBasis {
+  Eigen::MatrixXd modes;
+  Eigen::VectorXd omega;
+};
+
+const HeldBasis& held_basis(const ModalBasis& basis, double pivot) {
+  struct Entry {
+    std::size_t key = 0;
+    double pivot = std::nan("");
+    Eigen::VectorXd omega_free;
+    HeldBasis held;
+  };
+  thread_local Entry cache;
+  std::size_t key = static_cast<std::size_t>(basis.count());
+  for (const double w : basis.omega) key = key * 1099511628211ull ^ std::hash<double>()(w);
+  if (cache.key == key && cache.pivot == pivot && cache.omega_free.size() == basis.omega.size() &&
+      (cache.omega_free.array() == basis.omega.array()).all())
+    return cache.held;
+  ModalContact all;
+  all.omega = basis.omega;
+  all.psi = Eigen::VectorXd::Zero(basis.count());
+  all.velocity0 = Eigen::VectorXd::Zero(basis.count());
+  cache.held.omega = constrained_modes(all, basis.shapes_at(pivot), cache.held.modes).omega;
+  cache.key = key, cache.pivot = pivot, cache.omega_free = basis.omega;
+  return cache.held;
+}
+
+// auto on a held bat: the modes are chosen among the held bat's own, whose shapes at the impact
+// point are what the ball excites (choosing among the free bat's and holding those errs up to
+// 80x the estimate on a hollow bat: README "Numerics"). Sets the contact's modes, the held map
+// and the estimate; the dropped held modes' compliance goes into the residual.
+void held_auto_geometry(const ImpactScene& scene, const ModalBasis& basis, SceneGeometry& g) {
+  const HeldBasis& h = held_basis(basis, g.pivot);
+  const int n = static_cast<int>(h.omega.size());
+  const Eigen::VectorXd held_psi = h.modes.transpose() * basis.shapes_at(g.z);
+  // select_modes takes two rigid modes first: the held bat has one, so a still one goes before it.
+  Eigen::VectorXd omega(n + 1), psi(n + 1);
+  omega << 0, h.omega;
+  psi << 0, held_psi;
+  const UnsolvedModes unsolved =
+      basis.complete() ? UnsolvedModes{} : UnsolvedModes{basis.unsolved_compliance_at(g.z), basis.solved_below};
+  const ModeSelection selection = select_modes(omega, psi, scene.ball, scene.ball_speed, g.bat_speed, g.recoil,
+                                               scene.mode_tolerance, unsolved);
+  std::vector<int> held = {0};
+  for (const int i : selection.kept) held.push_back(i - 1), g.modes_kept.push_back(i - 1);
+  g.kept.resize(basis.count());
+  for (int i = 0; i < basis.count(); ++i) g.kept[i] = i;
+  g.held = h.modes(Eigen::placeholders::all, held);
+  const Eigen::VectorXd velocity0 = g.cm_speed * basis.translation + scene.swing.omega * basis.rotation;
+  g.contact.omega = h.omega(held);
+  g.contact.psi = held_psi(held);
+  g.contact.velocity0 = g.held.transpose() * velocity0;
+  g.contact.residual_compliance = selection.residual_compliance;
+  g.modes_error = selection.error_estimate;
+}
+
 void validate_history(const HistoryRequest& h, double length) {
   require_positive("history_window", h.window);
   require_positive("history_step", h.step);
@@ -212,6 +271,13 @@ ModeRequest impact_mode_request(const ImpactScene& scene, const ModalBasis& rigi
 
 SceneGeometry scene_geometry(const ImpactScene& scene, const ModalBasis& basis) {
   SceneGeometry g = rigid_geometry(scene, basis);
+  if (scene.pivoted && scene.vibrational_modes == auto_modes && basis.count() > 2) {
+    held_auto_geometry(scene, basis, g);
+    g.contact.residual_compliance += basis.layout.point(g.z).compliance;  // as below
+    damp_beam_modes(basis.loss_factor, g.contact);
+    add_wall_mode(scene, basis, g);
+    return g;
+  }
   const Swing& swing = scene.swing;
   g.kept = kept_modes(scene, basis, g);
   const std::vector<int>& kept = g.kept;
