@@ -129,7 +129,7 @@ void held_auto_geometry(const ImpactScene& scene, const ModalBasis& basis, Scene
   for (const int i : selection.kept) held.push_back(i - 1), g.modes_kept.push_back(i - 1);
   g.kept.resize(basis.count());
   for (int i = 0; i < basis.count(); ++i) g.kept[i] = i;
-  g.held = h.modes(Eigen::placeholders::all, held);
+  g.held = h.modes(Eigen::all, held);
   const Eigen::VectorXd velocity0 = g.cm_speed * basis.translation + scene.swing.omega * basis.rotation;
   g.contact.omega = h.omega(held);
   g.contact.psi = held_psi(held);
