@@ -249,3 +249,22 @@ TEST_CASE("A [ball] table is the ball of a study's scene, a certification's rig 
                               " -o " + d / "bad.h5"),
                   {"bad.toml: [ball]: preset = \"nope\"", "expected one of n2000"});
 }
+
+TEST_CASE("The README's ball file and ball commands run as written", "[ball]") {
+  std::ifstream in(source_path("README.md"));
+  const std::string readme((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t start = readme.find("```toml\n[ball]\n");
+  REQUIRE(start != std::string::npos);
+  const std::size_t body = start + 8, end = readme.find("```", body);
+  const TempDir dir;
+  const auto file = dir.write("my_ball.toml", readme.substr(body, end - body));
+  for (const std::string& arguments : {std::string("ball mlb"), "ball " + file.string() + " --json"}) {
+    const ProgramRun run = run_program(arguments);
+    INFO(arguments << "\n" << run.output);
+    CHECK(run.exit_code == 0);
+  }
+  // The lab's CORs it gives are reproduced by the model's flat wall at their speeds.
+  const Ball ball = load_ball(file.string()).ball;
+  for (const auto& [speed, cor] : {std::pair{26.8, 0.55}, {40.2, 0.52}, {53.6, 0.49}})
+    CHECK(ball_lab_test(ball, speed, 0, fine()).cor == Approx(cor).margin(1e-3));
+}

@@ -264,9 +264,7 @@ ModeResponse::ModeResponse(const Eigen::ArrayXd& w, const Eigen::ArrayXd& zeta, 
       const DampedCoefficients& m =
           memoize ? memoized_damped_coefficients(omega(i), damping(i), h, past_ratio, b, quadrature) : computed;
       set_mode(i, m.end);
-      if (!quadrature) continue;
-      damped.push_back(m.quadrature);
-      damped.back().mode = i;
+      if (quadrature) damped.push_back(m.quadrature), damped.back().mode = i;
       continue;
     }
     const ModeCoefficients computed = memoize ? ModeCoefficients{} : mode_coefficients(omega(i), h, b);

@@ -88,24 +88,22 @@ struct HeldBasis {
 };
 
 const HeldBasis& held_basis(const ModalBasis& basis, double pivot) {
+  // The bat is known by its frequencies and its modes' shapes at the pivot, all the constraint reads.
   struct Entry {
-    std::size_t key = 0;
-    double pivot = std::nan("");
-    Eigen::VectorXd omega_free;
+    Eigen::VectorXd omega, at_pivot;
     HeldBasis held;
   };
   thread_local Entry cache;
-  std::size_t key = static_cast<std::size_t>(basis.count());
-  for (const double w : basis.omega) key = key * 1099511628211ull ^ std::hash<double>()(w);
-  if (cache.key == key && cache.pivot == pivot && cache.omega_free.size() == basis.omega.size() &&
-      (cache.omega_free.array() == basis.omega.array()).all())
-    return cache.held;
+  const Eigen::VectorXd at_pivot = basis.shapes_at(pivot);
+  const auto same = [](const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+    return a.size() == b.size() && (a.array() == b.array()).all();
+  };
+  if (same(cache.omega, basis.omega) && same(cache.at_pivot, at_pivot)) return cache.held;
   ModalContact all;
   all.omega = basis.omega;
-  all.psi = Eigen::VectorXd::Zero(basis.count());
-  all.velocity0 = Eigen::VectorXd::Zero(basis.count());
-  cache.held.omega = constrained_modes(all, basis.shapes_at(pivot), cache.held.modes).omega;
-  cache.key = key, cache.pivot = pivot, cache.omega_free = basis.omega;
+  all.psi = all.velocity0 = Eigen::VectorXd::Zero(basis.count());
+  cache.held.omega = constrained_modes(all, at_pivot, cache.held.modes).omega;
+  cache.omega = basis.omega, cache.at_pivot = at_pivot;
   return cache.held;
 }
 
@@ -273,27 +271,20 @@ SceneGeometry scene_geometry(const ImpactScene& scene, const ModalBasis& basis) 
   SceneGeometry g = rigid_geometry(scene, basis);
   if (scene.pivoted && scene.vibrational_modes == auto_modes && basis.count() > 2) {
     held_auto_geometry(scene, basis, g);
-    g.contact.residual_compliance += basis.layout.point(g.z).compliance;  // as below
-    damp_beam_modes(basis.loss_factor, g.contact);
-    add_wall_mode(scene, basis, g);
-    return g;
-  }
-  const Swing& swing = scene.swing;
-  g.kept = kept_modes(scene, basis, g);
-  const std::vector<int>& kept = g.kept;
-  ModalContact free;
-  free.omega = basis.omega(kept);
-  free.psi = basis.shapes_at(g.z)(kept);
-  free.velocity0 = g.cm_speed * basis.translation(kept) + swing.omega * basis.rotation(kept);
-  // A flexible bat also yields locally where the ball strikes between the discretisation's nodes
-  // (beam_layout.hpp), in series with the ball like the dropped modes; a rigid bat does not.
-  const double local = scene.vibrational_modes == 0 ? 0.0 : basis.layout.point(g.z).compliance;
-  free.residual_compliance = g.contact.residual_compliance + local;
-  g.contact = free;
-  if (scene.pivoted) {
-    g.contact = constrained_modes(free, basis.shapes_at(g.pivot)(kept), g.held);
+  } else {
+    g.kept = kept_modes(scene, basis, g);
+    const std::vector<int>& kept = g.kept;
+    ModalContact free;
+    free.omega = basis.omega(kept);
+    free.psi = basis.shapes_at(g.z)(kept);
+    free.velocity0 = g.cm_speed * basis.translation(kept) + scene.swing.omega * basis.rotation(kept);
+    free.residual_compliance = g.contact.residual_compliance;
+    g.contact = scene.pivoted ? constrained_modes(free, basis.shapes_at(g.pivot)(kept), g.held) : free;
     g.contact.residual_compliance = free.residual_compliance;
   }
+  // A flexible bat also yields locally where the ball strikes between the discretisation's nodes
+  // (beam_layout.hpp), in series with the ball like the dropped modes; a rigid bat does not.
+  if (scene.vibrational_modes != 0) g.contact.residual_compliance += basis.layout.point(g.z).compliance;
   damp_beam_modes(basis.loss_factor, g.contact);
   add_wall_mode(scene, basis, g);
   return g;
