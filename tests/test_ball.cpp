@@ -250,8 +250,8 @@ TEST_CASE("A [ball] table is the ball of a study's scene, a certification's rig 
                   {"bad.toml: [ball]: preset = \"nope\"", "expected one of n2000"});
 }
 
-TEST_CASE("The README's ball file and ball commands run as written", "[ball]") {
-  std::ifstream in(source_path("README.md"));
+TEST_CASE("The ball file of docs/balls.md gives its lab's CORs", "[ball]") {
+  std::ifstream in(source_path("docs/balls.md"));
   const std::string readme((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::size_t start = readme.find("```toml\n[ball]\n");
   REQUIRE(start != std::string::npos);
