@@ -18,6 +18,7 @@
 #include "sweetspot/impact/certification.hpp"
 #include "sweetspot/impact/formulas.hpp"
 #include "sweetspot/optimize/optimizer.hpp"
+#include "sweetspot/study/journal.hpp"
 #include "temp_dir.hpp"
 
 using namespace sweetspot;
@@ -163,6 +164,21 @@ TEST_CASE("optimize's best design is written as a bat file that reads back as th
   CHECK(design_mass_properties(back).mass == design_mass_properties(design).mass);
 }
 
+TEST_CASE("the best design's bat file reads back whatever control characters its name and comment hold", "[optimize]") {
+  // A title, a path or a bat name may hold any character a TOML string can escape: written raw,
+  // a \r or a NUL would make the file unreadable to every command.
+  TempDir dir;
+  const OptimizationProblem problem = load_optimization(dir.write(
+      "opt.toml", density_problem("", "barrel_diameter = { min = 0.06, max = 0.0667 }\ndensity = { min = 500, max = 900 }")));
+  BatDesign design = design_at(problem, {0.0612345678901234, 712.34567890123456});
+  design.name = std::string("carriage\rreturn, nul ") + '\0' + " and delete \x7f, tab\t";
+  const auto file = dir.write("best.toml", bat_design_text(design, std::string("title with \r and ") + '\0' + "\nsecond line"));
+  BatSource source;
+  const BatDesign back = load_bat_design(file, source);
+  CHECK(back.name == design.name);
+  CHECK(design_mass_properties(back).mass == design_mass_properties(design).mass);
+}
+
 TEST_CASE("optimize writes every evaluation and the best bat, which certify accepts, and refuses a bad file", "[optimize][program]") {
   TempDir dir;
   const auto opt = dir.write("opt.toml", density_problem("[constraints]\nmass = { max = 0.9 }\n"));
@@ -287,6 +303,60 @@ TEST_CASE("optimize killed mid-run resumes to the same best design, and 2 ranks 
                                       "c.attrs['resumed_evaluations'] > 0)\"");
   INFO(same.output);
   CHECK(same.output == "True True\n");
+}
+
+TEST_CASE("a journaled evaluation of another design is dropped with the later ones, and the run goes on", "[optimize][program]") {
+  // A forged record, or a library changed between the kill and the resume: the optimiser asks
+  // another design at that evaluation than the journal holds. The resume says so, computes it and
+  // everything after it anew, and ends where an uninterrupted run ends.
+  TempDir dir;
+  const auto opt = dir.write("opt.toml", density_problem());
+  const ProgramRun whole = run_program("optimize " + opt.string() + " -o " + dir / "whole.h5 --quiet");
+  REQUIRE(whole.exit_code == 0);
+
+  const OptimizationProblem p = load_optimization(opt);
+  const std::size_t width = p.free.size() + 1 + p.constraints.size() + 1;
+  const std::string out = dir / "forged.h5";
+  {
+    Journal journal(Journal::path_for(out), journal_key(p.text, {p.base_source, p.reference_source},
+                                                      static_cast<std::uint64_t>(p.optimizer.max_evaluations), width),
+                    false, [](const double*) { return std::string(); });
+    std::vector<double> row(width, 0.0);
+    row[0] = 2999.5;  // a density inside the bounds that the search does not start from
+    row[p.free.size()] = 1.0;  // an objective; status ok
+    journal.append({0}, row);
+    journal.append({1}, row);
+  }
+  const ProgramRun resumed = run_program("optimize " + opt.string() + " -o " + out + " --resume");
+  INFO(resumed.output);
+  REQUIRE(resumed.exit_code == 0);
+  CHECK(resumed.output.find("evaluation 0 is of another design") != std::string::npos);
+  CHECK(resumed.output.find("2 in all") != std::string::npos);
+  CHECK(read(dir / "forged_best.toml").substr(read(dir / "forged_best.toml").find("\nname")) ==
+        read(dir / "whole_best.toml").substr(read(dir / "whole_best.toml").find("\nname")));
+}
+
+TEST_CASE("a journaled ok evaluation with a NaN constraint is dropped on reading", "[optimize][program]") {
+  TempDir dir;
+  const auto opt = dir.write("opt.toml", density_problem("[constraints]\nmass = { max = 2 }\n"));
+  const OptimizationProblem p = load_optimization(opt);
+  REQUIRE(p.constraints.size() == 1);
+  const std::size_t width = p.free.size() + 1 + p.constraints.size() + 1;
+  const std::string out = dir / "nan.h5";
+  {
+    Journal journal(Journal::path_for(out), journal_key(p.text, {p.base_source, p.reference_source},
+                                                      static_cast<std::uint64_t>(p.optimizer.max_evaluations), width),
+                    false, [](const double*) { return std::string(); });
+    std::vector<double> row(width, 0.0);
+    row[0] = 700;
+    row[p.free.size()] = 30;
+    row[p.free.size() + 1] = std::nan("");
+    journal.append({0}, row);
+  }
+  const ProgramRun resumed = run_program("optimize " + opt.string() + " -o " + out + " --resume");
+  INFO(resumed.output);
+  REQUIRE(resumed.exit_code == 0);
+  CHECK(resumed.output.find("an ok evaluation with a NaN constraint") != std::string::npos);
 }
 
 TEST_CASE("every shipped optimisation loads, and its start design is feasible", "[optimize]") {

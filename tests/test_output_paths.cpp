@@ -3,13 +3,17 @@
 // with exit status 2, and every file already there stays as it was.
 #include <catch2/catch.hpp>
 
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <csignal>
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "program.hpp"
+#include "sweetspot/study/output_lock.hpp"
 #include "study_dir.hpp"
 
 namespace fs = std::filesystem;
@@ -89,8 +93,8 @@ TEST_CASE("An output path that cannot be written is refused before any work, in 
     const auto before = s.snapshot();
     for (const std::string command : {"run", "convergence --quick"}) {
       for (const bool mpi : {false, true}) {
-        // Only `run` keeps a journal and a lock beside its output.
-        const bool run_only = !c.in_the_way.empty() && c.in_the_way != "out.h5.tmp";
+        // Only `run` keeps a journal beside its output; both take the lock.
+        const bool run_only = !c.in_the_way.empty() && c.in_the_way != "out.h5.tmp" && c.in_the_way != "out.h5.lock";
         if ((mpi || run_only) && command != "run") continue;
         if (mpi && !c.mpi) continue;
         const std::string arguments = command + " " + s.study.string() + " -o " + c.output;
@@ -121,4 +125,36 @@ TEST_CASE("An output in a directory the program cannot write in is refused befor
                       "cannot create files in directory '" + directory + "'");
   CHECK(s.snapshot() == before);
   if (::geteuid() != 0) fs::permissions(s.dir.path / "read_only", fs::perms::owner_all);
+}
+
+TEST_CASE("convergence takes the output's lock as run does: neither can overwrite the other's file",
+          "[run][output]") {
+  // Held by a child of this process (a POSIX lock is released when its holder closes any descriptor
+  // of the file, as reading it for a snapshot would): the program finds the lock taken, names the
+  // holder, and touches nothing.
+  StudyDir s;
+  s.dir.write("out.h5", "an earlier result");
+  int ready[2];
+  REQUIRE(::pipe(ready) == 0);
+  const pid_t holder = ::fork();
+  REQUIRE(holder >= 0);
+  if (holder == 0) {
+    const sweetspot::OutputLock lock(s / "out.h5");
+    const char byte = 1;
+    if (::write(ready[1], &byte, 1) != 1) ::_exit(1);
+    ::pause();  // until the test kills it
+  }
+  char byte = 0;
+  REQUIRE(::read(ready[0], &byte, 1) == 1);
+  const auto before = s.snapshot();
+  for (const std::string command : {"run", "convergence --quick"}) {
+    const std::string arguments = command + " " + s.study.string() + " -o " + (s / "out.h5");
+    INFO(arguments);
+    require_refused(run_program(arguments), "another sweetspot run (process " + std::to_string(holder) + ")");
+    CHECK(s.snapshot() == before);
+  }
+  ::kill(holder, SIGKILL);
+  ::waitpid(holder, nullptr, 0);
+  ::close(ready[0]);
+  ::close(ready[1]);
 }

@@ -156,3 +156,35 @@ TEST_CASE("Bad knot profiles are refused naming the file, the line or key, the v
                   {"bat.toml", "interpolation", "one diameter per slice", "z_m"});
   require_refused(write_bat(dir, "", "z_center_m,z_m,outer_diameter_m\n0.4,0.4,0.03\n"), {"both"});
 }
+
+TEST_CASE("A pchip profile whose bore crosses the outside between knots is refused, naming the knots", "[profile][bat_file]") {
+  // Inside every knot the wall is 0.1 mm, but the two curves bend apart: pchip's outer curve rises
+  // later than its inner one between the second and third knots.
+  TempDir dir;
+  const std::string csv = "z_m,outer_diameter_m,inner_diameter_m\n0,0.03,0\n0.4,0.03,0.0299\n0.5,0.06,0.0599\n0.84,0.06,0.0599\n";
+  const Profile crossing{Interpolation::pchip, {0, 0.4, 0.5, 0.84}, {0.03, 0.03, 0.06, 0.06}, {0, 0.0299, 0.0599, 0.0599}};
+  const ThinnestWall thinnest = thinnest_wall(crossing);
+  REQUIRE(thinnest.wall < 0);
+  // The minimum found is the curve's: no sample of a fine scan of the interval lies below it.
+  for (int k = 0; k <= 10000; ++k) {
+    const double z = 0.4 + 0.1 * k / 10000;
+    CHECK(crossing.diameter(z) - crossing.diameter(z, true) >= thinnest.wall - 1e-15);
+  }
+  CHECK(thinnest.z > 0.4);
+  CHECK(thinnest.z < 0.5);
+  require_refused(write_bat(dir, "interpolation = \"pchip\"\n", csv),
+                  {"profile.csv: lines 3-4", "pchip", "inner diameter reaches the outer", "expected a wall everywhere"});
+  // Linear between the same knots keeps the wall the knots give.
+  CHECK(load_bat(write_bat(dir, "interpolation = \"linear\"\n", csv)).slices() == 84);
+  Profile kept = crossing;
+  kept.interpolation = Interpolation::linear;
+  CHECK(thinnest_wall(kept).wall == Approx(0.0001));
+}
+
+TEST_CASE("A comment after a profile row's values is a comment", "[profile][bat_file]") {
+  TempDir plain, commented;
+  const Bat a = load_bat(write_bat(plain, "", "z_m,outer_diameter_m\n0,0.05\n0.2,0.025\n0.84,0.065\n"));
+  const Bat b = load_bat(write_bat(commented, "", "z_m,outer_diameter_m  # knots\n0,0.05 # knob\n0.2,0.025\t# handle\n0.84,0.065#end\n"));
+  CHECK(a.outer_diameter == b.outer_diameter);
+  CHECK(a.section_area == b.section_area);
+}

@@ -11,6 +11,7 @@
 #include "sweetspot/study/convergence.hpp"
 #include "sweetspot/study/dataset.hpp"
 #include "sweetspot/input_error.hpp"
+#include "sweetspot/study/output_lock.hpp"
 #include "sweetspot/study/output_paths.hpp"
 
 namespace sweetspot::app {
@@ -78,7 +79,10 @@ void run(const ConvergenceCommandOptions& o) {
                      "\": convergence needs a study of kind \"impact\" (a ball on a bat)");
   const std::filesystem::path out =
       o.output_given ? o.output : std::filesystem::path(o.study).stem().string() + "_convergence.h5";
-  check_output_paths(out, {dataset_temporary_path(out)}, study_inputs(study));  // before any work
+  // Before any work, and held to the end: a run or another convergence writing the same output
+  // would share its temporary file.
+  check_output_paths(out, {dataset_temporary_path(out), OutputLock::path_for(out)}, study_inputs(study));
+  const OutputLock lock(out);
   const GridPoint point = grid_point(study, 0);
   if (!study.axes.empty())
     spdlog::info("{} has {} grid points: using grid point 0 ({})", o.study, study.points(),

@@ -17,18 +17,35 @@ std::string exact(double x) {
   return text;
 }
 
+// A control character as TOML writes it in a basic string: TOML allows none of them raw (tab
+// aside), so a name or title holding a \r or a NUL would make the whole file unreadable.
+bool is_control(char c) { return (static_cast<unsigned char>(c) < 0x20 && c != '\t') || c == 0x7f; }
+
+std::string escaped_control(char c) {
+  char text[8];
+  std::snprintf(text, sizeof text, "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(c)));
+  return text;
+}
+
 // A TOML basic string.
 std::string quoted(const std::string& text) {
   std::string out = "\"";
   for (const char c : text) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (c == '\n') {
+    if (c == '"' || c == '\\')
+      out += std::string("\\") + c;
+    else if (c == '\n')
       out += "\\n";
-      continue;
-    }
-    out += c;
+    else
+      out += is_control(c) ? escaped_control(c) : std::string(1, c);
   }
   return out + "\"";
+}
+
+// A comment line: its control characters shown as escapes, which a comment may hold.
+std::string comment_line(const std::string& line) {
+  std::string out;
+  for (const char c : line) out += is_control(c) ? escaped_control(c) : std::string(1, c);
+  return out;
 }
 
 }  // namespace
@@ -37,7 +54,7 @@ std::string bat_design_text(const BatDesign& design, const std::string& comment)
   if (!design.dimensions) throw std::invalid_argument("bat_design_text: the design has no [dimensions] to write");
   std::ostringstream out;
   std::istringstream lines(comment);
-  for (std::string line; std::getline(lines, line);) out << "# " << line << "\n";
+  for (std::string line; std::getline(lines, line);) out << "# " << comment_line(line) << "\n";
   out << "name = " << quoted(design.name) << "\n";
   out << "length = " << exact(design.length) << "  # m\n";
   if (design.slices) out << "slices = " << *design.slices << "\n";

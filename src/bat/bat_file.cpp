@@ -420,6 +420,19 @@ void check_knots(const fs::path& file, const std::vector<Row>& rows, double leng
                                         " m (its length)");
 }
 
+// A hollow knot profile keeps a wall between its knots, not only at them (pchip interpolates the
+// two diameters apart).
+void check_wall_between_knots(const fs::path& file, const std::vector<Row>& rows, const Profile& profile) {
+  const ThinnestWall thinnest = thinnest_wall(profile);
+  if (thinnest.wall > 0) return;
+  const Row &from = rows[thinnest.interval], &to = rows[thinnest.interval + 1];
+  fail(file.string() + ": lines " + std::to_string(from.line) + "-" + std::to_string(to.line),
+       std::string("with interpolation '") + to_string(profile.interpolation) +
+           "' the inner diameter reaches the outer between these knots (wall " + format_number(thinnest.wall) +
+           " m at z = " + format_number(thinnest.z) +
+           " m); expected a wall everywhere: interpolation 'linear', or knots that keep the bore inside");
+}
+
 ProfileOptions read_profile_options(const Section& top) {
   ProfileOptions o;
   o.interpolation_where = top.where("interpolation");
@@ -443,10 +456,12 @@ void read_profile(const fs::path& file, const std::string& text, const ProfileOp
   // Spreadsheets often save CSV with a UTF-8 byte-order mark; it is not part of the header.
   for (std::size_t start = text.starts_with("\xEF\xBB\xBF") ? 3 : 0; start < text.size();) {
     const std::size_t end = std::min(text.find('\n', start), text.size());
-    const std::string_view content = trim(std::string_view(text).substr(start, end - start));
+    // '#' starts a comment, on a line of its own or after a row's values.
+    const std::string_view line = std::string_view(text).substr(start, end - start);
+    const std::string_view content = trim(line.substr(0, line.find('#')));
     start = end + 1;
     ++number;
-    if (content.empty() || content.starts_with('#')) continue;
+    if (content.empty()) continue;
     if (!columns)
       columns = read_header(file, number, content);
     else if (rows.size() == static_cast<std::size_t>(max_slices))
@@ -478,6 +493,7 @@ void read_profile(const fs::path& file, const std::string& text, const ProfileOp
   }
   check_knots(file, rows, design.length);
   profile.interpolation = options.interpolation.value_or(Interpolation::linear);
+  if (!profile.inner.empty()) check_wall_between_knots(file, rows, profile);
 }
 
 // The profile is named relative to the bat file, so a study directory can be moved whole; a bat

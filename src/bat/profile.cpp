@@ -183,6 +183,47 @@ MassProperties mass_properties(const Profile& profile, double length, double den
   return p;
 }
 
+namespace {
+
+// The smallest value over [0, 1] of the cubic through f(0), f(1/3), f(2/3), f(1), and where: at an
+// end or where its slope vanishes. Exact for pchip's difference of two cubic pieces.
+std::pair<double, double> cubic_minimum(const std::array<double, 4>& f) {
+  const double b = (-11 * f[0] + 18 * f[1] - 9 * f[2] + 2 * f[3]) / 2;
+  const double c = (18 * f[0] - 45 * f[1] + 36 * f[2] - 9 * f[3]) / 2;
+  const double d = (-9 * f[0] + 27 * f[1] - 27 * f[2] + 9 * f[3]) / 2;
+  const auto at = [&](double t) { return f[0] + t * (b + t * (c + t * d)); };
+  std::pair<double, double> best = f[0] <= f[3] ? std::pair{f[0], 0.0} : std::pair{f[3], 1.0};
+  std::vector<double> stationary;  // roots of b + 2 c t + 3 d t^2
+  if (std::abs(d) > 1e-300) {
+    const double disc = c * c - 3 * b * d;
+    if (disc >= 0)
+      for (const double sign : {-1.0, 1.0}) stationary.push_back((-c + sign * std::sqrt(disc)) / (3 * d));
+  } else if (std::abs(c) > 1e-300) {
+    stationary.push_back(-b / (2 * c));
+  }
+  for (const double t : stationary)
+    if (t > 0 && t < 1 && at(t) < best.first) best = {at(t), t};
+  return best;
+}
+
+}  // namespace
+
+ThinnestWall thinnest_wall(const Profile& profile) {
+  ThinnestWall thinnest{0, profile.z.front(), profile.outer.front() - profile.inner.front()};
+  const auto wall = [&](double z) { return profile.diameter(z) - profile.diameter(z, true); };
+  for (std::size_t i = 0; i + 1 < profile.z.size(); ++i) {
+    const double a = profile.z[i], h = profile.z[i + 1] - a;
+    if (h <= 0) continue;  // a step: both sides are knots of their own intervals
+    // Lines (linear, stepped) are thinnest at their knots; the cubic's ends are the knots too.
+    std::pair<double, double> least = {profile.outer[i + 1] - profile.inner[i + 1], 1.0};
+    if (profile.outer[i] - profile.inner[i] < least.first) least = {profile.outer[i] - profile.inner[i], 0.0};
+    if (profile.interpolation == Interpolation::pchip)
+      least = cubic_minimum({wall(a), wall(a + h / 3), wall(a + 2 * h / 3), wall(a + h)});
+    if (least.first < thinnest.wall) thinnest = {i, a + least.second * h, least.first};
+  }
+  return thinnest;
+}
+
 const char* to_string(Interpolation interpolation) {
   switch (interpolation) {
     case Interpolation::stepped: return "stepped";

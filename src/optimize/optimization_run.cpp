@@ -4,6 +4,7 @@
 #include <omp.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -57,6 +58,8 @@ std::string row_problem(const OptimizationProblem& p, const double* row) {
   const double status = row[n + 1 + m];
   if (status != 0 && status != 1) return "an unknown status";
   if (status == 0 && !std::isfinite(row[n])) return "an ok evaluation without an objective";
+  for (std::size_t j = 0; j < m; ++j)
+    if (status == 0 && std::isnan(row[n + 1 + j])) return "an ok evaluation with a NaN constraint";
   return "";
 }
 
@@ -143,13 +146,13 @@ class JournaledEvaluator {
     const std::optional<DesignEvaluation>& old = recovered_.at(index);
     if (old && std::memcmp(old->x.data(), x.data(), x.size() * sizeof(double)) == 0) {
       ++resumed_;
+      keep(index, *old);
       return *old;
     }
-    if (old)
-      throw std::runtime_error("the journal's evaluation " + std::to_string(index) +
-                               " is of another design than this run asks: the optimiser did not repeat its path");
+    if (old) forget_from(index);
     DesignEvaluation e = evaluate_everywhere(problem_, x);
     journal_.append({index}, to_row(e));
+    keep(index, e);
     log(index, e);
     return e;
   }
@@ -167,9 +170,30 @@ class JournaledEvaluator {
     if (verbosity_ == Verbosity::verbose || index % 25 == 0) spdlog::info("{}", what);
   }
 
+  void keep(std::size_t index, const DesignEvaluation& e) {
+    kept_points_.push_back(index);
+    const std::vector<double> row = to_row(e);
+    kept_rows_.insert(kept_rows_.end(), row.begin(), row.end());
+  }
+
+  // The optimiser asked another design than the journal's at `index` (a forged or damaged record,
+  // or a library that changed between the kill and the resume): that record and every later one
+  // belong to another path. They are dropped, from memory and from the journal, and computed anew.
+  void forget_from(std::size_t index) {
+    std::size_t dropped = 0;
+    for (std::size_t k = index; k < recovered_.size(); ++k) dropped += recovered_[k].has_value();
+    std::fill(recovered_.begin() + static_cast<std::ptrdiff_t>(index), recovered_.end(), std::nullopt);
+    journal_.rewrite(kept_points_, kept_rows_);
+    spdlog::warn("the journal's evaluation {} is of another design than this run asks (the optimiser did not "
+                 "repeat its path): it and the later journaled evaluations, {} in all, are dropped and computed again",
+                 index, dropped);
+  }
+
   const OptimizationProblem& problem_;
   Journal& journal_;
   Verbosity verbosity_;
+  std::vector<std::uint64_t> kept_points_;  // what the journal must hold: every evaluation served so far
+  std::vector<double> kept_rows_;
   std::vector<std::optional<DesignEvaluation>> recovered_;
   std::size_t asked_ = 0;
   int resumed_ = 0;

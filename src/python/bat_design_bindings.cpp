@@ -48,6 +48,14 @@ Profile knot_profile(const std::vector<double>& z, const std::vector<double>& ou
   p.z = z;
   p.outer = outer;
   if (inner) p.inner = *inner;
+  if (inner) {
+    const ThinnestWall thinnest = thinnest_wall(p);
+    if (thinnest.wall <= 0)
+      throw InputError("knots " + std::to_string(thinnest.interval) + " and " + std::to_string(thinnest.interval + 1) +
+                       ": with interpolation '" + interpolation + "' the inner diameter reaches the outer between them (wall " +
+                       std::to_string(thinnest.wall) + " m at z = " + std::to_string(thinnest.z) +
+                       " m); expected a wall everywhere: interpolation 'linear', or knots that keep the bore inside");
+  }
   return p;
 }
 

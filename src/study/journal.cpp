@@ -92,6 +92,16 @@ Journal::Journal(const fs::path& path, const JournalKey& key, bool resume, const
                      " bytes) is there; expected --resume to keep its finished points, or delete it to start afresh");
   if (exists) read_existing(check);
   // Rewrite the journal with what was kept: a torn or damaged tail must not stay before new records.
+  write_fresh(recovered_points_, recovered_values_);
+}
+
+void Journal::rewrite(const std::vector<std::uint64_t>& points, const std::vector<double>& values) {
+  if (fd_ >= 0) ::close(fd_);
+  fd_ = -1;
+  write_fresh(points, values);
+}
+
+void Journal::write_fresh(const std::vector<std::uint64_t>& points, const std::vector<double>& values) {
   const fs::path fresh = rewrite_path(path_);
   fd_ = ::open(fresh.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd_ < 0) throw std::runtime_error(fresh.string() + ": cannot create the journal: " + std::strerror(errno));
@@ -102,7 +112,7 @@ Journal::Journal(const fs::path& path, const JournalKey& key, bool resume, const
   const std::uint64_t sum = Checksum().add(header.data(), header_size - sizeof sum).value;
   std::memcpy(header.data() + header_size - sizeof sum, &sum, sizeof sum);
   write_all(fd_, header.data(), header.size(), fresh);
-  if (!recovered_points_.empty()) append(recovered_points_, recovered_values_);
+  if (!points.empty()) append(points, values);
   ::fsync(fd_);
   fs::rename(fresh, path_);
 }

@@ -41,6 +41,15 @@ void cut_into_slices(const Profile& profile, int slices, Bat& bat);
 // MOI about the CM, each cross-section's own rotary inertia included.
 MassProperties mass_properties(const Profile& profile, double length, double density);
 
+// Where a hollow profile's wall (outer less inner diameter) is thinnest, over the knots and between
+// them: the knot interval it lies in (0: between knots 0 and 1) and its z. A pchip profile's two
+// curves are interpolated apart, so a wall positive at every knot can still cross between them.
+struct ThinnestWall {
+  std::size_t interval = 0;
+  double z = 0, wall = 0;
+};
+ThinnestWall thinnest_wall(const Profile& profile);  // the profile must be hollow
+
 const char* to_string(Interpolation interpolation);
 // Throws InputError for anything but "stepped", "linear" or "pchip".
 Interpolation parse_interpolation(const std::string& text);

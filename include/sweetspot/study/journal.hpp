@@ -67,6 +67,9 @@ class Journal {
 
   // Appends finished points: values holds width values per point, in the order of `points`.
   void append(const std::vector<std::uint64_t>& points, const std::vector<double>& values);
+  // Replaces the journal by one holding just these points (width values each): for a run that
+  // finds a recovered record it cannot use, so that the records after it are not kept twice.
+  void rewrite(const std::vector<std::uint64_t>& points, const std::vector<double>& values);
   // Removes the journal once the dataset is safely written.
   void remove();
 
@@ -78,6 +81,7 @@ class Journal {
 
  private:
   void read_existing(const RowCheck& check);
+  void write_fresh(const std::vector<std::uint64_t>& points, const std::vector<double>& values);
   std::filesystem::path path_;
   JournalKey key_;
   int fd_ = -1;
