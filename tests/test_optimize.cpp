@@ -359,6 +359,15 @@ TEST_CASE("a journaled ok evaluation with a NaN constraint is dropped on reading
   CHECK(resumed.output.find("an ok evaluation with a NaN constraint") != std::string::npos);
 }
 
+TEST_CASE("optimize refuses an output name too long for its journal or best bat file", "[optimize][program]") {
+  TempDir dir;
+  const auto opt = dir.write("opt.toml", density_problem());
+  const ProgramRun run = run_program("optimize " + opt.string() + " -o " + dir / (std::string(242, 'o') + ".h5"));
+  INFO(run.output);
+  CHECK(run.exit_code == 2);
+  CHECK(run.output.find("bytes long, over the 255 its file system allows") != std::string::npos);
+}
+
 TEST_CASE("every shipped optimisation loads, and its start design is feasible", "[optimize]") {
   int found = 0;
   for (const auto& entry : std::filesystem::directory_iterator(source_path("studies"))) {

@@ -158,3 +158,17 @@ TEST_CASE("convergence takes the output's lock as run does: neither can overwrit
   ::close(ready[0]);
   ::close(ready[1]);
 }
+
+TEST_CASE("An output name too long for what is written beside it is refused before any work", "[run][output]") {
+  // Each name fits the file system's 255 bytes, what is written beside it does not: `run`'s
+  // "NAME.journal.new", convergence's "NAME.lock". Refused in one line, not an MPI_ABORT later.
+  StudyDir s;
+  const auto before = s.snapshot();
+  for (const auto& [command, name] : {std::pair<std::string, std::string>{"run", std::string(242, 'o') + ".h5"},
+                                      {"convergence --quick", std::string(248, 'o') + ".h5"}}) {
+    const std::string arguments = command + " " + s.study.string() + " -o " + (s / name);
+    INFO(arguments);
+    require_refused(run_program(arguments), "bytes long, over the 255 its file system allows");
+    CHECK(s.snapshot() == before);
+  }
+}

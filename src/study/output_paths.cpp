@@ -70,6 +70,18 @@ void check_not_an_input(const fs::path& written, const std::vector<fs::path>& in
   }
 }
 
+// Every file the run writes must have a name the directory's file system can hold: a name that
+// fits for the output can be too long once ".journal.new" is added, which would fail mid-run.
+void check_name_length(const fs::path& output, const fs::path& file) {
+  const fs::path directory = file.has_parent_path() ? file.parent_path() : fs::path(".");
+  const long limit = ::pathconf(directory.c_str(), _PC_NAME_MAX);
+  const std::size_t length = file.filename().string().size();
+  if (limit > 0 && length > static_cast<std::size_t>(limit))
+    refuse(output, "the name " + quoted(file.filename()) + " that sweetspot writes beside it is " + std::to_string(length) +
+                       " bytes long, over the " + std::to_string(limit) +
+                       " its file system allows; expected a shorter output name");
+}
+
 }  // namespace
 
 std::vector<fs::path> study_inputs(const Study& study) {
@@ -92,6 +104,8 @@ void check_output_paths(const fs::path& output, const std::vector<fs::path>& bes
   if (fs::exists(status) && !fs::is_regular_file(status))
     refuse(output, "exists and is not a regular file; expected the name of a file to write");
   check_directory(output);
+  check_name_length(output, output);
+  for (const fs::path& file : beside) check_name_length(output, file);
   for (const fs::path& file : beside) {
     const fs::file_status s = status_of(file);
     if (fs::exists(s) && !fs::is_regular_file(s))
