@@ -87,3 +87,15 @@ TEST_CASE("A certification study runs into a dataset and refuses what does not b
                                                    "[output]\nvariables = [\"vf\"]\n")),
              Catch::Contains("does not apply to kind \"certification\""));
 }
+
+TEST_CASE("A certification study refuses a bat too short for the rig before any work, as certify does", "[certification]") {
+  // 0.4 m: the scan starts 12 in (0.3048 m) from the end, before the 6-in pivot.
+  const StudyDir d(3);
+  d.dir.write("short.csv", "z_m,outer_diameter_m\n0,0.03\n0.4,0.06\n");
+  d.dir.write("short.toml", "name = \"short\"\nlength = 0.4\nprofile = \"short.csv\"\n[material]\npreset = \"maple\"\n");
+  const auto study = d.dir.write("short_rig.toml", "kind = \"certification\"\n[axes]\nbat = [\"bats/r161.toml\", \"short.toml\"]\n");
+  CHECK_THAT(study_refusal(study), Catch::Contains("short_rig.toml") && Catch::Contains("short (short.toml) (0.4 m)") &&
+                                       Catch::Contains("a bat longer than 0.4572 m") && Catch::Contains("pivot"));
+  const ProgramRun certify = run_program("certify " + d / "short.toml");
+  CHECK(certify.exit_code == 2);
+}

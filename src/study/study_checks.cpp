@@ -4,7 +4,9 @@
 
 #include "study_settings.hpp"
 #include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/impact/certification.hpp"
 #include "sweetspot/impact/n2000_settings.hpp"
+#include "sweetspot/impact/standards.hpp"
 #include "sweetspot/input_error.hpp"
 #include "toml_values.hpp"
 
@@ -284,6 +286,20 @@ void check_rk4_stability(const Settings& s, const Where& top, const std::vector<
       }
 }
 
+// The rig holds every bat at its standard's pivot, before the scanned barrel: a bat too short for
+// that is refused before any work, as certify and optimize refuse it, not failed at its point.
+void check_rig_fits(const Settings& s, const std::vector<Bat>& bats, const std::vector<std::string>& labels) {
+  const Standard& standard = standards()[static_cast<std::size_t>(s.values("standard", 0).front())];
+  const BarrelScan scan;
+  for (std::size_t b = 0; b < bats.size(); ++b)
+    if (!(standard.pivot < bats[b].length - scan.far_from_end))
+      reject(s["bat"]->where, labels[b] + " (" + format_number(bats[b].length) + " m)",
+             "expected a bat longer than " + format_number(standard.pivot + scan.far_from_end) + " m: the " + standard.name +
+                 " rig's pivot, " + format_number(standard.pivot) +
+                 " m from the knob, must lie before the scanned barrel, which starts " +
+                 format_number(scan.far_from_end) + " m from the end");
+}
+
 }  // namespace
 
 // The impact kind's checks across keys: the swing, the bat files, z on every bat, mode counts.
@@ -294,6 +310,7 @@ void check_bat_scene(Study& study, const Settings& s, const Where& top) {
     const std::vector<std::string> labels = build_designs(study, s, bat);
     check_mode_counts(s, top, study.designs, labels);
     check_euler_bernoulli_slices(s, top, study.designs, labels);
+    check_rig_fits(s, study.designs, labels);
     return;
   }
   check_swing(s, top);
