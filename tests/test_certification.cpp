@@ -178,6 +178,18 @@ TEST_CASE("certify reports the designer's numbers and its checks as JSON", "[cer
   CHECK_THAT(text.output, Catch::Contains("USSSA"));
 }
 
+TEST_CASE("certify's exit status tells a pass (0) from a bat checked and failed (3) and from bad input (2)", "[certification]") {
+  const ProgramRun pass = run_program("certify " + r161_file);
+  CHECK(pass.exit_code == 0);
+  CHECK_THAT(pass.output, Catch::Contains(": PASS"));
+  const ProgramRun fail = run_program("certify " + source_path("studies/bats/alloy_bbcor.toml"));
+  CHECK(fail.exit_code == 3);
+  CHECK_THAT(fail.output, Catch::Contains(": FAIL"));
+  const ProgramRun json = run_program("certify " + source_path("studies/bats/alloy_bbcor.toml") + " --json");
+  CHECK(json.exit_code == 3);
+  CHECK_THAT(json.output, Catch::Contains("\"pass\": false"));
+}
+
 TEST_CASE("certify refuses a bad standard, pivot or option with one line", "[certification][bounds]") {
   require_refused(run_program("certify " + r161_file + " --standard asa"), {"--standard asa", "bbcor, besr or bpf"});
   require_refused(run_program("certify " + r161_file + " --pivot-point 0.9"), {"pivot point 0.9", "before the scanned"});

@@ -110,6 +110,7 @@ void run_certify(CertifyCommand& o) {
   const Certification c = certify(design, find_standard(o.standard), o.options);
   if (o.json) print_json(o.ball, c);
   else print_text(design.name, o.ball, c);
+  if (!c.pass) exit_status = failed_check;
 }
 
 }  // namespace

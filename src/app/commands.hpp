@@ -9,6 +9,12 @@
 
 namespace sweetspot::app {
 
+// The exit status of a command that ran to its end: 0, or `failed_check` when `certify` checked the
+// bat and it breaks a rule. Bad input is 2 and an error 1 (main.cpp), so a script can tell a
+// verdict from a failure to reach one.
+inline constexpr int failed_check = 3;
+inline int exit_status = 0;
+
 void add_modes_command(CLI::App& app);
 void add_impact_command(CLI::App& app);
 void add_wall_command(CLI::App& app);

@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
     std::replace(text.begin(), text.end(), '\n', ' ');
     for (const CLI::App* command : app.get_subcommands()) text = command->get_name() + ": " + text;
     if (app.get_subcommands().empty()) {  // CLI11 says only "A subcommand is required"
-      text = "expected a command: modes, impact, wall, toy, run, convergence, certify or optimize";
+      text = "expected a command: modes, impact, wall, toy, ball, run, convergence, certify or optimize";
       if (argc > 1) text += ", not '" + std::string(argv[1]) + "'";
     }
     std::fprintf(stderr, "sweetspot: error: %s (see sweetspot%s --help)\n", text.c_str(),
@@ -43,5 +43,5 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "sweetspot: error: %s\n", e.what());
     return 1;
   }
-  return 0;
+  return sweetspot::app::exit_status;
 }
