@@ -7,8 +7,9 @@ you choose (default: their middle one), with the designs that break a rule marke
 the NCAA/BBCOR limit). Run it with Debian's interpreter, which has xarray, h5netcdf and matplotlib.
 
 Usage: /usr/bin/python3 scripts/plot_design_map.py RESULT.h5 [OUT.png] [--x DIM] [--y DIM] [DIM=VALUE ...]
-  --x, --y   the dimensions of the map (default bat.barrel_diameter and bat.length)
-  DIM=VALUE  where the other axes are held, e.g. bat.material=ash bat.taper_end=0.635
+  --x, --y   the dimensions of the map (default bat_barrel_diameter and bat_length)
+  DIM=VALUE  where the other axes are held, e.g. bat_material=ash bat_taper_end=0.635
+The dataset names a study's axis "bat.length" bat_length; the study's dotted key is taken too.
 """
 import sys
 
@@ -21,16 +22,23 @@ import xarray as xr
 
 INCH = 0.0254
 args = [a for a in sys.argv[1:]]
-x_dim, y_dim = "bat.barrel_diameter", "bat.length"
+x_dim, y_dim = "bat_barrel_diameter", "bat_length"
+
+
+def dataset_name(key):
+    """A study's axis key as the dataset names it: bat.length is bat_length."""
+    return key.replace(".", "_")
+
+
 for flag in ("--x", "--y"):
     if flag in args:
         i = args.index(flag)
         if flag == "--x":
-            x_dim = args[i + 1]
+            x_dim = dataset_name(args[i + 1])
         else:
-            y_dim = args[i + 1]
+            y_dim = dataset_name(args[i + 1])
         del args[i:i + 2]
-held = dict(a.split("=", 1) for a in args if "=" in a)
+held = {dataset_name(k): v for k, v in (a.split("=", 1) for a in args if "=" in a)}
 files = [a for a in args if "=" not in a]
 path = files[0]
 out = files[1] if len(files) > 1 else path.rsplit(".", 1)[0] + "_design_map.png"
@@ -43,7 +51,7 @@ def at(ds, da):
         if d in (x_dim, y_dim):
             continue
         values = ds[d].values
-        if d in held and values.dtype.kind in "USO":  # names (bat.material): as given
+        if d in held and values.dtype.kind in "USO":  # names (bat_material): as given
             if held[d] not in list(values):
                 sys.exit(f"{d}={held[d]}: expected one of {', '.join(map(str, values))}")
             chosen[d] = held[d]
@@ -72,16 +80,15 @@ with xr.open_dataset(path, engine="h5netcdf") as ds:
         mesh = ax.pcolormesh(x, y, field, shading="nearest", cmap="viridis")
         fig.colorbar(mesh, ax=ax, label=label.format(fraction))
         # Designs that break a rule: crossed out.
-        barrel = ds["bat.barrel_diameter"].values if "bat.barrel_diameter" in ds else None
         illegal = np.asarray(drop) > 3  # drop = length - weight: "-3" bats are the lightest allowed
-        if x_dim == "bat.barrel_diameter":
+        if x_dim == "bat_barrel_diameter":
             illegal = illegal | (ds[x_dim].values[None, :] > 2.61 * INCH)
         yy, xx = np.meshgrid(y, x, indexing="ij")
         ax.scatter(xx[illegal], yy[illegal], marker="x", color="white", s=18, label="breaks a rule")
         ax.scatter(xx[~illegal], yy[~illegal], marker=".", color="black", s=6, label="legal")
-        ax.set_xlabel(f"{x_dim} / {xu}")
+        ax.set_xlabel(f"{ds[x_dim].attrs.get('long_name', x_dim)} / {xu}")
         ax.grid(alpha=0.2)
-    axes[0].set_ylabel(f"{y_dim} / {yu}")
+    axes[0].set_ylabel(f"{ds[y_dim].attrs.get('long_name', y_dim)} / {yu}")
     axes[1].legend(loc="lower right", fontsize=8, framealpha=0.8)
     held_text = ", ".join(f"{k} = {v if isinstance(v, str) else f'{float(v):g}'}" for k, v in chosen.items())
     swing = "equal effort" if ds.attrs.get("scene_swing") == "equal_effort" else "the same swing for every bat"

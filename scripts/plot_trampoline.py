@@ -24,7 +24,7 @@ import numpy as np
 import xarray as xr
 
 ROOT = Path(__file__).resolve().parent.parent
-WALL = "bat.wall_thickness"
+WALL = "bat_wall_thickness"
 BBCOR_LIMIT = 0.50  # NCAA/NFHS
 
 

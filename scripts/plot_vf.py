@@ -23,7 +23,7 @@ with xr.open_dataset(path, engine="h5netcdf") as ds:
     fig, ax = plt.subplots(figsize=(7, 4.5))
     for bat in vf.bat.values if "bat" in vf.dims else [None]:
         curve = vf.sel(bat=bat) if bat is not None else vf
-        ax.plot(100 * curve.z, curve, marker="o", markersize=3, label=bat or str(ds.bat.values[0]))
+        ax.plot(100 * curve.z, curve, marker="o", markersize=3, label=bat or str(ds.bat.item()))
     ax.set_xlabel("impact point z / cm from the knob")
     ax.set_ylabel("exit speed $v_f$ / (m/s)")
     title = ", ".join(f"{k} = {float(v):g}" for k, v in fixed.items()) or ds.attrs.get("title", "")

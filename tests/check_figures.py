@@ -141,7 +141,7 @@ def spectrum(history, frequency_hz):
 
 def low_impact_histories():
     ds = study("histories_low")
-    f = ds.frequency.isel(bat=0).values
+    f = ds.frequency.values  # one bat: no bat dimension
     for probe in ds.probe.values:
         a = ds.acceleration.sel(probe=probe)
         m1, m2, m3 = (spectrum(a, f[n]) for n in range(3))

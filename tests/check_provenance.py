@@ -82,25 +82,38 @@ def check_axes(ds):
     assert [meanings.get(int(m), int(m)) for m in modes.values] == [0, 2, "all", "auto"], modes.values
     pivot = dict(zip(np.atleast_1d(ds.pivot.attrs["flag_values"]).tolist(), ds.pivot.attrs["flag_meanings"].split()))
     assert [pivot[int(p)] for p in ds.pivot.values] == ["free", "pivoted"], ds.pivot.values
-    assert ds.frequency.dims == ("bat", "mode"), ds.frequency.dims
+    assert ds.frequency.dims == bat_dims(ds) + ("mode",), ds.frequency.dims
     assert ds.sizes["mode"] == mode_count, (ds.sizes["mode"], mode_count)
     assert list(ds.mode.values) == list(range(1, mode_count + 1))
     # every bat has at least as many modes as the dimension's first ones: no NaN in them
-    assert np.isfinite(ds.frequency.values[:, :min(mode_count, 10)]).all()
+    assert np.isfinite(np.atleast_2d(ds.frequency.values)[:, :min(mode_count, 10)]).all()
     # the points that keep all modes, pivoted or not, are all computed
     assert (ds.status.sel(modes=-1) == 0).all()
 
 
+def bat_dims(ds):
+    """The dimensions of a per-bat-file variable: the bat axis, or none for a study of one bat."""
+    return ("bat",) if "bat" in ds.dims else ()
+
+
+def per_bat(ds, name):
+    """A per-bat-file variable's values, one per bat file, after checking its dimensions."""
+    assert ds[name].dims == bat_dims(ds), (name, ds[name].dims)
+    return np.atleast_1d(ds[name].values)
+
+
 def check_bats(ds):
-    assert list(ds.bat_toml.dims) == ["bat"]
+    tomls, profiles = per_bat(ds, "bat_toml"), per_bat(ds, "bat_profile")
+    files, profile_files, slices = per_bat(ds, "bat_file"), per_bat(ds, "bat_profile_file"), per_bat(ds, "bat_slices")
+    assert len(tomls) == len(bat_files), (len(tomls), bat_files)
     for b, bat_file in enumerate(bat_files):
         toml_text = bat_file.read_bytes().decode()
         profile = profile_path(bat_file)
-        assert ds.bat_toml.values[b] == toml_text, b
-        assert ds.bat_profile.values[b] == profile.read_bytes().decode(), b
-        assert pathlib.Path(ds.bat_file.values[b]).resolve() == bat_file.resolve(), ds.bat_file.values[b]
-        assert pathlib.Path(ds.bat_profile_file.values[b]).resolve() == profile.resolve()
-        assert int(ds.bat_slices.values[b]) == profile_slices(bat_file), ds.bat_slices.values[b]
+        assert tomls[b] == toml_text, b
+        assert profiles[b] == profile.read_bytes().decode(), b
+        assert pathlib.Path(files[b]).resolve() == bat_file.resolve(), files[b]
+        assert pathlib.Path(profile_files[b]).resolve() == profile.resolve()
+        assert int(slices[b]) == profile_slices(bat_file), slices[b]
         assert ds.bat_slices.dtype == np.int32
 
 

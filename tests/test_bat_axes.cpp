@@ -237,3 +237,29 @@ TEST_CASE("The sweet spot does not depend on the order a study writes z in", "[b
   INFO(check.output);
   CHECK(check.output == "same\n");
 }
+
+TEST_CASE("Bat-parameter axes are CF names with their own long names and units, and bat.length is bat_length",
+          "[bat_axes]") {
+  // Two bat files, so a bat dimension, beside a length, a loss factor and a modulus.
+  const DesignDir d(design_study("maple_271.toml",
+                                 "bat = [\"bats/maple_271.toml\", \"bats/alloy_bbcor.toml\"]\n"
+                                 "\"bat.length\" = [0.83, 0.84]\n\"bat.loss_factor\" = [0.001, 0.002]\n"
+                                 "\"bat.youngs_modulus\" = [1.2e10, 1.4e10]\nz = [0.6, 0.65]\n"));
+  const std::string out = d / "out.h5";
+  const ProgramRun run = run_program("run " + d.study.string() + " -o " + out + " --quiet");
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  const ProgramRun check = run_command(
+      std::string(python) + " -c \"import xarray as xr; ds = xr.open_dataset('" + out + "', engine='h5netcdf'); "
+      "assert ds.vf.dims == ('bat', 'bat_length', 'bat_loss_factor', 'bat_youngs_modulus', 'z'), ds.vf.dims; "
+      "assert ds.bat_length.attrs == {'units': 'm', 'long_name': 'bat length'}, ds.bat_length.attrs; "
+      "assert ds.bat_loss_factor.attrs == {'units': '1', 'long_name': 'bat loss factor'}, ds.bat_loss_factor.attrs; "
+      "assert ds.bat_youngs_modulus.attrs['units'] == 'Pa', ds.bat_youngs_modulus.attrs; "
+      "assert 'bat_length' in ds.coords and ds.bat_mass.dims == ('bat', 'bat_length', 'bat_loss_factor', "
+      "'bat_youngs_modulus'), ds.bat_mass.dims; "
+      "assert ds.bat_toml.dims == ('bat',) and 'bat.length' in ds.attrs['study'], ds.attrs['study']; "
+      "assert ds.vf.sel(bat_length=0.84, bat='maple 271').dims == ('bat_loss_factor', 'bat_youngs_modulus', 'z'); "
+      "print('ok')\"");
+  INFO(check.output);
+  CHECK(check.output == "ok\n");
+}

@@ -70,7 +70,8 @@ TEST_CASE("A certification study runs into a dataset and refuses what does not b
   REQUIRE(run.exit_code == 0);
   const ProgramRun check = run_command(std::string(python) +
                                        " -c \"import xarray as xr; ds = xr.open_dataset('" + d / "certify.h5" +
-                                       "', engine='h5netcdf'); assert ds.bbcor.dims == ('bat.density',), ds.bbcor.dims; "
+                                       "', engine='h5netcdf'); assert ds.bbcor.dims == ('bat_density',), ds.bbcor.dims; "
+                                       "assert ds.bat_density.attrs == {'units': 'kg m-3', 'long_name': 'bat density'}; "
                                        "assert set(ds.certified.values.tolist()) <= {0, 1}; "
                                        "assert ds.attrs['scene_standard'] == 'bbcor'; "
                                        "assert (ds.z_max > 0.6).all() and (ds.bbcor > 0.4).all(); print('ok')\"");

@@ -525,8 +525,13 @@ void read_dimensions(const Section& top, const ProfileOptions& options, BatDesig
 
 }  // namespace
 
-BatDesign load_bat_design(const std::filesystem::path& toml_path, BatSource& source) {
-  source = {toml_path, {}, read_text(toml_path), {}};
+namespace {
+
+// The design source.toml_text describes (source.toml_file names it in messages and places its
+// profile); `profile_text` gives the text of the profile the TOML names, at its path.
+template <class ProfileText>
+BatDesign parse_bat_design(BatSource& source, ProfileText profile_text) {
+  const fs::path& toml_path = source.toml_file;
   const toml::table doc = parse_toml(toml_path, source.toml_text);
   const Section top{toml_path, doc, ""};
   top.reject_unknown({"name", "length", "material", "profile", "dimensions", "interpolation", "slices", "barrel"});
@@ -543,12 +548,29 @@ BatDesign load_bat_design(const std::filesystem::path& toml_path, BatSource& sou
     return design;
   }
   source.profile_file = profile_path(toml_path, top);
-  source.profile_text =
-      read_text(source.profile_file, " (the profile named by key 'profile' in " + toml_path.string() + ")");
+  source.profile_text = profile_text(source.profile_file);
   require_text(source.profile_file, source.profile_text);  // TOML itself must be UTF-8 already
   read_profile(source.profile_file, source.profile_text, options, design);
   read_barrel(top, design);
   return design;
+}
+
+}  // namespace
+
+BatDesign load_bat_design(const std::filesystem::path& toml_path, BatSource& source) {
+  source = {toml_path, {}, read_text(toml_path), {}};
+  return parse_bat_design(source, [&](const fs::path& profile) {
+    return read_text(profile, " (the profile named by key 'profile' in " + toml_path.string() + ")");
+  });
+}
+
+BatDesign bat_design_from_texts(BatSource& source) {
+  return parse_bat_design(source, [&](const fs::path& profile) {
+    if (source.profile_text.empty())
+      throw InputError(source.toml_file.string() + ": key 'profile' names " + profile.string() +
+                       ", whose text was not given; expected the profile's text beside the bat file's");
+    return source.profile_text;
+  });
 }
 
 Bat load_bat(const std::filesystem::path& toml_path) {

@@ -9,6 +9,7 @@
 
 #include "scene_args.hpp"
 #include "sweetspot/ball/ball_file.hpp"
+#include "sweetspot/bat/bat_design_text.hpp"
 #include "sweetspot/bat/inch_pound.hpp"
 #include "sweetspot/impact/certification.hpp"
 #include "sweetspot/input_error.hpp"
@@ -129,7 +130,7 @@ py::dict certification(const BatHandle& b, const std::string& standard, std::opt
 
 }  // namespace
 
-std::shared_ptr<BatHandle> make_bat(BatDesign design, std::optional<int> slices) {
+std::shared_ptr<BatHandle> make_bat(BatDesign design, std::optional<int> slices, BatSource source) {
   if (slices) {
     if (*slices < min_slices || *slices > max_slices)
       throw InputError("slices " + std::to_string(*slices) + ": expected " + std::to_string(min_slices) + " to " +
@@ -138,7 +139,7 @@ std::shared_ptr<BatHandle> make_bat(BatDesign design, std::optional<int> slices)
   }
   Bat bat = build_bat(design);  // throws InputError naming the rule an impossible bat breaks
   if (slices && bat.slices() != *slices) bat = resample(bat, *slices);  // a profile of one row per slice
-  return std::make_shared<BatHandle>(std::move(bat), std::move(design));
+  return std::make_shared<BatHandle>(std::move(bat), std::move(design), std::move(source));
 }
 
 void bind_bat_design(py::module_& m, py::class_<BatHandle, std::shared_ptr<BatHandle>>& bat) {
@@ -165,7 +166,10 @@ void bind_bat_design(py::module_& m, py::class_<BatHandle, std::shared_ptr<BatHa
                     for (const auto& [key, value] : dimensions)
                       set_design_parameter(d, key.cast<std::string>(), value.cast<double>());
                     set_material(d, material, constants);
-                    return make_bat(std::move(d), slices);
+                    // Its bat file, which reads back as this design bit for bit (Bat.from_text).
+                    BatSource source;
+                    source.toml_text = bat_design_text(d, "made by sweetspot.Bat.from_dimensions");
+                    return make_bat(std::move(d), slices, std::move(source));
                   })
       .def("properties", &properties,
            "What a designer reads, exact for the designed shape: mass (kg), length (m), drop (length in "

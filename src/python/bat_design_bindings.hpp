@@ -12,7 +12,8 @@ namespace sweetspot::python {
 
 void bind_bat_design(pybind11::module_& m, pybind11::class_<BatHandle, std::shared_ptr<BatHandle>>& bat);
 
-// A design cut into its slices (or `slices`), checked as a bat file's is.
-std::shared_ptr<BatHandle> make_bat(BatDesign design, std::optional<int> slices);
+// A design cut into its slices (or `slices`), checked as a bat file's is; `source` the texts it
+// was read from (none for a design made in Python).
+std::shared_ptr<BatHandle> make_bat(BatDesign design, std::optional<int> slices, BatSource source = {});
 
 }  // namespace sweetspot::python

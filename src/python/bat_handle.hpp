@@ -11,18 +11,22 @@
 
 #include "sweetspot/bat/bat.hpp"
 #include "sweetspot/bat/bat_design.hpp"
+#include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/bat/modes.hpp"
 
 namespace sweetspot::python {
 
 class BatHandle {
  public:
-  // The bat, and the design it was built from (what certification and a designer's numbers read).
-  BatHandle(Bat bat, BatDesign design)
-      : bat_(std::move(bat)), design_(std::move(design)), mass_(mass_properties(bat_)) {}
+  // The bat, the design it was built from (what certification and a designer's numbers read) and
+  // the texts that give the design (empty for a bat of knots given in Python): what a result
+  // stores so that the bat can be told apart and rebuilt.
+  BatHandle(Bat bat, BatDesign design, BatSource source = {})
+      : bat_(std::move(bat)), design_(std::move(design)), source_(std::move(source)), mass_(mass_properties(bat_)) {}
 
   const Bat& bat() const { return bat_; }
   const BatDesign& design() const { return design_; }
+  const BatSource& source() const { return source_; }
   const MassProperties& mass() const { return mass_; }
 
   // The basis of this request, solved on first use (outside the lock: two threads asking the same
@@ -42,6 +46,7 @@ class BatHandle {
   using Key = std::tuple<int, int, double>;
   Bat bat_;
   BatDesign design_;
+  BatSource source_;
   MassProperties mass_;
   std::mutex mutex_;
   std::map<Key, std::shared_ptr<const ModalBasis>> cache_;

@@ -9,17 +9,21 @@
 
 #include <cmath>
 #include <exception>
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bat_design_bindings.hpp"
 #include "bat_handle.hpp"
 #include "scene_args.hpp"
+#include "scene_record.hpp"
 #include "sweetspot/ball/ball_file.hpp"
 #include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/impact/impact.hpp"
 #include "sweetspot/input_error.hpp"
 #include "sweetspot/study/study_results.hpp"
+#include "sweetspot/version.hpp"
 
 namespace py = pybind11;
 using namespace sweetspot;
@@ -174,6 +178,22 @@ py::dict run_impacts(BatHandle& bat, const py::dict& scalars, const py::dict& ar
   return out;
 }
 
+// The bat as a result's attributes name it (a study dataset's bat_* names): its name and slices,
+// and where known the file and profile it was read from with their texts.
+py::dict bat_source(const BatHandle& b) {
+  py::dict d;
+  d["bat"] = b.bat().name;
+  d["bat_slices"] = b.bat().slices();
+  const BatSource& s = b.source();
+  const std::pair<const char*, std::string> texts[] = {{"bat_file", s.toml_file.string()},
+                                                       {"bat_toml", s.toml_text},
+                                                       {"bat_profile_file", s.profile_file.string()},
+                                                       {"bat_profile", s.profile_text}};
+  for (const auto& [name, text] : texts)
+    if (!text.empty()) d[name] = text;
+  return d;
+}
+
 py::dict modes_dict(BatHandle& bat, std::optional<int> count, const std::string& theory_text) {
   const BeamTheory theory = parse_beam_theory(theory_text);
   if (count && *count < 1) throw InputError("count " + std::to_string(*count) + ": expected at least 1");
@@ -218,21 +238,36 @@ PYBIND11_MODULE(_sweetspot, m) {
     }
   });
 
-  py::class_<BatHandle, std::shared_ptr<BatHandle>> bat(m, "Bat");
+  py::class_<BatHandle, std::shared_ptr<BatHandle>> bat(m, "Bat", R"(A bat cut into slices, its normal modes solved on demand and kept.
+
+Make one with Bat.load (a bat file), Bat.from_text (a bat file's text, as results store it),
+Bat.from_knots or Bat.from_dimensions. Properties: name, length (m), slices, mass (kg), z_cm (m
+from the knob), moment_of_inertia_cm (kg m^2), radius_of_gyration (m), z (slice centres, m),
+outer_diameter and inner_diameter (per slice, m).)");
   bat
       .def_static("load", [](const std::filesystem::path& path, std::optional<int> slices) {
             BatSource source;
-            return make_bat(load_bat_design(path, source), slices);
+            BatDesign design = load_bat_design(path, source);
+            return make_bat(std::move(design), slices, std::move(source));
           }, py::arg("path"), py::arg("slices") = py::none(),
-          "A bat from its TOML file, cut into `slices` slices (default: its profile's own).")
-      .def_property_readonly("name", [](const BatHandle& b) { return b.bat().name; })
-      .def_property_readonly("length", [](const BatHandle& b) { return b.bat().length; }, "m")
-      .def_property_readonly("slices", [](const BatHandle& b) { return b.bat().slices(); })
-      .def_property_readonly("mass", [](const BatHandle& b) { return b.mass().mass; }, "kg")
-      .def_property_readonly("z_cm", [](const BatHandle& b) { return b.mass().z_cm; }, "m from the knob")
+          "Load a bat from its TOML file (README \"Bat files\").\n\n"
+          "Parameters: path, the bat file; slices, the number of slices to cut it into (default: its own).\n"
+          "Returns: a Bat. Raises ValueError naming the file, key and value that are wrong.")
+      .def_static("_from_text", [](const std::string& toml, const std::string& profile, const std::string& name,
+                                   std::optional<int> slices) {
+            BatSource source{name, {}, toml, profile};
+            BatDesign design = bat_design_from_texts(source);
+            return make_bat(std::move(design), slices, std::move(source));
+          })
+      .def("_source", &bat_source)
+      .def_property_readonly("name", [](const BatHandle& b) { return b.bat().name; }, "the bat's name (its file's `name`)")
+      .def_property_readonly("length", [](const BatHandle& b) { return b.bat().length; }, "length, m")
+      .def_property_readonly("slices", [](const BatHandle& b) { return b.bat().slices(); }, "number of slices it is cut into")
+      .def_property_readonly("mass", [](const BatHandle& b) { return b.mass().mass; }, "mass of the sliced bat, kg")
+      .def_property_readonly("z_cm", [](const BatHandle& b) { return b.mass().z_cm; }, "centre of mass, m from the knob")
       .def_property_readonly("moment_of_inertia_cm", [](const BatHandle& b) { return b.mass().moment_of_inertia_cm; },
                              "kg m^2 about the centre of mass")
-      .def_property_readonly("radius_of_gyration", [](const BatHandle& b) { return b.mass().radius_of_gyration(); }, "m")
+      .def_property_readonly("radius_of_gyration", [](const BatHandle& b) { return b.mass().radius_of_gyration(); }, "radius of gyration about the centre of mass, m")
       .def("moment_of_inertia_about", [](const BatHandle& b, double z) { return b.mass().moment_of_inertia_about(z); },
            py::arg("z"), "kg m^2 about the point z (m from the knob)")
       .def_property_readonly("z", [](const BatHandle& b) {
@@ -240,11 +275,16 @@ PYBIND11_MODULE(_sweetspot, m) {
             for (int i = 0; i < b.bat().slices(); ++i) z[i] = b.bat().slice_center(i);
             return array(z);
           }, "slice centres, m from the knob")
-      .def_property_readonly("outer_diameter", [](const BatHandle& b) { return array(b.bat().outer_diameter); }, "m")
+      .def_property_readonly("outer_diameter", [](const BatHandle& b) { return array(b.bat().outer_diameter); }, "outer diameter of each slice, m")
       .def_property_readonly("inner_diameter", [](const BatHandle& b) { return array(b.bat().inner_diameter); },
-                             "m (empty for a solid bat)")
+                             "inner diameter of each slice, m (empty for a solid bat)")
       .def("modes", &modes_dict, py::arg("count") = py::none(), py::arg("theory") = "timoshenko",
-           "Normal modes: frequencies_hz, shapes (count x slices, max |psi| = 1), z_m, nodes_m, omega, mass properties.")
+           "The bat's normal modes.\n\n"
+           "Parameters: count, the lowest vibrational modes to solve (default: all); theory, \"timoshenko\" or "
+           "\"euler-bernoulli\".\n"
+           "Returns: a dict of theory, frequencies_hz (Hz), shapes (count x slices, max |psi| = 1, + at the barrel "
+           "end), z_m (slice centres, m), nodes_m (each mode's nodes, m from the knob), omega (rad/s, the two rigid "
+           "modes first), mass_kg, z_cm_m and moment_of_inertia_cm_kg_m2.")
       .def("__repr__", [](const BatHandle& b) {
         return "<sweetspot.Bat '" + b.bat().name + "': " + std::to_string(b.bat().length) + " m, " +
                std::to_string(b.bat().slices()) + " slices>";
@@ -272,6 +312,12 @@ PYBIND11_MODULE(_sweetspot, m) {
     return names;
   });
   m.def("_point_arguments", [] { return point_arguments(); });
+  m.def("_scene_record", [](const py::dict& scalars, const std::set<std::string>& per_point) {
+    return scene_record(scene_args(scalars, per_point), per_point);
+  });
+  // The program's --version, and the commit it was built from: every result records both.
+  m.attr("__version__") = version;
+  m.attr("_git_commit") = git_commit;
   m.def("_ball", [](const std::string& name) {
     const BallFit fit = load_ball(name, "ball");
     const Ball& b = fit.ball;

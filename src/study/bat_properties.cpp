@@ -33,8 +33,10 @@ std::vector<double> per_design(const Study& study, F value) {
 void add_mass_variables(const Study& study, Dataset& d) {
   d.variables.push_back(design_variable(study, "bat_mass", "kg", "mass of the bat",
                                         per_design(study, [](const Bat&, const MassProperties& m) { return m.mass; })));
-  d.variables.push_back(design_variable(study, "bat_length", "m", "length of the bat",
-                                        per_design(study, [](const Bat& b, const MassProperties&) { return b.length; })));
+  // A bat.length axis is the bat's length already: its coordinate bat_length takes the name.
+  if (std::ranges::count(design_dims(study), "bat_length") == 0)
+    d.variables.push_back(design_variable(study, "bat_length", "m", "length of the bat",
+                                          per_design(study, [](const Bat& b, const MassProperties&) { return b.length; })));
   // In minus oz has no UDUNITS spelling: the long name says what it is.
   d.variables.push_back(design_variable(study, "drop", "", "drop: length in inches minus weight in ounces",
                                         per_design(study, [](const Bat& b, const MassProperties& m) {
@@ -81,9 +83,8 @@ void add_mode_variables(const Study& study, const DesignModes& modes, int mode_c
 }  // namespace
 
 std::vector<std::string> design_dims(const Study& study) {
-  std::vector<std::string> dims{"bat"};
-  for (const std::size_t k : design_axes(study))
-    if (study.axes[k].name != "bat") dims.push_back(study.axes[k].name);
+  std::vector<std::string> dims;  // the bat axis comes first in design_axes
+  for (const std::size_t k : design_axes(study)) dims.push_back(dataset_name(study.axes[k].name));
   return dims;
 }
 

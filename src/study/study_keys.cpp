@@ -203,6 +203,12 @@ bool is_bat_parameter(std::string_view axis_name) {
   return axis_name.starts_with(bat_parameter_prefix) && axis_name.size() > bat_parameter_prefix.size();
 }
 
+std::string dataset_name(std::string_view axis_name) {
+  std::string name(axis_name);
+  std::ranges::replace(name, '.', '_');
+  return name;
+}
+
 const char* to_string(StudyKind kind) {
   switch (kind) {
     case StudyKind::impact:

@@ -91,8 +91,15 @@ void add_scene(const Study& study, Dataset& d) {
     if (!is_axis(study, key)) add_scene_key(study, key, out);
 }
 
-Variable bat_texts(const std::string& name, const std::string& long_name, std::vector<std::string> texts) {
-  return {name, "", long_name, {"bat"}, std::move(texts), {}, {}};
+// Per bat file: over the bat axis, or scalars when the study has one bat file (and no bat axis).
+std::vector<std::string> bat_dims(const Study& study) {
+  if (is_axis(study, "bat")) return {"bat"};
+  return {};
+}
+
+Variable bat_texts(const Study& study, const std::string& name, const std::string& long_name,
+                   std::vector<std::string> texts) {
+  return {name, "", long_name, bat_dims(study), std::move(texts), {}, {}};
 }
 
 void add_bats(const Study& study, Dataset& d) {
@@ -108,14 +115,16 @@ void add_bats(const Study& study, Dataset& d) {
     const Bat& first = study.designs[b * (study.designs.size() / study.bat_sources.size())];
     slices.push_back(study.slices > 0 ? study.slices : first.slices());
   }
-  d.variables.push_back(bat_texts("bat_file", "bat file, as the run read it", std::move(files)));
-  d.variables.push_back(bat_texts("bat_toml", "text of the bat file", std::move(tomls)));
-  d.variables.push_back(bat_texts("bat_profile_file", "profile of the bat, as the run read it",
+  // The bat's name: the bat axis's coordinate, or this scalar beside a study's one bat.
+  if (!is_axis(study, "bat")) d.variables.push_back(bat_texts(study, "bat", "bat", study.bat_names));
+  d.variables.push_back(bat_texts(study, "bat_file", "bat file, as the run read it", std::move(files)));
+  d.variables.push_back(bat_texts(study, "bat_toml", "text of the bat file", std::move(tomls)));
+  d.variables.push_back(bat_texts(study, "bat_profile_file", "profile of the bat, as the run read it",
                                   std::move(profile_files)));
-  d.variables.push_back(bat_texts("bat_profile", "text of the bat's profile", std::move(profiles)));
+  d.variables.push_back(bat_texts(study, "bat_profile", "text of the bat's profile", std::move(profiles)));
   // With a slices axis, the points take the axis's counts; the frequencies still take these.
   d.variables.push_back({"bat_slices", "1", "slices the bat is cut into (the profile's own unless the study sets slices)",
-                         {"bat"}, std::move(slices), {}, {}});
+                         bat_dims(study), std::move(slices), {}, {}});
 }
 
 void add_run(const RunInfo& info, Dataset& d) {

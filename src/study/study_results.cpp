@@ -6,6 +6,8 @@
 #include <map>
 #include <numeric>
 #include <sstream>
+#include <stdexcept>
+#include <string_view>
 
 #include "sweetspot/study/bat_properties.hpp"
 #include "sweetspot/study/sweet_spot.hpp"
@@ -107,18 +109,37 @@ const std::map<std::string, Description>& descriptions() {
   return d;
 }
 
-// A bat parameter's units follow from what it is (bat_design.hpp): moduli in Pa, the density in
-// kg/m^3, the shear coefficient a ratio, a preset's name none, every dimension a length.
-Description bat_parameter_description(const std::string& name) {
-  if (name.ends_with("material")) return {"", "wood preset of the bat"};
-  if (name.ends_with("modulus")) return {"Pa", "bat parameter (a modulus of its material)"};
-  if (name.ends_with("density")) return {"kg m-3", "bat parameter (the density of its material)"};
-  if (name.ends_with("shear_coefficient")) return {"1", "bat parameter (Timoshenko's shear coefficient)"};
-  return {"m", "bat parameter (a dimension)"};
+// Each bat parameter's own long name and units (bat_design.hpp, dimensions.hpp): moduli in Pa, the
+// density in kg/m^3, the shear coefficient and the loss factors ratios, a preset's name none,
+// every dimension a length. `parameter` is without the "bat." prefix.
+Description bat_parameter_description(std::string_view parameter) {
+  static const std::map<std::string_view, Description> d = {
+      {"material", {"", "bat material (wood preset)"}},
+      {"length", {"m", "bat length"}},
+      {"density", {"kg m-3", "bat density"}},
+      {"youngs_modulus", {"Pa", "bat Young's modulus"}},
+      {"shear_modulus", {"Pa", "bat shear modulus"}},
+      {"shear_coefficient", {"1", "bat Timoshenko shear coefficient"}},
+      {"hoop_modulus", {"Pa", "bat barrel wall hoop modulus"}},
+      {"wall_loss_factor", {"1", "bat barrel wall loss factor"}},
+      {"loss_factor", {"1", "bat loss factor"}},
+      {"knob_diameter", {"m", "bat knob diameter"}},
+      {"knob_length", {"m", "bat knob length"}},
+      {"handle_diameter", {"m", "bat handle diameter"}},
+      {"taper_start", {"m", "bat taper start from the knob"}},
+      {"taper_end", {"m", "bat taper end from the knob"}},
+      {"barrel_diameter", {"m", "bat barrel diameter"}},
+      {"end_depth", {"m", "bat end depth"}},
+      {"wall_thickness", {"m", "bat barrel wall thickness"}},
+  };
+  const auto it = d.find(parameter);
+  // A parameter added to the designs without a line here would be unlabelled in every dataset.
+  if (it == d.end()) throw std::logic_error("no description for the bat parameter '" + std::string(parameter) + "'");
+  return it->second;
 }
 
 Description describe(const std::string& name) {
-  if (is_bat_parameter(name)) return bat_parameter_description(name);
+  if (is_bat_parameter(name)) return bat_parameter_description(std::string_view(name).substr(bat_parameter_prefix.size()));
   const auto it = descriptions().find(name);
   return it == descriptions().end() ? Description{"1", ""} : it->second;
 }
@@ -171,7 +192,7 @@ std::vector<std::int32_t> integers(const std::vector<double>& values) {
 // states of pivot are CF flags, values named by flag_meanings.
 Coordinate axis_coordinate(const Study& study, const Axis& axis) {
   const Description d = describe(axis.name);
-  Coordinate c{axis.name, d.units, d.long_name, {}, {}};
+  Coordinate c{dataset_name(axis.name), d.units, d.long_name, {}, {}};
   if (axis.name == "bat") {
     for (double index : axis.values) c.labels.push_back(study.bat_names[static_cast<std::size_t>(index)]);
   } else if (axis.name == "theory" || !axis.labels.empty()) {
@@ -317,10 +338,9 @@ void OutputLayout::extract(const ImpactResult& result, double* row) const {
 
 namespace {
 
-// The bat's own dimensions: `bat` when no axis sweeps it, and `mode` (frequencies, mode_energy).
-void add_bat_coordinates(const Study& study, Dataset& d) {
-  if (std::ranges::none_of(study.axes, [](const Axis& axis) { return axis.name == "bat"; }))
-    d.coordinates.push_back({"bat", "", "bat", {}, {study.bat_names.front()}});
+// The mode dimension of the frequencies and mode_energy. A study of one bat has no bat dimension:
+// its bat's variables run over the bat-parameter axes alone (a scalar `bat` names it).
+void add_mode_coordinate(const Study& study, Dataset& d) {
   if (!keeps_vibrations(study)) return;
   Coordinate mode{"mode", "1", describe("mode").long_name, {}, {}};
   for (int n = 1; n <= dataset_mode_count(study); ++n) mode.integers.push_back(n);
@@ -397,7 +417,7 @@ void add_sweet_spots(const Study& study, const OutputLayout& layout, const std::
   }
   std::vector<std::string> dims;
   for (const Axis& axis : study.axes)
-    if (axis.name != "z") dims.push_back(axis.name);
+    if (axis.name != "z") dims.push_back(dataset_name(axis.name));
   for (auto [name, values] : {std::pair{"sweet_spot_z", &at}, {"sweet_spot_vf", &peak}, {"sweet_spot_width", &width}})
     if (asked(name)) d.variables.push_back(output_variable(name, dims, std::move(*values)));
   std::ostringstream fraction;
@@ -419,11 +439,11 @@ Dataset make_dataset(const Study& study, const OutputLayout& layout, const std::
   std::vector<std::string> dims;
   for (const Axis& axis : study.axes) {
     d.coordinates.push_back(axis_coordinate(study, axis));
-    dims.push_back(axis.name);
+    dims.push_back(d.coordinates.back().name);
   }
   // Wall and toy studies have no bat: no bat or mode dimension and no frequencies; a study of
   // rigid bats alone computed no modes, so it stores no frequencies either.
-  if (has_bat(study.kind)) add_bat_coordinates(study, d);
+  if (has_bat(study.kind)) add_mode_coordinate(study, d);
   add_history_coordinates(study, d);
   add_outputs(study, layout, rows, dims, d);
   add_sweet_spots(study, layout, rows, d);

@@ -32,6 +32,13 @@ struct BatDesign {
 // Reads a bat file (README "Bat files"); throws InputError as load_bat does.
 BatDesign load_bat_design(const std::filesystem::path& toml_path, BatSource& source);
 
+// The same from texts already read (a dataset's bat_toml and bat_profile): source.toml_text is
+// the bat file, source.profile_text the profile it names (unused for [dimensions]), and
+// source.toml_file a name for the messages (the profile's path is taken relative to it, for the
+// messages too). Sets source.profile_file. Throws InputError as load_bat_design does, and when
+// the file names a profile but source.profile_text is empty.
+BatDesign bat_design_from_texts(BatSource& source);
+
 // The bat the design describes, cut into its slices (the design's own count, the profile's rows,
 // or about 1 cm each). Throws InputError naming the rule broken, as broken_rule.
 Bat build_bat(const BatDesign& design);

@@ -22,10 +22,12 @@ struct DesignModes {
 // OpenMP threads.
 DesignModes design_modes(const Study& study, int modes);
 
-// The dimensions the designer's variables run over: "bat", then each bat-parameter axis.
+// The dimensions the designer's variables run over, as the dataset names them: "bat" if the study
+// has a bat axis, then each bat-parameter axis ("bat_barrel_diameter", ...). No bat axis, no
+// bat dimension: a study of one bat file stores its bat's values over the parameter axes alone.
 std::vector<std::string> design_dims(const Study& study);
 
-// Adds bat_mass, bat_length, drop, balance_point, moi_knob, moi_pivot, moi_cm over design_dims,
+// Adds bat_mass, bat_length (unless a bat.length axis is its coordinate), drop, balance_point, moi_knob, moi_pivot, moi_cm over design_dims,
 // and (with modes) frequency over design_dims + mode and node_position over design_dims +
 // node_mode + node, with the coordinates node_mode and node.
 void add_design_variables(const Study& study, const DesignModes& modes, int mode_count, Dataset& d);

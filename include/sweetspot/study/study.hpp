@@ -174,6 +174,11 @@ struct GridPoint {
 inline constexpr std::string_view bat_parameter_prefix = "bat.";
 bool is_bat_parameter(std::string_view axis_name);
 
+// The name an axis has in the dataset: its key with every '.' an '_' ("bat.length" is
+// `bat_length`), since CF names are letters, digits and underscores and a dotted name cannot be a
+// keyword (ds.sel(bat_length=0.84)). The study file keeps the key as written.
+std::string dataset_name(std::string_view axis_name);
+
 // The dimensions over which bats differ, as indices into Study::axes: the bat axis (if any)
 // first, then every bat-parameter axis in the order written. Study::designs is row-major over
 // them; the dataset stores what a designer checks of each bat (mass, balance, MOI, frequencies)

@@ -22,7 +22,8 @@ struct RunInfo {
 
 // Adds the global attributes (Conventions, title, the study text, the program, the scene_* keys,
 // the run) and, for a study on bats, the per-bat variables bat_file, bat_toml, bat_profile_file,
-// bat_profile and bat_slices over the `bat` dimension, which `dataset` must already have.
+// bat_profile and bat_slices over the `bat` axis, which `dataset` must already have; a study of
+// one bat file has no bat axis, and they are scalars beside a scalar `bat` holding its name.
 void add_provenance(const Study& study, const RunInfo& info, Dataset& dataset);
 
 }  // namespace sweetspot

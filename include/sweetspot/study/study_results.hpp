@@ -2,8 +2,9 @@
 // What a study stores per grid point, and how the points become one dataset: one variable per
 // requested output over the study's axes (mode_energy and mode_response add `mode`, the histories
 // `time` and with several probes `probe` before it, force_response `omega_tau`), each axis a
-// coordinate, and for a study on a bat the modal frequencies of each bat over (bat, mode). Wall
-// and toy studies have neither a bat nor a mode dimension.
+// coordinate named as dataset_name names it (bat_length for the key "bat.length"), and for a
+// study on a bat the modal frequencies of each bat over its bat dimensions and `mode`. Wall and
+// toy studies have neither a bat nor a mode dimension.
 #include <string>
 #include <vector>
 

@@ -7,6 +7,13 @@
 
 The physics is the C++ library's (the extension `_sweetspot`); this package gives the signatures,
 numpy broadcasting and the xarray datasets. Bad input raises ValueError with the program's message.
+
+Every result carries its provenance in `attrs` (a dataset's global attributes, or the `attrs` of the
+dict impact() and certify() return): the resolved scene as `scene_*` (every input that determines
+the numbers, defaults filled in, SI units as `scene_units` lists them), the bat (`bat`,
+`bat_slices`, and its file's text `bat_toml` where known), `program_version`, `git_commit` and
+`Conventions`, under the names a study dataset uses. `scene_of` and `bat_of` read them back, so
+that a saved result can be computed again: `impacts_like(xr.open_dataset(path))`.
 """
 import os
 import shutil
@@ -17,24 +24,70 @@ from pathlib import Path
 
 import numpy as np
 
-from ._sweetspot import Bat, _ball, _certify, _describe, _impact, _impacts, _point_arguments, _status_names
+from ._sweetspot import (Bat, __version__, _ball, _certify, _describe, _git_commit, _impact, _impacts,
+                         _point_arguments, _scene_record, _status_names)
 
-__all__ = ["Bat", "ball", "impact", "impacts", "run_study", "certify"]
+__all__ = ["Bat", "Result", "ball", "impact", "impacts", "run_study", "certify", "scene_of", "bat_of", "impacts_like",
+           "__version__"]
+
+class Result(dict):
+    """What impact() and certify() return: a dict with the keys of the program's --json, and
+    `attrs`, a dict of the provenance an impacts() dataset carries as its attributes (the resolved
+    scene as scene_*, the bat, program_version, git_commit, Conventions)."""
+
+    def __init__(self, values, attrs):
+        super().__init__(values)
+        self.attrs = attrs
+
+
+def _provenance(kind):
+    """The global attributes a study dataset starts with (study_provenance.cpp), for a Python result."""
+    return {"Conventions": "CF-1.8", "title": f"sweetspot.{'certify' if kind == 'certification' else 'impacts'}",
+            "source": f"sweetspot {__version__} ({_git_commit})",
+            "references": "A. M. Nathan, Am. J. Phys. 68, 979 (2000)", "kind": kind, "program": "sweetspot",
+            "program_version": __version__, "git_commit": _git_commit}
+
+
+def _with_units(scene):
+    """`scene` and `scene_units`: each number's units as a dataset's variable of that name has them
+    (netCDF attributes carry no attributes of their own)."""
+    units = []
+    for name, value in scene.items():
+        unit = _describe(name.removeprefix("scene_"))[0] if not isinstance(value, str) else ""
+        if name == "scene_pivot" and "scene_standard" in scene:
+            unit = "m"  # the rig's pivot: a point, not the swing's flag
+        if unit:
+            units.append(f"{name}: {unit}")
+    return scene | {"scene_units": "; ".join(units)}
+
+
+def _record(bat, args, per_point=()):
+    """The attributes of a result of impact() or impacts(): provenance, bat, resolved scene."""
+    scene = _scene_record({k: v for k, v in args.items() if k not in per_point}, set(per_point))
+    if args.get("ball") is not None:  # the ball's name gives what no argument does (its COR's speed law)
+        scene = {"scene_ball": str(args["ball"])} | scene
+    return _provenance("impact") | bat._source() | _with_units(scene)
 
 
 def ball(name="n2000"):
-    """The model's ball fitted to a preset (n2000, mlb, ncaa, softball_44_375, softball_47_525) or to
-    the [ball] table of a TOML file: a dict of mass (kg), radius (m), k1 and a of the force law F =
-    k1 u^a on a flat surface, e0 the flat-wall COR at cor_speed (m/s), cor_slope (per m/s),
-    curved_contact, and the fit's residuals (README "Balls")."""
+    """The model's ball fitted to a preset or to the [ball] table of a TOML file (README "Balls").
+
+    Parameters: name, a preset (n2000, mlb, ncaa, softball_44_375, softball_47_525) or a TOML file's path.
+    Returns: a dict of mass (kg), radius (m), k1 (N m^-a) and a of the force law F = k1 u^a on a flat
+    surface, e0 the flat-wall COR at cor_speed (m/s), cor_slope (per m/s), curved_contact, and the
+    fit's stiffness_from, cor_residual and stiffness_residual."""
     return _ball(name)
 
 
 def _from_knots(name, length, z, outer_diameter, inner_diameter=None, *, interpolation="linear", slices=None,
                 material="maple", density=None, youngs_modulus=None, shear_modulus=None, shear_coefficient=None):
-    """A bat from its diameters at knots (m from the knob), as a profile CSV with a z_m column gives
-    them: interpolation "linear" (frustums), "pchip" or "stepped"; `material` a wood preset, any
-    constant given beside it overriding the preset's; cut into `slices` (default about 1 cm each)."""
+    """A bat from its diameters at knots, as a profile CSV with a z_m column gives them.
+
+    Parameters: name; length (m); z, the knots (m from the knob, increasing); outer_diameter and
+    inner_diameter (m, one per knot; no inner for a solid bat); interpolation "linear" (frustums),
+    "pchip" or "stepped"; slices (default about 1 cm each); material, a wood preset, with density
+    (kg/m^3), youngs_modulus, shear_modulus (Pa) and shear_coefficient overriding the preset's.
+    Returns: a Bat. Its results store its name and slices but no bat file (it has none)."""
     inner = None if inner_diameter is None else [float(d) for d in np.ravel(inner_diameter)]
     return Bat._from_knots(name, float(length), [float(v) for v in np.ravel(z)],
                            [float(d) for d in np.ravel(outer_diameter)], inner, interpolation, slices, material,
@@ -45,7 +98,13 @@ def _from_knots(name, length, z, outer_diameter, inner_diameter=None, *, interpo
 def _from_dimensions(name, length, *, knob_diameter, knob_length, handle_diameter, taper_start, taper_end,
                      barrel_diameter, end="flat", end_depth=0.0, wall_thickness=None, slices=None, material="maple",
                      density=None, youngs_modulus=None, shear_modulus=None, shear_coefficient=None):
-    """A bat from the named dimensions of a bat file's [dimensions] (README, "Bat files"), m."""
+    """A bat from the named dimensions of a bat file's [dimensions] (README, "Bat files").
+
+    Parameters: name; length (m); knob_diameter, knob_length, handle_diameter, taper_start,
+    taper_end, barrel_diameter, end_depth and wall_thickness (m; no wall for a solid bat); end
+    "flat", "rounded" or "cupped"; slices (default about 1 cm each); material, a wood preset, with
+    density (kg/m^3), youngs_modulus, shear_modulus (Pa) and shear_coefficient overriding the preset's.
+    Returns: a Bat, whose results store a bat file's text (bat_toml) that Bat.from_text reads back."""
     dimensions = dict(knob_diameter=knob_diameter, knob_length=knob_length, handle_diameter=handle_diameter,
                       taper_start=taper_start, taper_end=taper_end, barrel_diameter=barrel_diameter,
                       end_depth=end_depth)
@@ -56,18 +115,39 @@ def _from_dimensions(name, length, *, knob_diameter, knob_length, handle_diamete
                                                shear_modulus=shear_modulus, shear_coefficient=shear_coefficient))
 
 
+def _from_text(toml, profile=None, *, slices=None, name="<text>"):
+    """A bat from the text of its bat file and of the profile CSV the file names, as results store
+    them (bat_toml, bat_profile): the same bat, bit for bit, as Bat.load of the files.
+
+    Parameters: toml, the bat file's text; profile, the profile's text (None for a bat of
+    [dimensions]); slices, as Bat.load's; name, what error messages call the text.
+    Returns: a Bat. Raises ValueError as Bat.load does."""
+    return Bat._from_text(toml, profile or "", name, slices)
+
+
 Bat.from_knots = staticmethod(_from_knots)
 Bat.from_dimensions = staticmethod(_from_dimensions)
+Bat.from_text = staticmethod(_from_text)
 
 
 def certify(bat, standard="bbcor", *, ball=None, e0=None, ball_speed=None, pivot=None, modes="auto",
             theory="timoshenko"):
-    """The bat in the virtual test rig of a standard ("bbcor", "besr" or "bpf"), as `sweetspot
-    certify --json`: a dict with standard, z_max, e_a, the measure by its name, moi_pivot, mass,
-    drop, barrel_diameter, checks (rule, value, limit, pass) and pass. e0, ball_speed (m/s) and
-    pivot (m from the knob) override the standard's rig; ball (a preset's name or a TOML file with a
-    [ball] table) replaces the standard's ball, the preset "ncaa"."""
-    return _certify(bat, standard, ball, e0, ball_speed, pivot, modes, theory)
+    """The bat in the virtual test rig of a standard, as `sweetspot certify --json`.
+
+    Parameters: bat, a Bat; standard "bbcor", "besr" or "bpf"; e0, ball_speed (m/s) and pivot (m
+    from the knob) override the standard's rig; ball (a preset's name or a TOML file with a [ball]
+    table) replaces the standard's ball, the preset "ncaa"; modes (a count, "all" or "auto") and
+    theory ("timoshenko" or "euler-bernoulli") of the bat's modes.
+    Returns: a Result, a dict with standard, z_max (m), e_a, the measure by its name, moi_pivot
+    (kg m^2), mass (kg), drop, barrel_diameter (m), checks (rule, value, limit, pass) and pass, and
+    `attrs`: the rig as run (scene_standard, scene_e0, scene_ball_speed, scene_pivot, scene_modes,
+    scene_theory; scene_ball when given), the bat and the program's version and commit, so that
+    certify(bat, **scene_of(result)) certifies again the same way."""
+    result = _certify(bat, standard, ball, e0, ball_speed, pivot, modes, theory)
+    scene = {"scene_standard": result["standard"]} | ({"scene_ball": str(ball)} if ball is not None else {})
+    scene |= {"scene_e0": result["e0"], "scene_ball_speed": result["ball_speed"], "scene_pivot": result["pivot"],
+              "scene_modes": modes if isinstance(modes, str) else int(modes), "scene_theory": theory}
+    return Result(result, _provenance("certification") | bat._source() | _with_units(scene))
 
 _POINT = tuple(_point_arguments())  # z, ball_speed, cm_speed, center, omega, e0, ball_mass, ...
 
@@ -92,15 +172,18 @@ def impact(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=No
     e0, ball_mass, ball_radius, k1 and a override its values.
     None means the program's default: e0 0.5, exact stepping at 10 us, modes "auto" (a count, "all"
     or "auto"); n2000=True takes RK4 at 5 us with 18 modes unless integrator, dt or modes are given.
-    The bat's modes are solved once per needed set and kept on the bat."""
-    result = _impact(bat, _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a,
-                                 pivot, modes, mode_tolerance, accuracy, integrator, dt, tolerance, window,
-                                 theory, n2000, ball))
+    The bat's modes are solved once per needed set and kept on the bat.
+
+    Returns: a Result, the dict above with `attrs` (the resolved scene as scene_*, the bat, the
+    program's version and commit); impact(bat, **scene_of(result)) computes it again bit for bit."""
+    args = _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, pivot, modes,
+                  mode_tolerance, accuracy, integrator, dt, tolerance, window, theory, n2000, ball)
+    result = _impact(bat, args)
     radius = ball_radius if ball_radius is not None else _ball(ball or "n2000")["radius"]
     if result["u_max"] > radius:
         warnings.warn(f"the ball compressed {1e3 * result['u_max']:.3g} mm, past its radius "
                       f"{1e3 * radius:.3g} mm: the force law is not meant for that", RuntimeWarning, stacklevel=2)
-    return result
+    return Result(result, _record(bat, args))
 
 
 def _attrs(name):
@@ -131,7 +214,14 @@ def impacts(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=N
     GIL released (`threads` of them, default OpenMP's: OMP_NUM_THREADS or every core), each needed set of modes solved once. Returns an xarray.Dataset with a study
     dataset's names, units and status flags: dims named after the array arguments when each is 1-D
     along its own axis (z=np.linspace(...), ball_speed=v[:, None] gives dims (ball_speed, z)), else
-    one dim `point` with the arguments as coordinates over it."""
+    one dim `point` with the arguments as coordinates over it.
+
+    Units: z, center (m from the knob), ball_speed, cm_speed (m/s), omega (rad/s), ball_mass (kg),
+    ball_radius (m), k1 (N m^-a), dt, window (s); e0, a, mode_tolerance, accuracy, tolerance are ratios.
+    Returns: an xarray.Dataset whose attributes record the resolved scene (scene_*, with
+    scene_units), the bat (bat, bat_slices, bat_toml where known), program_version, git_commit and
+    Conventions: impacts_like(ds) computes it again bit for bit, after ds.to_netcdf() and
+    xarray.open_dataset too."""
     import xarray as xr
 
     args = _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, pivot, modes,
@@ -161,11 +251,101 @@ def impacts(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=N
             names = _status_names()
             attrs |= {"flag_values": np.arange(len(names), dtype=np.int32), "flag_meanings": " ".join(names)}
         data[name] = (data_dims, values.reshape(data_shape), attrs)
-    attrs = {"bat": bat.name, "bat_slices": bat.slices}
-    attrs |= {f"scene_{k}": (v if not isinstance(v, bool) else int(v)) for k, v in scalars.items()
-              if v is not None and k not in _POINT}
-    attrs |= {f"scene_{k}": float(v) for k, v in scalars.items() if v is not None and k in _POINT}
-    return xr.Dataset(data, coords=coords, attrs=attrs)
+    return xr.Dataset(data, coords=coords, attrs=_record(bat, args, per_point=list(arrays)))
+
+
+# Attributes that record the scene but are no argument: the ball's name (scene_ball) sets them.
+_RECORD_ONLY = {"cor_slope", "cor_speed", "curved_contact"}
+
+
+def _attrs_of(result):
+    """The attributes of a dataset, a Result or a dict of attributes."""
+    return dict(result.attrs if hasattr(result, "attrs") else result)
+
+
+def scene_of(result):
+    """The keyword arguments that compute a stored result again.
+
+    Parameters: result, what impacts(), impact() or certify() returned, or that dataset read back
+    with xarray.open_dataset after to_netcdf(), or its attributes as a dict.
+    Returns: a dict of keyword arguments, for impacts(bat, **...) (the per-point arguments as
+    arrays shaped as the dataset's dimensions), impact(bat, **...) or certify(bat, **...) (kind
+    "certification"). Every value is the resolved one, so the defaults of a later version do not
+    change what is computed."""
+    attrs = _attrs_of(result)
+    certification = attrs.get("kind") == "certification"
+    kwargs = {}
+    for name, value in attrs.items():
+        key = name.removeprefix("scene_")
+        if key == name or key == "units" or key in _RECORD_ONLY:
+            continue
+        if isinstance(value, (str, bytes)):
+            kwargs[key] = value.decode() if isinstance(value, bytes) else value
+        elif key == "modes":
+            kwargs[key] = int(value)  # a count (netCDF gives numpy integers back)
+        elif key == "pivot" and not certification:
+            kwargs[key] = bool(value)  # the swing's flag; the rig's pivot is a point (m)
+        else:
+            kwargs[key] = float(value)
+    if hasattr(result, "dims") and "status" in result:  # a dataset: its per-point arguments
+        dims = result["status"].dims
+        for key in _POINT:
+            if key in result.coords and key not in kwargs:
+                values = np.asarray(result[key].values, dtype=float)
+                (dim,) = result[key].dims
+                if dim == "point":
+                    kwargs[key] = values
+                else:  # along its own axis of the dataset, as impacts broadcast it
+                    shape = [1] * len(dims)
+                    shape[dims.index(dim)] = values.size
+                    kwargs[key] = values.reshape(shape)
+    return kwargs
+
+
+def bat_of(result, *, path=None):
+    """The bat a stored result was computed on, rebuilt from its attributes.
+
+    Parameters: result, as scene_of takes it; path, a bat file to load instead when the result
+    stores no bat file's text (a bat made with Bat.from_knots).
+    Returns: a Bat with the stored slices: from the stored text (bat_toml, with bat_profile) if
+    there is one, else from `path`. Raises ValueError when neither is there."""
+    attrs = _attrs_of(result)
+    slices = int(attrs["bat_slices"]) if "bat_slices" in attrs else None
+    if "bat_toml" in attrs:
+        return Bat.from_text(attrs["bat_toml"], attrs.get("bat_profile"), slices=slices,
+                             name=str(attrs.get("bat_file", "bat_toml")))
+    if path is not None:
+        return Bat.load(path, slices=slices)
+    raise ValueError(f"bat {attrs.get('bat', '?')!r}: the result stores no bat file's text (a bat made from knots); "
+                     "expected path=, the bat's file")
+
+
+def impacts_like(result, bat=None, *, threads=None):
+    """Computes a stored impacts() result again: impacts(bat, **scene_of(result)).
+
+    Parameters: result, an impacts() dataset (or one read back with xarray.open_dataset); bat,
+    the Bat (default: bat_of(result), rebuilt from the stored bat file's text); threads as impacts'.
+    Returns: the new dataset, bit for bit the stored one's numbers when the program and bat are the
+    same. Raises ValueError when the new run's resolved scene or bat differs from the stored one
+    (a ball file changed since, another bat), naming the attributes that differ."""
+    if bat is None:
+        bat = bat_of(result)
+    again = impacts(bat, threads=threads, **scene_of(result))
+    stored = _attrs_of(result)
+    differ = [k for k, v in again.attrs.items()
+              if (k.startswith("scene_") or k in ("bat", "bat_slices", "bat_toml", "bat_profile"))
+              and k in stored and not _same_attribute(stored[k], v)]
+    if differ:
+        raise ValueError("impacts_like: not the stored scene: " +
+                         ", ".join(f"{k} = {again.attrs[k]!r}, stored {stored[k]!r}" for k in differ))
+    return again
+
+
+def _same_attribute(a, b):
+    """Attributes equal as netCDF gives them back (numpy scalars for numbers)."""
+    if isinstance(a, (str, bytes)) or isinstance(b, (str, bytes)):
+        return str(a) == str(b)
+    return bool(np.array_equal(np.asarray(a), np.asarray(b)))
 
 
 def _program():
@@ -180,8 +360,12 @@ def _program():
 
 
 def run_study(path, output=None):
-    """Runs a study file with the program (`sweetspot run PATH -o OUTPUT --quiet`) and returns its
-    dataset, read into memory. output None: a temporary file, removed afterwards."""
+    """Runs a study file with the program (`sweetspot run PATH -o OUTPUT --quiet`).
+
+    Parameters: path, the study file; output, where the dataset is written (None: a temporary
+    file, removed afterwards).
+    Returns: the study's dataset (xarray.Dataset, read into memory), with the program's provenance.
+    Raises ValueError with the program's message when it refuses the study."""
     import xarray as xr
 
     with tempfile.TemporaryDirectory() as scratch:
