@@ -205,4 +205,8 @@ BeamTheory parse_beam_theory(const std::string& text) {
   throw InputError("theory '" + text + "': expected 'timoshenko' or 'euler-bernoulli'");
 }
 
+int vibrational_mode_count(int slices, BeamTheory theory) {
+  return (theory == BeamTheory::timoshenko ? 2 * slices : 2 * (slices + 1)) - 2;
+}
+
 }  // namespace sweetspot

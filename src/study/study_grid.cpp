@@ -14,10 +14,6 @@ std::size_t Study::points() const {
   return n;
 }
 
-int vibrational_mode_count(int slices, BeamTheory theory) {
-  return (theory == BeamTheory::timoshenko ? 2 * slices : 2 * (slices + 1)) - 2;
-}
-
 std::vector<std::size_t> design_axes(const Study& study) {
   std::vector<std::size_t> axes;
   for (std::size_t k = 0; k < study.axes.size(); ++k)

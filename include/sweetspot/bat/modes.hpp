@@ -95,6 +95,10 @@ ModalBasis compute_modes(const Bat& bat, BeamTheory theory, ModeRequest request 
 // The discretisation's mass matrix M (diagonal for Timoshenko, consistent for Euler-Bernoulli).
 Eigen::MatrixXd beam_mass_matrix(const Bat& bat, BeamTheory theory);
 
+// Vibrational modes a discretisation has: Timoshenko has two degrees of freedom per slice,
+// Euler-Bernoulli two per slice boundary; two modes are rigid.
+int vibrational_mode_count(int slices, BeamTheory theory);
+
 const char* to_string(BeamTheory theory);
 // Throws InputError for anything but "timoshenko" or "euler-bernoulli".
 BeamTheory parse_beam_theory(const std::string& text);

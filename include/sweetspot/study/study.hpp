@@ -187,9 +187,6 @@ std::vector<std::size_t> design_axes(const Study& study);
 // The design of a point with these coordinates (one per axis).
 std::size_t design_index(const Study& study, const std::vector<std::size_t>& coords);
 
-// Vibrational modes a discretisation has (modes.cpp): Timoshenko has two degrees of freedom per
-// slice, Euler-Bernoulli two per slice boundary; two modes are rigid.
-int vibrational_mode_count(int slices, BeamTheory theory);
 
 // Grid point `index` in row-major order over the axes (last axis fastest); throws
 // std::out_of_range for index >= points().
