@@ -250,6 +250,7 @@ PYBIND11_MODULE(_sweetspot, m) {
                std::to_string(b.bat().slices()) + " slices>";
       });
   bind_bat_design(m, bat);
+  bind_quantity_arguments(m);
 
   m.def("_impact", [](BatHandle& bat, const py::dict& args) {
     const SceneArgs scene = scene_args(args);
