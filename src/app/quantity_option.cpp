@@ -1,5 +1,6 @@
 #include "quantity_option.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
 #include <optional>
@@ -33,6 +34,13 @@ std::string expected(Dimension dimension, std::string_view plain_unit) {
   return "a " + std::string(dimension_name(dimension)) + " " + hint;
 }
 
+// The option's type in --help: "FLOAT:length", "FLOAT:angular_speed".
+std::string type_name(Dimension dimension) {
+  std::string name(dimension_name(dimension));
+  std::ranges::replace(name, ' ', '_');
+  return name;
+}
+
 }  // namespace
 
 CLI::Validator quantity_option(Dimension dimension, std::string_view plain_unit) {
@@ -45,7 +53,7 @@ CLI::Validator quantity_option(Dimension dimension, std::string_view plain_unit)
         value = exact_text(unit ? in_unit(*si, *unit) : *si);
         return {};
       },
-      std::string(dimension_name(dimension)));
+      type_name(dimension));
 }
 
 }  // namespace sweetspot::app
