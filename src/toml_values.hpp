@@ -1,10 +1,13 @@
 #pragma once
 // Internal: how bat and study files quote the values they reject, the same in every message.
+#include <optional>
 #include <sstream>
 #include <string>
 #include <string_view>
 
 #include <toml++/toml.h>
+
+#include "sweetspot/units/quantity.hpp"
 
 namespace sweetspot::detail {
 
@@ -45,6 +48,22 @@ inline std::string describe(const toml::node& node) {
     node.visit([&](const auto& value) { out << value; });
   out << " (" << node.type() << ")";
   return out.str();
+}
+
+// A length, mass, speed... as a file gives it: a number, in SI units as ever, or a string with
+// its unit ("33 in", "136 mph": units/quantity.hpp). A number passes as it is (the caller's own
+// checks refuse NaN, as before); a string that is not a finite quantity of that dimension, or any
+// other type, gives nothing, for the caller to refuse with its own message.
+inline std::optional<double> quantity(const toml::node& node, Dimension dimension) {
+  if (node.is_number()) return node.value<double>();
+  if (node.is_string()) return parse_quantity(node.as_string()->get(), dimension);
+  return std::nullopt;
+}
+
+// The value of a key that takes a quantity, where a string is one of the forms expected and so
+// needs no "(string)" after it.
+inline std::string describe_quantity(const toml::node& node) {
+  return node.is_string() ? quote(node.as_string()->get()) : describe(node);
 }
 
 }  // namespace sweetspot::detail

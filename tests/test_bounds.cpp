@@ -144,7 +144,7 @@ TEST_CASE("Usage errors: one line in the program's style, exit status 2", "[boun
   const Case cases[] = {
       {"impact --bat " + r161, "impact: --z is required"},
       {impact + " --center 0.1 --spin", "impact: The following argument was not expected: --spin"},
-      {"impact --bat " + r161 + " --z abc --ball-speed 40 --center 0.1", "impact: Could not convert: --z = abc"},
+      {"impact --bat " + r161 + " --z abc --ball-speed 40 --center 0.1", "impact: --z: \"abc\": expected a length"},
       {"modes " + r161 + " --slices 3", "modes: --slices: Value 3 not in range 4 to 4096"},
       {"run study.toml --quiet --verbose", "run: --quiet excludes --verbose"},
       {impact + " --center 0.1 --cm-speed 3", "impact: --cm-speed excludes --center"},

@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "display_units.hpp"
 #include "json.hpp"
+#include "quantity_option.hpp"
 #include "sweetspot/ball/ball_file.hpp"
 #include "sweetspot/bat/inch_pound.hpp"
 #include "sweetspot/impact/ball_lab.hpp"
@@ -26,6 +28,7 @@ struct BallCommand {
   double cylinder_diameter = 2.625 * inch;  // a BBCOR barrel
   double cylinder_speed_mph = 60;
   bool json = false;
+  DisplayUnits units;
 };
 
 Json test_json(const BallLabTest& t) {
@@ -78,10 +81,14 @@ void run_ball(const BallCommand& o) {
     std::printf("%s\n", out.text().c_str());
     return;
   }
-  std::printf("ball %s: %.4g kg, radius %.4g m; F = %.4g u^%.4g (from %s, residual %.2g)\n", o.ball.c_str(), b.mass,
-              b.radius, b.k1, b.a, fit.stiffness_from.c_str(), fit.stiffness_residual);
-  std::printf("COR %.4f at %.4g m/s (%.4g mph), %.4g per m/s (%.4g per mph); fit residual %.2g; %s contact\n", b.e0,
-              b.cor_speed, b.cor_speed / mph, b.cor_slope, b.cor_slope * mph, fit.cor_residual,
+  const DisplayUnits& u = o.units;
+  const DisplayUnits si = DisplayUnits::si_units(), us = DisplayUnits::us_units();
+  std::printf("ball %s: %s, radius %s; F = %.4g u^%.4g (from %s, residual %.2g)\n", o.ball.c_str(),
+              u.mass(b.mass, "%.4g").c_str(), u.length(b.radius, "%.4g").c_str(), b.k1, b.a,
+              fit.stiffness_from.c_str(), fit.stiffness_residual);
+  std::printf("COR %.4f at %s, %s; fit residual %.2g; %s contact\n", b.e0,
+              u.both(si.speed(b.cor_speed, "%.4g"), us.speed(b.cor_speed, "%.4g")).c_str(),
+              u.both(si.per_speed(b.cor_slope, "%.4g"), us.per_speed(b.cor_slope, "%.4g")).c_str(), fit.cor_residual,
               b.curved_contact ? "curved" : "flat");
   std::printf("%-9s %6s %7s  %-6s  %9s  %8s %8s  %s\n", "surface", "mph", "m/s", "COR", "F_peak/N", "DS lbf/in",
               "kN/m", "contact/ms");
@@ -98,12 +105,22 @@ void add_ball_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("ball", "The standard ball tests (COR against speed, cylinder COR, dynamic "
                                              "stiffness) run on a ball of the model");
   cmd->add_option("ball", o->ball, "a preset's name or a TOML file with a [ball] table")->capture_default_str();
-  cmd->add_option("--speeds", o->speeds_mph, "flat-wall test speeds, mph")->capture_default_str();
-  cmd->add_option("--cylinder-diameter", o->cylinder_diameter, "the rigid cylinder's diameter, m")
+  cmd->add_option("--speeds", o->speeds_mph, "flat-wall test speeds, mph (plain numbers), or e.g. 40m/s")
+      ->transform(quantity_option(Dimension::speed, "mph"))
       ->capture_default_str();
-  cmd->add_option("--cylinder-speed", o->cylinder_speed_mph, "the cylinder test's speed, mph")->capture_default_str();
-  cmd->add_flag("--json", o->json, "print one JSON object");
-  cmd->callback([o] { run_ball(*o); });
+  cmd->add_option("--cylinder-diameter", o->cylinder_diameter, "the rigid cylinder's diameter, m, or e.g. 2.625in")
+      ->transform(quantity_option(Dimension::length))
+      ->capture_default_str();
+  cmd->add_option("--cylinder-speed", o->cylinder_speed_mph,
+                  "the cylinder test's speed, mph (plain numbers), or e.g. 27m/s")
+      ->transform(quantity_option(Dimension::speed, "mph"))
+      ->capture_default_str();
+  cmd->add_flag("--json", o->json, "print one JSON object (in SI units)");
+  o->units.add_option(*cmd);
+  cmd->callback([o] {
+    o->units.check_text_output("ball", o->json);
+    run_ball(*o);
+  });
 }
 
 }  // namespace sweetspot::app

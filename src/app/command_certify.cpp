@@ -6,7 +6,9 @@
 #include <string>
 
 #include "commands.hpp"
+#include "display_units.hpp"
 #include "json.hpp"
+#include "quantity_option.hpp"
 #include "sweetspot/ball/ball_file.hpp"
 #include "sweetspot/bat/bat_design.hpp"
 #include "sweetspot/impact/certification.hpp"
@@ -22,6 +24,7 @@ struct CertifyCommand {
   std::string modes = "auto";
   std::string ball = "ncaa";  // the standards' ball (standards.hpp)
   bool json = false;
+  DisplayUnits units;
   std::optional<double> e0, ball_speed, pivot;
   CertifyOptions options;
 };
@@ -65,22 +68,35 @@ void print_json(const std::string& ball, const Certification& c) {
   std::printf("%s\n", Json(out).text().c_str());
 }
 
-void print_text(const std::string& bat_name, const std::string& ball, const Certification& c) {
+// The swing weight as the rules give it, and the slices' own: one line in either system.
+std::string moi_text(const Certification& c, const DisplayUnits& u) {
+  const DisplayUnits si = DisplayUnits::si_units(), us = DisplayUnits::us_units();
+  if (!u.us())
+    return si.moment_of_inertia(c.moi_pivot, "%.6f") + " (" + us.moment_of_inertia(c.moi_pivot, "%.0f") +
+           "; the model's slices: " + DisplayUnits::number(c.moi_pivot_model, "%.6f") + ")";
+  return us.moment_of_inertia(c.moi_pivot, "%.0f") + " (" + si.moment_of_inertia(c.moi_pivot, "%.6f") +
+         "; the model's slices: " + us.moment_of_inertia(c.moi_pivot_model, "%.0f") + ")";
+}
+
+void print_text(const std::string& bat_name, const std::string& ball, const Certification& c, const DisplayUnits& u) {
   const Standard& s = c.standard;
+  const DisplayUnits si = DisplayUnits::si_units(), us = DisplayUnits::us_units();
   std::printf("%s against %s: %s\n", bat_name.c_str(), s.title.c_str(), c.pass ? "PASS" : "FAIL");
-  std::printf("rig             pivot %.4f m from the knob, ball %.4g m/s (%.4g mph)\n", s.pivot, s.ball_speed,
-              s.ball_speed / metres_per_second_per_mph);
-  std::printf("ball            %s: %.4g kg, COR %.4g at %.4g m/s, %.3g per m/s; %.4g on a flat wall at the rig's speed\n",
-              ball.c_str(), s.ball.mass, s.ball.e0, s.ball.cor_speed, s.ball.cor_slope, s.ball.cor_at(s.ball_speed));
-  std::printf("maximum %-7s %.6f at z = %.5f m from the knob (%.2f in from the barrel end)\n",
-              to_string(s.measure), c.measure, c.z_max, (c.length - c.z_max) / metres_per_inch);
+  std::printf("rig             pivot %s from the knob, ball %s\n", u.length(s.pivot, "%.4f").c_str(),
+              u.both(si.speed(s.ball_speed, "%.4g"), us.speed(s.ball_speed, "%.4g")).c_str());
+  std::printf("ball            %s: %s, COR %.4g at %s, %s; %.4g on a flat wall at the rig's speed\n", ball.c_str(),
+              u.mass(s.ball.mass, "%.4g").c_str(), s.ball.e0, u.speed(s.ball.cor_speed, "%.4g").c_str(),
+              u.per_speed(s.ball.cor_slope, "%.3g").c_str(), s.ball.cor_at(s.ball_speed));
+  std::printf("maximum %-7s %.6f at z = %s from the knob (%.2f in from the barrel end)\n", to_string(s.measure),
+              c.measure, u.length(c.z_max, "%.5f").c_str(), (c.length - c.z_max) / metres_per_inch);
   std::printf("e_a             %.6f there (bbcor %.6f, besr %.6f, bpf %.6f)\n", c.at_max.e_a, c.at_max.bbcor,
               c.at_max.besr, c.at_max.bpf);
-  std::printf("MOI about pivot %.6f kg m^2 (%.0f oz in^2; the model's slices: %.6f)\n", c.moi_pivot,
-              c.moi_pivot / (kilograms_per_ounce * metres_per_inch * metres_per_inch), c.moi_pivot_model);
-  std::printf("length          %.4f m (%.2f in), weight %.4f kg (%.2f oz), drop %.2f\n", c.length,
-              c.length / metres_per_inch, c.mass, c.mass / kilograms_per_ounce, c.drop);
-  std::printf("barrel diameter %.5f m (%.4f in)\n", c.barrel_diameter, c.barrel_diameter / metres_per_inch);
+  std::printf("MOI about pivot %s\n", moi_text(c, u).c_str());
+  std::printf("length          %s, weight %s, drop %.2f\n",
+              u.both(si.length(c.length, "%.4f"), us.length(c.length, "%.2f")).c_str(),
+              u.both(si.mass(c.mass, "%.4f"), us.mass(c.mass, "%.2f")).c_str(), c.drop);
+  std::printf("barrel diameter %s\n",
+              u.both(si.length(c.barrel_diameter, "%.5f"), us.length(c.barrel_diameter, "%.4f")).c_str());
   if (std::isfinite(c.hoop_frequency)) {
     std::printf("barrel wall     hoop frequency %.5g Hz, compression %.5g N (%.4g lbf) at 0.04 in, there\n",
                 c.hoop_frequency, c.barrel_compression, c.barrel_compression / newtons_per_pound_force);
@@ -109,7 +125,7 @@ void run_certify(CertifyCommand& o) {
   o.options.theory = parse_beam_theory(o.theory);
   const Certification c = certify(design, find_standard(o.standard), o.options);
   if (o.json) print_json(o.ball, c);
-  else print_text(design.name, o.ball, c);
+  else print_text(design.name, o.ball, c, o.units);
   if (!c.pass) exit_status = failed_check;
 }
 
@@ -124,16 +140,22 @@ void add_certify_command(CLI::App& app) {
   cmd->add_option("--ball", o->ball, "the rig's ball: a preset's name or a TOML file with a [ball] table")
       ->capture_default_str();
   cmd->add_option("--e0", o->e0, "the ball's COR on a rigid flat wall at its reference speed [default: the ball's]");
-  cmd->add_option("--ball-speed", o->ball_speed, "the rig's ball speed, m/s [default: the standard's]");
-  cmd->add_option("--pivot-point", o->pivot, "the rig's pivot, m from the knob [default: 0.1524, 6 in]");
+  cmd->add_option("--ball-speed", o->ball_speed, "the rig's ball speed, m/s, or e.g. 93mph [default: the standard's]")
+      ->transform(quantity_option(Dimension::speed));
+  cmd->add_option("--pivot-point", o->pivot, "the rig's pivot, m from the knob, or e.g. 6in [default: 0.1524, 6 in]")
+      ->transform(quantity_option(Dimension::length));
   cmd->add_option("--theory", o->theory, "beam theory")
       ->check(CLI::IsMember({"timoshenko", "euler-bernoulli"}))
       ->capture_default_str();
   cmd->add_option("--slices", o->options.slices, "slice count N (default: the bat's own)")
       ->check(CLI::Range(min_slices, max_slices));
   cmd->add_option("--modes", o->modes, "vibrational modes kept: a number, 'all' or 'auto'")->capture_default_str();
-  cmd->add_flag("--json", o->json, "print one JSON object");
-  cmd->callback([o] { run_certify(*o); });
+  cmd->add_flag("--json", o->json, "print one JSON object (in SI units)");
+  o->units.add_option(*cmd);
+  cmd->callback([o] {
+    o->units.check_text_output("certify", o->json);
+    run_certify(*o);
+  });
 }
 
 }  // namespace sweetspot::app

@@ -7,7 +7,9 @@
 #include <string>
 
 #include "commands.hpp"
+#include "display_units.hpp"
 #include "json.hpp"
+#include "quantity_option.hpp"
 #include "sweetspot/ball/ball_file.hpp"
 #include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/impact/impact.hpp"
@@ -25,6 +27,7 @@ struct ImpactOptions {
   std::optional<double> cm_speed, center;
   std::string modes = "auto";
   bool json = false;
+  DisplayUnits units;
   ImpactScene scene;
   std::string named_ball;
 };
@@ -73,17 +76,18 @@ void print_json(const ImpactResult& r, const Bat& bat) {
   std::printf("%s\n", Json(out).text().c_str());
 }
 
-void print_text(const ImpactResult& r) {
+void print_text(const ImpactResult& r, const DisplayUnits& u) {
   std::printf("status          %s%s%s\n", to_string(r.status), r.message.empty() ? "" : ": ", r.message.c_str());
-  std::printf("impact at z     %.4f m from the knob\n", r.z);
-  std::printf("exit speed vf   %.6g m/s\n", r.vf);
+  std::printf("impact at z     %s from the knob\n", u.length(r.z, "%.4f").c_str());
+  std::printf("exit speed vf   %s\n", u.speed(r.vf, "%.6g").c_str());
   std::printf("e_eff           %.6g\n", r.e_eff);
-  std::printf("bat speed       %.6g m/s at the impact point; e_a %.6g\n", r.bat_speed, r.rig.e_a);
+  std::printf("bat speed       %s at the impact point; e_a %.6g\n", u.speed(r.bat_speed, "%.6g").c_str(), r.rig.e_a);
   if (std::isfinite(r.rig.bbcor))
     std::printf("held at the pivot: bbcor %.6g, besr %.6g, bpf %.6g\n", r.rig.bbcor, r.rig.besr, r.rig.bpf);
   std::printf("contact time    %.4g ms (%d contact%s)\n", 1e3 * r.contact_time, r.contacts, r.contacts == 1 ? "" : "s");
   std::printf("collision time  %.4g ms (99 %% of the impulse)\n", 1e3 * r.collision_time);
-  std::printf("max compression %.4g mm, peak force %.5g N, impulse %.5g N s\n", 1e3 * r.u_max, r.peak_force, r.impulse);
+  std::printf("max compression %s, peak force %.5g N, impulse %.5g N s\n", u.small_length(r.u_max, "%.4g").c_str(),
+              r.peak_force, r.impulse);
   const ImpactEnergy& e = r.energy;
   std::printf("energy/J        initial %.6g = ball %.6g + bat translation %.6g + rotation %.6g\n", e.initial, e.ball,
               e.bat_translation, e.bat_rotation);
@@ -93,8 +97,8 @@ void print_text(const ImpactResult& r) {
     std::printf("                + dissipated by the bat's damping %.6g\n", e.damped);
     std::printf("                + residual %.3g; the wall's hoop frequency %.5g Hz\n", e.residual, r.hoop_frequency);
     if (std::isfinite(r.barrel_compression_eff))
-      std::printf("wall's load     phi_2 %.5g, other harmonics %.4g m/N, at compression %.4g mm\n", r.barrel_phi,
-                  r.barrel_compliance, 1e3 * r.barrel_compression_eff);
+      std::printf("wall's load     phi_2 %.5g, other harmonics %.4g m/N, at compression %s\n", r.barrel_phi,
+                  r.barrel_compliance, u.small_length(r.barrel_compression_eff, "%.4g").c_str());
   } else if (e.damped != 0) {  // a damped beam
     std::printf("                + vibration %.6g + dissipated in the ball %.6g + by the bat's damping %.6g\n",
                 e.vibration, e.ball_dissipated, e.damped);
@@ -126,7 +130,7 @@ void run_impact(ImpactOptions& o) {
   const ImpactResult r = simulate_impact(basis, o.scene);
   if (r.status == CollisionStatus::refused_step) throw InputError("--dt: " + r.message);
   if (o.json) print_json(r, bat);
-  else print_text(r);
+  else print_text(r, o.units);
   if (r.u_max > o.scene.ball.radius)
     std::fprintf(stderr, "sweetspot: warning: the ball compressed %.3g mm, past its radius %.3g mm: the force law is "
                          "not meant for that\n",
@@ -160,8 +164,12 @@ Json barrel_json(const BarrelCalibration& b) {
 void add_ball_options(CLI::App& cmd, Ball& ball, std::string& named_ball) {
   cmd.add_option("--ball", named_ball, "the ball: a preset's name or a TOML file with a [ball] table [default: n2000]");
   cmd.add_option("--e0", ball.e0, "coefficient of restitution on a rigid wall, in (0, 1]")->capture_default_str();
-  cmd.add_option("--ball-mass", ball.mass, "ball mass, kg")->capture_default_str();
-  cmd.add_option("--ball-radius", ball.radius, "ball radius, m")->capture_default_str();
+  cmd.add_option("--ball-mass", ball.mass, "ball mass, kg, or e.g. 5.125oz")
+      ->transform(quantity_option(Dimension::mass))
+      ->capture_default_str();
+  cmd.add_option("--ball-radius", ball.radius, "ball radius, m, or e.g. 1.45in")
+      ->transform(quantity_option(Dimension::length))
+      ->capture_default_str();
   cmd.add_option("--k1", ball.k1, "ball stiffness k1, N/m^a")->capture_default_str();
   cmd.add_option("--a", ball.a, "ball compression exponent a")->capture_default_str();
 }
@@ -216,13 +224,22 @@ void add_impact_command(CLI::App& app) {
       ->check(CLI::IsMember({"timoshenko", "euler-bernoulli"}))
       ->capture_default_str();
   cmd->add_option("--slices", o->slices, "slice count N (default: the profile's own)")->check(CLI::Range(min_slices, max_slices));
-  cmd->add_option("--z", o->scene.z, "impact location, m from the knob (anywhere on the bat)")->required();
-  cmd->add_option("--ball-speed", o->scene.ball_speed, "ball speed toward the bat, m/s")->required();
-  auto* cm = cmd->add_option("--cm-speed", o->cm_speed, "bat centre-of-mass speed toward the ball, m/s");
-  auto* center = cmd->add_option("--center", o->center, "rotation centre (the point at rest), m from the knob");
+  cmd->add_option("--z", o->scene.z, "impact location, m from the knob (anywhere on the bat), or e.g. 28in")
+      ->transform(quantity_option(Dimension::length))
+      ->required();
+  cmd->add_option("--ball-speed", o->scene.ball_speed, "ball speed toward the bat, m/s, or e.g. 85mph")
+      ->transform(quantity_option(Dimension::speed))
+      ->required();
+  auto* cm = cmd->add_option("--cm-speed", o->cm_speed, "bat centre-of-mass speed toward the ball, m/s, or e.g. 50mph")
+                 ->transform(quantity_option(Dimension::speed));
+  auto* center =
+      cmd->add_option("--center", o->center, "rotation centre (the point at rest), m from the knob, or e.g. 3.5in")
+          ->transform(quantity_option(Dimension::length));
   cm->excludes(center);
   center->excludes(cm);
-  cmd->add_option("--omega", o->scene.swing.omega, "bat angular velocity, rad/s")->capture_default_str();
+  cmd->add_option("--omega", o->scene.swing.omega, "bat angular velocity, rad/s, or e.g. 480rpm")
+      ->transform(quantity_option(Dimension::angular_speed))
+      ->capture_default_str();
   cmd->add_flag("--pivot", o->scene.pivoted, "hold the bat at the rotation centre (N2000 Fig. 16)");
   cmd->add_option("--modes", o->modes, "vibrational modes kept: a number, 'all' or 'auto' [default: auto; 18 with "
                                        "--n2000]");
@@ -233,8 +250,10 @@ void add_impact_command(CLI::App& app) {
                   "relative vf error the integration may add: chooses the step (or tolerance) instead of --dt");
   add_ball_options(*cmd, o->scene.ball, o->named_ball);
   add_integrator_options(*cmd, o->scene.integrator);
-  cmd->add_flag("--json", o->json, "print one JSON object");
+  cmd->add_flag("--json", o->json, "print one JSON object (in SI units)");
+  o->units.add_option(*cmd);
   cmd->callback([o, cmd] {
+    o->units.check_text_output("impact", o->json);
     resolve_integrator(*cmd, o->scene.integrator);
     resolve_ball(*cmd, o->named_ball, o->scene.ball);
     if (cmd->count("--n2000") && cmd->count("--modes") == 0) o->modes = std::to_string(n2000_modes);

@@ -4,8 +4,10 @@
 #include <string>
 
 #include "commands.hpp"
+#include "display_units.hpp"
 #include "json.hpp"
 #include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/bat/inch_pound.hpp"
 #include "sweetspot/input_error.hpp"
 #include "sweetspot/bat/modes.hpp"
 
@@ -20,6 +22,7 @@ struct ModesOptions {
   int count = 10;
   bool json = false;
   bool shapes = false;
+  DisplayUnits units;
 };
 
 // psi of vibrational mode `mode` (1 = the first) at the slice centres, scaled to max |psi| = 1
@@ -31,18 +34,23 @@ std::vector<double> unit_shape(const ModalBasis& basis, int mode) {
   return {unit.begin(), unit.end()};
 }
 
-void print_table(const Bat& bat, const MassProperties& mp, const ModalBasis& basis, int count) {
-  std::printf("bat %s: L = %.4g m, %d slices, %s\n", bat.name.c_str(), bat.length, bat.slices(),
+void print_table(const Bat& bat, const MassProperties& mp, const ModalBasis& basis, int count, const DisplayUnits& u) {
+  std::printf("bat %s: L = %s, %d slices, %s\n", bat.name.c_str(), u.length(bat.length, "%.4g").c_str(), bat.slices(),
               to_string(basis.theory));
-  std::printf("mass %.4f kg, centre of mass %.4f m from the knob, radius of gyration %.4f m\n", mp.mass,
-              mp.z_cm, mp.radius_of_gyration());
-  std::printf("moment of inertia %.5f kg m^2 about the CM, %.5f kg m^2 about the knob\n\n",
-              mp.moment_of_inertia_cm, mp.moment_of_inertia_about(0));
-  std::printf("%5s %12s   %s\n", "mode", "frequency/Hz", "nodes/cm from the knob");
+  std::printf("mass %s, centre of mass %s from the knob, radius of gyration %s\n", u.mass(mp.mass, "%.4f").c_str(),
+              u.length(mp.z_cm, "%.4f").c_str(), u.length(mp.radius_of_gyration(), "%.4f").c_str());
+  // The swing weight in oz in^2 needs no decimals; kg m^2 needs five.
+  const char* moi_format = u.us() ? "%.0f" : "%.5f";
+  std::printf("moment of inertia %s about the CM, %s about the knob\n\n",
+              u.moment_of_inertia(mp.moment_of_inertia_cm, moi_format).c_str(),
+              u.moment_of_inertia(mp.moment_of_inertia_about(0), moi_format).c_str());
+  // Nodes in cm (SI) or in (US), one decimal either way.
+  const double node_scale = u.us() ? 1 / metres_per_inch : 100;
+  std::printf("%5s %12s   %s\n", "mode", "frequency/Hz", u.us() ? "nodes/in from the knob" : "nodes/cm from the knob");
   const auto f = basis.vibrational_frequencies_hz();
   for (int mode = 1; mode <= count; ++mode) {
     std::printf("%5d %12.1f  ", mode, f[mode - 1]);
-    for (double z : basis.nodes(mode + 1)) std::printf(" %5.1f", 100 * z);
+    for (double z : basis.nodes(mode + 1)) std::printf(" %5.1f", node_scale * z);
     std::printf("\n");
   }
 }
@@ -82,7 +90,7 @@ void run_modes(const ModesOptions& o) {
   const ModalBasis basis = compute_modes(bat, theory, ModeRequest::lowest(o.count));
   const MassProperties mp = mass_properties(bat);
   if (o.json) print_json(bat, mp, basis, o.count, o.shapes);
-  else print_table(bat, mp, basis, o.count);
+  else print_table(bat, mp, basis, o.count, o.units);
 }
 
 }  // namespace
@@ -99,11 +107,15 @@ void add_modes_command(CLI::App& app) {
   cmd->add_option("--count", options->count, "vibrational modes to print")
       ->check(CLI::Range(1, 2 * max_slices))
       ->capture_default_str();
-  CLI::Option* json = cmd->add_flag("--json", options->json, "print one JSON object");
+  CLI::Option* json = cmd->add_flag("--json", options->json, "print one JSON object (in SI units)");
+  options->units.add_option(*cmd);
   cmd->add_flag("--shapes", options->shapes,
                 "with --json: add the slice centres z_m and the shapes of the modes there (max |psi| = 1)")
       ->needs(json);
-  cmd->callback([options] { run_modes(*options); });
+  cmd->callback([options] {
+    options->units.check_text_output("modes", options->json);
+    run_modes(*options);
+  });
 }
 
 }  // namespace sweetspot::app

@@ -4,7 +4,9 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "display_units.hpp"
 #include "json.hpp"
+#include "quantity_option.hpp"
 #include "sweetspot/input_error.hpp"
 #include "sweetspot/impact/wall.hpp"
 
@@ -18,6 +20,7 @@ struct WallOptions {
   double speed = 0;
   CollisionOptions integrator;
   bool json = false;
+  DisplayUnits units;
 };
 
 void run_wall(const WallOptions& o) {
@@ -41,8 +44,8 @@ void run_wall(const WallOptions& o) {
   }
   std::printf("status %s\nrestitution %.9g\ncollision time %.4g ms (99 %% of the impulse)\n", to_string(r.status),
               r.e_eff, 1e3 * r.collision_time);
-  std::printf("contact time %.4g ms\nmax compression %.4g mm\npeak force %.5g N\n", 1e3 * r.contact_time,
-              1e3 * r.u_max, r.peak_force);
+  std::printf("contact time %.4g ms\nmax compression %s\npeak force %.5g N\n", 1e3 * r.contact_time,
+              o.units.small_length(r.u_max, "%.4g").c_str(), r.peak_force);
 }
 
 }  // namespace
@@ -50,11 +53,15 @@ void run_wall(const WallOptions& o) {
 void add_wall_command(CLI::App& app) {
   auto o = std::make_shared<WallOptions>();
   CLI::App* cmd = app.add_subcommand("wall", "The ball on a rigid, immovable wall (N2000 Fig. 3)");
-  cmd->add_option("--speed", o->speed, "ball speed, m/s")->required();
+  cmd->add_option("--speed", o->speed, "ball speed, m/s, or e.g. 60mph")
+      ->transform(quantity_option(Dimension::speed))
+      ->required();
   add_ball_options(*cmd, o->ball, o->named_ball);
   add_integrator_options(*cmd, o->integrator);
-  cmd->add_flag("--json", o->json, "print one JSON object");
+  cmd->add_flag("--json", o->json, "print one JSON object (in SI units)");
+  o->units.add_option(*cmd);
   cmd->callback([o, cmd] {
+    o->units.check_text_output("wall", o->json);
     resolve_integrator(*cmd, o->integrator);
     resolve_ball(*cmd, o->named_ball, o->ball);
     run_wall(*o);

@@ -28,13 +28,27 @@ double number(const toml::table& t, std::string_view key, const std::string& whe
   return *node.value<double>();
 }
 
+// A mass, length or speed: a number in SI or a string with its unit ("5.125 oz", "60 mph").
+double quantity_at(const toml::node& node, std::string_view key, Dimension dimension, const std::string& where) {
+  const std::optional<double> x = quantity(node, dimension);
+  if (!x || !std::isfinite(*x))
+    throw InputError(where + ": " + std::string(key) + " = " + describe_quantity(node) + ": expected " +
+                     expected_quantity(dimension));
+  return *x;
+}
+
+double quantity_key(const toml::table& t, std::string_view key, Dimension dimension, const std::string& where) {
+  return quantity_at(*t.get(key), key, dimension, where);
+}
+
 // A value at one speed (`value_key` a number, at `speed_key` or 60 mph) or at several
 // (`value_key` = [[speed, value], ...]).
 std::vector<SpeedValue> speed_values(const toml::table& t, std::string_view value_key, std::string_view speed_key,
                                      const std::string& where) {
   const toml::node& node = *t.get(value_key);
   if (node.is_number()) {
-    const double speed = t.contains(speed_key) ? number(t, speed_key, where) : 60 * metres_per_second_per_mph;
+    const double speed =
+        t.contains(speed_key) ? quantity_key(t, speed_key, Dimension::speed, where) : 60 * metres_per_second_per_mph;
     return {{speed, *node.value<double>()}};
   }
   const toml::array* rows = node.as_array();
@@ -43,9 +57,9 @@ std::vector<SpeedValue> speed_values(const toml::table& t, std::string_view valu
   std::vector<SpeedValue> values;
   for (const toml::node& row : *rows) {
     const toml::array* pair = row.as_array();
-    if (!pair || pair->size() != 2 || !(*pair)[0].is_number() || !(*pair)[1].is_number())
-      reject(where, value_key, row, "[speed, value] pairs of numbers (m/s, value)");
-    values.push_back({*(*pair)[0].value<double>(), *(*pair)[1].value<double>()});
+    if (!pair || pair->size() != 2 || !((*pair)[0].is_number() || (*pair)[0].is_string()) || !(*pair)[1].is_number())
+      reject(where, value_key, row, "[speed, value] pairs (the speed in m/s or as \"60 mph\", the value a number)");
+    values.push_back({quantity_at((*pair)[0], value_key, Dimension::speed, where), *(*pair)[1].value<double>()});
   }
   return values;
 }
@@ -79,8 +93,8 @@ BallFit read_ball_table(const toml::table& table, const std::string& where) {
   }
   if (table.empty())
     throw InputError(where + ": is empty: expected a preset or the ball's test values (" + join(known_keys) + ")");
-  if (table.contains("mass")) t.mass = number(table, "mass", where);
-  if (table.contains("radius")) t.radius = number(table, "radius", where);
+  if (table.contains("mass")) t.mass = quantity_key(table, "mass", Dimension::mass, where);
+  if (table.contains("radius")) t.radius = quantity_key(table, "radius", Dimension::length, where);
   if (table.contains("cor")) {
     t.cor = speed_values(table, "cor", "cor_speed", where);
     t.cor_slope = 0;
@@ -93,13 +107,13 @@ BallFit read_ball_table(const toml::table& table, const std::string& where) {
     t.dynamic_stiffness = speed_values(table, "dynamic_stiffness", "stiffness_speed", where);
   }
   if (table.contains("stiffness_cylinder_diameter"))
-    t.stiffness_cylinder_diameter = number(table, "stiffness_cylinder_diameter", where);
+    t.stiffness_cylinder_diameter = quantity_key(table, "stiffness_cylinder_diameter", Dimension::length, where);
   if (table.contains("compression")) {
     clear_stiffness(t);
     t.compression_force = positive_number(table, "compression", where);
   }
   if (table.contains("compression_displacement"))
-    t.compression_displacement = number(table, "compression_displacement", where);
+    t.compression_displacement = quantity_key(table, "compression_displacement", Dimension::length, where);
   if (table.contains("k1")) {
     clear_stiffness(t);
     t.k1 = positive_number(table, "k1", where);

@@ -127,6 +127,12 @@ std::vector<std::string> design_parameters(const BatDesign& design) {
   return names;
 }
 
+std::optional<Dimension> design_parameter_dimension(std::string_view name) {
+  if (name == "length" || std::ranges::find(dimension_fields, name, &DimensionField::name) != dimension_fields.end())
+    return Dimension::length;
+  return std::nullopt;
+}
+
 void set_design_parameter(BatDesign& design, std::string_view name, double value) {
   double* parameter = find_parameter(design, name);
   if (!parameter) no_parameter(design, name, " = " + format_number(value));

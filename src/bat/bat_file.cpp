@@ -147,6 +147,23 @@ struct Section {
          "value " + describe(node) + " must be a " + (nan_or_inf ? "finite " : "") + number);
   }
 
+  // A quantity of `dimension`, as a number in SI or a string with its unit ("33 in"), finite and
+  // accepted by `ok`, which `what` states ("positive, finite length"); `fallback` when absent.
+  template <class Ok>
+  double quantity(std::string_view key, Dimension dimension, Ok ok, std::string_view what,
+                  std::optional<double> fallback = std::nullopt) const {
+    const std::string expected = std::string(what) + " " + quantity_hint(dimension);
+    if (fallback && !table.contains(key)) return *fallback;
+    const toml::node& node = require(key, "a " + expected);
+    const std::optional<double> x = detail::quantity(node, dimension);
+    if (x && std::isfinite(*x) && ok(*x)) return *x;
+    fail(where(key), "value " + detail::describe_quantity(node) + " must be a " + expected);
+  }
+
+  double positive_length(std::string_view key) const {
+    return quantity(key, Dimension::length, [](double x) { return x > 0; }, "positive, finite length");
+  }
+
   // A finite number in [0, 1), `fallback` when the key is absent: a loss factor.
   double fraction(std::string_view key, double fallback) const {
     if (!table.contains(key)) return fallback;
@@ -156,13 +173,9 @@ struct Section {
     fail(where(key), "value " + describe(node) + " must be a number in [0, 1)");
   }
 
-  // A finite number of at least 0, 0 when the key is absent (a dimension the bat does not have).
-  double non_negative(std::string_view key, std::string_view unit) const {
-    if (!table.contains(key)) return 0;
-    const toml::node& node = *table.get(key);
-    const auto x = node.is_number() ? node.value<double>() : std::nullopt;
-    if (x && std::isfinite(*x) && *x >= 0) return *x;
-    fail(where(key), "value " + describe(node) + " must be a finite number of at least 0 (" + std::string(unit) + ")");
+  // A finite length of at least 0, 0 when the key is absent (a dimension the bat does not have).
+  double non_negative_length(std::string_view key) const {
+    return quantity(key, Dimension::length, [](double x) { return x >= 0; }, "finite length of at least 0", 0.0);
   }
 
   // A string naming one of a few choices, as `parse` reads it: its refusal ("...: expected 'a' or
@@ -230,6 +243,12 @@ double measured(const Section& s, std::string_view key, double low, double high,
                          format_number(low) + " to " + format_number(high));
 }
 
+// The measured hoop frequency: a number in Hz, or a string with its unit ("1.5 kHz").
+double measured_frequency(const Section& s, std::string_view key, double low, double high) {
+  return s.quantity(key, Dimension::frequency, [&](double x) { return x >= low && x <= high; },
+                    "measured frequency from " + format_number(low) + " to " + format_number(high) + " Hz", 0.0);
+}
+
 WallLoad parse_wall_load(const std::string& text) {
   if (text == "patch") return WallLoad::patch;
   if (text == "point") return WallLoad::point;
@@ -249,11 +268,11 @@ void read_barrel(const Section& top, BatDesign& design) {
                               "[dimensions], or a profile with inner_diameter_m)");
   BarrelCalibration& b = design.material.barrel;
   if (s.table.contains("load")) b.load = s.choice("load", parse_wall_load);
-  b.hoop_frequency = measured(s, "hoop_frequency", 100, 20000, "hoop frequency (Hz)");
+  b.hoop_frequency = measured_frequency(s, "hoop_frequency", 100, 20000);
   b.compression = measured(s, "compression", 10, 1e6, "barrel compression (N at 0.04 in)");
 }
 
-// [dimensions] (dimensions.hpp): lengths in m; end and its depth and the wall optional.
+// [dimensions] (dimensions.hpp): lengths in m or with a unit ("2.625 in"); end and its depth and the wall optional.
 Dimensions read_dimension_table(const Section& s) {
   std::vector<std::string_view> known = {"end"};
   for (const DimensionField& f : dimension_fields) known.push_back(f.name);
@@ -261,7 +280,7 @@ Dimensions read_dimension_table(const Section& s) {
   Dimensions d;
   for (const DimensionField& f : dimension_fields) {
     const bool positive = !f.optional || (f.positive_when_given && s.table.contains(f.name));
-    d.*f.value = positive ? s.positive(f.name, "m") : s.non_negative(f.name, "m");
+    d.*f.value = positive ? s.positive_length(f.name) : s.non_negative_length(f.name);
   }
   if (s.table.contains("end")) d.end = s.choice("end", parse_end_shape);
   return d;
@@ -537,7 +556,7 @@ BatDesign parse_bat_design(BatSource& source, ProfileText profile_text) {
   top.reject_unknown({"name", "length", "material", "profile", "dimensions", "interpolation", "slices", "barrel"});
   BatDesign design;
   design.name = top.text("name");
-  design.length = top.positive("length", "m");
+  design.length = top.positive_length("length");
   read_material(top.section("material"), design);
   const ProfileOptions options = read_profile_options(top);
   design.slices = options.slices;

@@ -10,17 +10,19 @@ namespace sweetspot::optimize_detail {
 
 namespace {
 
+// A window's bounds may be written with a unit ("2.625 in", "31 oz") where it has a dimension.
 struct WindowKey {
   std::string_view name;
   Quantity quantity;
   const char* unit;
+  std::optional<Dimension> dimension;
 };
-constexpr WindowKey windows[] = {{"barrel_diameter", Quantity::barrel_diameter, "m"},
-                                 {"drop", Quantity::drop, "length in inches minus weight in ounces"},
-                                 {"mass", Quantity::mass, "kg"},
-                                 {"moi_knob", Quantity::moi_knob, "kg m^2"},
-                                 {"moi_pivot", Quantity::moi_pivot, "kg m^2"},
-                                 {"length", Quantity::length, "m"}};
+constexpr WindowKey windows[] = {{"barrel_diameter", Quantity::barrel_diameter, "m", Dimension::length},
+                                 {"drop", Quantity::drop, "length in inches minus weight in ounces", std::nullopt},
+                                 {"mass", Quantity::mass, "kg", Dimension::mass},
+                                 {"moi_knob", Quantity::moi_knob, "kg m^2", std::nullopt},
+                                 {"moi_pivot", Quantity::moi_pivot, "kg m^2", std::nullopt},
+                                 {"length", Quantity::length, "m", Dimension::length}};
 
 void read_window(const Where& at, const toml::node& node, const WindowKey& w, std::vector<Constraint>& out) {
   const std::string expected = std::string("{ min = ..., max = ... } (") + w.unit + "), either or both";
@@ -28,7 +30,8 @@ void read_window(const Where& at, const toml::node& node, const WindowKey& w, st
   const toml::table& t = *node.as_table();
   reject_unknown(at, t, {"min", "max"});
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  const double lo = number_key(at, t, "min", nan, finite, "a finite bound"), hi = number_key(at, t, "max", nan, finite, "a finite bound");
+  const double lo = number_key(at, t, "min", nan, finite, "a finite bound", w.dimension),
+               hi = number_key(at, t, "max", nan, finite, "a finite bound", w.dimension);
   if (t.get("min") && t.get("max") && !(lo < hi))
     reject(at.child("max", *t.get("max")), format_number(hi), "expected a bound above min = " + format_number(lo));
   if (t.get("min")) out.push_back({w.quantity, std::string(w.name), false, lo});

@@ -45,8 +45,9 @@ FreeParameter read_free_parameter(const Where& at, const toml::node& node, const
   if (!node.is_table()) reject(at, describe(node), "expected a table { min = ..., max = ... [, start = ...] }");
   const toml::table& t = *node.as_table();
   reject_unknown(at, t, {"min", "max", "start"});
-  FreeParameter p{name, required_number(at, t, "min", finite, "a finite lower bound"),
-                  required_number(at, t, "max", finite, "a finite upper bound"), 0};
+  const std::optional<Dimension> dimension = design_parameter_dimension(name);  // "2.5 in" for a dimension
+  FreeParameter p{name, required_number(at, t, "min", finite, "a finite lower bound", dimension),
+                  required_number(at, t, "max", finite, "a finite upper bound", dimension), 0};
   if (!(p.lower < p.upper))
     reject(at.child("max", *t.get("max")), format_number(p.upper), "expected a bound above min = " + format_number(p.lower));
   check_bound(at.child("min", *t.get("min")), base, name, p.lower);
@@ -54,7 +55,7 @@ FreeParameter read_free_parameter(const Where& at, const toml::node& node, const
   const double base_value = design_parameter(base, name);
   const auto inside = [&](double v) { return v >= p.lower && v <= p.upper; };
   if (t.get("start"))
-    p.start = number_key(at, t, "start", 0, inside, "a start within [min, max]");
+    p.start = number_key(at, t, "start", 0, inside, "a start within [min, max]", dimension);
   else if (!inside(base_value))
     reject(at, describe(node),
            "the base bat's " + name + " = " + format_number(base_value) +
@@ -112,11 +113,13 @@ Player read_player(const Where& top, const toml::table& doc, OptimizationProblem
     reject(center ? at.child("cm_speed", *t.get("cm_speed")) : at.missing("center"), center ? "given too" : "",
            "expected the swing's rotation centre `center` (m from the knob) or its `cm_speed` (m/s), one of them");
   p.swing.about_center = center;
-  if (center) p.swing.center = number_key(at, t, "center", 0, finite, "a finite point (m from the knob)");
-  if (cm) p.swing.cm_speed = number_key(at, t, "cm_speed", 0, finite, "a finite speed (m/s)");
-  p.swing.omega = required_number(at, t, "omega", finite, "the swing's angular speed (rad/s), finite");
+  if (center)
+    p.swing.center = number_key(at, t, "center", 0, finite, "a finite point from the knob", Dimension::length);
+  if (cm) p.swing.cm_speed = number_key(at, t, "cm_speed", 0, finite, "a finite speed", Dimension::speed);
+  p.swing.omega =
+      required_number(at, t, "omega", finite, "the swing's angular speed, finite", Dimension::angular_speed);
   p.ball_speed = required_number(at, t, "ball_speed", [](double v) { return v >= 0; },
-                                 "the pitch's speed toward the bat (m/s), finite and >= 0");
+                                 "the pitch's speed toward the bat, finite and >= 0", Dimension::speed);
   // The pitched ball: the file's [ball] table (README "Balls"), N2000's without one; e0 sets its COR.
   if (const toml::node* ball = doc.get("ball")) {
     if (!ball->is_table()) reject(top.child("ball", *ball), describe(*ball), "expected a table [ball]");

@@ -25,10 +25,10 @@ void read_scan(const Where& at, const toml::table& t, ObjectiveSpec& o, double l
   reject_unknown(z, range, {"start", "stop", "step"});
   const std::string on_bat = "a point on every design (0 to " + format_number(length) + " m)";
   const auto on = [&](double v) { return v >= 0 && v <= length; };
-  o.z_from = required_number(z, range, "start", on, on_bat);
-  o.z_to = required_number(z, range, "stop", on, on_bat);
+  o.z_from = required_number(z, range, "start", on, on_bat, Dimension::length);
+  o.z_to = required_number(z, range, "stop", on, on_bat, Dimension::length);
   if (!(o.z_to > o.z_from)) reject(z.child("stop", *range.get("stop")), format_number(o.z_to), "expected stop > start");
-  o.z_step = required_number(z, range, "step", positive, "a step > 0 (m)");
+  o.z_step = required_number(z, range, "step", positive, "a step > 0", Dimension::length);
   const double points = std::ceil((o.z_to - o.z_from) / o.z_step);
   if (points < 2 || points > 1e4)
     reject(z.child("step", *range.get("step")), format_number(o.z_step), "expected a step giving 3 to 10^4 points");
@@ -47,12 +47,14 @@ void gauss_hermite(double mean, double sigma, int count, ObjectiveSpec& o) {
   }
 }
 
-std::vector<double> number_list(const Where& at, const toml::node& node, const std::string& expected) {
+std::vector<double> number_list(const Where& at, const toml::node& node, const std::string& expected,
+                                std::optional<Dimension> dimension = std::nullopt) {
   if (!node.is_array() || node.as_array()->empty() || node.as_array()->size() > 1000)
     reject(at, describe(node), "expected a list of 1 to 1000 " + expected);
   std::vector<double> values;
   std::size_t i = 0;
-  for (const toml::node& item : *node.as_array()) values.push_back(number(at.item(i++, item), item, expected));
+  for (const toml::node& item : *node.as_array())
+    values.push_back(number(at.item(i++, item), item, expected, dimension));
   return values;
 }
 
@@ -68,14 +70,16 @@ void read_spread(const Where& at, const toml::table& t, ObjectiveSpec& o, double
     if (!spread->is_table()) reject(s, describe(*spread), "expected { mean = ..., sigma = ..., points = ... }");
     const toml::table& st = *spread->as_table();
     reject_unknown(s, st, {"mean", "sigma", "points"});
-    const double mean = required_number(s, st, "mean", finite, "the mean impact point (m from the knob)");
-    const double sigma = required_number(s, st, "sigma", positive, "the spread's standard deviation > 0 (m)");
+    const double mean =
+        required_number(s, st, "mean", finite, "the mean impact point from the knob", Dimension::length);
+    const double sigma =
+        required_number(s, st, "sigma", positive, "the spread's standard deviation > 0", Dimension::length);
     const double count = number_key(s, st, "points", 7, [](double v) { return v == std::floor(v) && v >= 1 && v <= 40; },
                                     "an integer number of quadrature points from 1 to 40");
     gauss_hermite(mean, sigma, static_cast<int>(count), o);
   } else {
     const Where p = at.child("points", *points);
-    o.z = number_list(p, *points, "impact points (m from the knob)");
+    o.z = number_list(p, *points, "impact points from the knob", Dimension::length);
     const toml::node* weights = t.get("weights");
     if (!weights) reject(at.missing("weights"), "", "expected one weight per impact point");
     const Where w = at.child("weights", *weights);

@@ -3,6 +3,7 @@
 // refusals (study_settings.hpp: "file:line: key 'free.density.min' = ...: expected ..."), and the
 // sections read in files of their own.
 #include <cmath>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -21,28 +22,45 @@ using study_detail::Where;
 
 inline const toml::node* child(const toml::table& table, std::string_view key) { return table.get(key); }
 
-inline double number(const Where& at, const toml::node& node, const std::string& expected) {
-  if (!node.is_number() || !std::isfinite(*node.value<double>())) reject(at, describe(node), "expected " + expected);
-  return *node.value<double>();
+// "expected ...", with the units a value of that dimension may be written in.
+inline std::string expected_text(const std::string& expected, std::optional<Dimension> dimension) {
+  std::string text = "expected " + expected;
+  if (dimension) text.append(" ").append(quantity_hint(*dimension));
+  return text;
+}
+
+// A value's refusal: with a dimension, the value may be a string with a unit ("28 in": toml_values.hpp).
+[[noreturn]] inline void reject_value(const Where& at, const toml::node& node, const std::string& expected,
+                                      std::optional<Dimension> dimension) {
+  reject(at, dimension ? detail::describe_quantity(node) : describe(node), expected_text(expected, dimension));
+}
+
+// A finite number; with a dimension, also a string with a unit, read into SI.
+inline double number(const Where& at, const toml::node& node, const std::string& expected,
+                     std::optional<Dimension> dimension = std::nullopt) {
+  const std::optional<double> x =
+      dimension ? detail::quantity(node, *dimension) : node.is_number() ? node.value<double>() : std::nullopt;
+  if (!x || !std::isfinite(*x)) reject_value(at, node, expected, dimension);
+  return *x;
 }
 
 // A number that must satisfy `ok`; `fallback` when absent.
 template <class Ok>
 double number_key(const Where& table, const toml::table& t, std::string_view key, double fallback, Ok ok,
-                  const std::string& expected) {
+                  const std::string& expected, std::optional<Dimension> dimension = std::nullopt) {
   const toml::node* node = child(t, key);
   if (!node) return fallback;
   const Where at = table.child(key, *node);
-  const double v = number(at, *node, expected);
-  if (!ok(v)) reject(at, describe(*node), "expected " + expected);
+  const double v = number(at, *node, expected, dimension);
+  if (!ok(v)) reject_value(at, *node, expected, dimension);
   return v;
 }
 
 template <class Ok>
 double required_number(const Where& table, const toml::table& t, std::string_view key, Ok ok,
-                       const std::string& expected) {
-  if (!child(t, key)) reject(table.missing(key), "", "expected " + expected);
-  return number_key(table, t, key, 0, ok, expected);
+                       const std::string& expected, std::optional<Dimension> dimension = std::nullopt) {
+  if (!child(t, key)) reject(table.missing(key), "", expected_text(expected, dimension));
+  return number_key(table, t, key, 0, ok, expected, dimension);
 }
 
 inline std::string string_key(const Where& table, const toml::table& t, std::string_view key, const std::string& fallback,

@@ -290,6 +290,7 @@ outer_diameter and inner_diameter (per slice, m).)");
                std::to_string(b.bat().slices()) + " slices>";
       });
   bind_bat_design(m, bat);
+  bind_quantity_arguments(m);
 
   m.def("_impact", [](BatHandle& bat, const py::dict& args) {
     const SceneArgs scene = scene_args(args);

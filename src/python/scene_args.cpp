@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include <pybind11/stl.h>
+
 #include "sweetspot/ball/ball_file.hpp"
 #include "sweetspot/impact/n2000_settings.hpp"
 #include "sweetspot/input_error.hpp"
@@ -29,7 +31,51 @@ double number(const std::string& name, const py::handle& value) {
   }
 }
 
+// A point argument: a quantity where it has a dimension, else a plain number.
+double point_number(const std::string& name, const py::handle& value) {
+  const std::optional<Dimension> dimension = point_argument_dimension(name);
+  return dimension ? quantity_argument(name, value, *dimension) : number(name, value);
+}
+
+Dimension dimension_named(const std::string& name) {
+  for (const Dimension d : {Dimension::length, Dimension::mass, Dimension::speed, Dimension::angular_speed,
+                            Dimension::frequency})
+    if (dimension_name(d) == name) return d;
+  throw py::value_error("unknown dimension '" + name + "'");
+}
+
 }  // namespace
+
+std::optional<Dimension> point_argument_dimension(const std::string& name) {
+  if (name == "z" || name == "center" || name == "ball_radius") return Dimension::length;
+  if (name == "ball_speed" || name == "cm_speed") return Dimension::speed;
+  if (name == "omega") return Dimension::angular_speed;
+  if (name == "ball_mass") return Dimension::mass;
+  return std::nullopt;
+}
+
+double quantity_argument(const std::string& name, const py::handle& value, Dimension dimension) {
+  if (!py::isinstance<py::str>(value)) {
+    try {
+      return value.cast<double>();
+    } catch (const py::cast_error&) {
+    }
+  } else if (const std::optional<double> si = parse_quantity(value.cast<std::string>(), dimension)) {
+    return *si;
+  }
+  throw InputError(name + " " + py::repr(value).cast<std::string>() + ": expected " + expected_quantity(dimension));
+}
+
+void bind_quantity_arguments(py::module_& m) {
+  m.def(
+      "_si",
+      [](const std::string& name, const py::object& value, std::optional<std::string> dimension) -> py::object {
+        if (!py::isinstance<py::str>(value)) return value;
+        const std::optional<Dimension> d = dimension ? dimension_named(*dimension) : point_argument_dimension(name);
+        return d ? py::float_(quantity_argument(name, value, *d)) : value;
+      },
+      py::arg("name"), py::arg("value"), py::arg("dimension") = py::none());
+}
 
 void set_point_argument(ImpactScene& s, int which, double v) {
   switch (which) {
@@ -80,7 +126,8 @@ SceneArgs scene_args(const py::dict& args, const std::set<std::string>& per_poin
   }
   const auto& names = point_arguments();
   for (std::size_t k = 0; k < names.size(); ++k)
-    if (has(names[k].c_str())) set_point_argument(s, static_cast<int>(k), number(names[k], get(names[k].c_str())));
+    if (has(names[k].c_str()))
+      set_point_argument(s, static_cast<int>(k), point_number(names[k], get(names[k].c_str())));
   if (!given.contains("z")) throw InputError("impact: z is required");
   if (!given.contains("ball_speed")) throw InputError("impact: ball_speed is required");
   const bool cm = given.contains("cm_speed"), center = given.contains("center");

@@ -1,6 +1,7 @@
 #pragma once
 // The keyword arguments of sweetspot.impact and sweetspot.impacts as a scene, checked as the
 // program checks its options (src/app/command_impact.cpp): the same defaults, the same refusals.
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -9,6 +10,7 @@
 
 #include "sweetspot/bat/modes.hpp"
 #include "sweetspot/impact/scene.hpp"
+#include "sweetspot/units/quantity.hpp"
 
 namespace sweetspot::python {
 
@@ -18,6 +20,18 @@ inline const std::vector<std::string>& point_arguments() {
                                                  "e0", "ball_mass",  "ball_radius", "k1",     "a"};
   return names;
 }
+
+// The dimension of a point argument ("z": length, "ball_speed": speed), or nothing (e0, k1, a).
+std::optional<Dimension> point_argument_dimension(const std::string& name);
+
+// A length, mass or speed as Python gives it: a number (SI), or a string with its unit ("28 in",
+// "136 mph"). Throws InputError "z '31 oz': expected a length (...)" otherwise.
+double quantity_argument(const std::string& name, const pybind11::handle& value, Dimension dimension);
+
+// sweetspot._si(name, value, dimension=None): a string with a unit as SI, anything else as it is
+// (numbers, arrays, None), for the package's own argument conversion; `dimension` ("length",
+// "mass", "speed", "angular speed") defaults to the point argument's.
+void bind_quantity_arguments(pybind11::module_& m);
 
 // Sets one point argument (an index into point_arguments()) on the scene. No Python involved:
 // called with the GIL released.

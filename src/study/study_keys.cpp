@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "sweetspot/bat/bat.hpp"
+#include "sweetspot/bat/bat_design.hpp"
 #include "sweetspot/impact/histories.hpp"
 #include "toml_values.hpp"
 
@@ -36,19 +37,19 @@ constexpr KeySpec keys[] = {
      [](GridPoint& p, double x) { p.standard = static_cast<std::size_t>(x); }, certification, 0, false},
     {"rig_e0", Type::number, "a number in (0, 1] (the rig ball's COR; default the standard's)", unit_interval,
      [](GridPoint& p, double x) { p.rig_e0 = x; }, certification},
-    {"rig_ball_speed", Type::number, "a finite number > 0 (m/s; default the standard's)", positive,
-     [](GridPoint& p, double x) { p.rig_ball_speed = x; }, certification},
-    {"z", Type::number, "a finite number >= 0 (m from the knob)", on_bat,
-     [](GridPoint& p, double x) { p.scene.z = x; }, impact, impact},
+    {"rig_ball_speed", Type::number, "a finite speed > 0 (default the standard's)", positive,
+     [](GridPoint& p, double x) { p.rig_ball_speed = x; }, certification, 0, true, Dimension::speed},
+    {"z", Type::number, "a length >= 0 from the knob", on_bat,
+     [](GridPoint& p, double x) { p.scene.z = x; }, impact, impact, true, Dimension::length},
     // The wall takes only speeds > 0: check_wall_speeds.
-    {"ball_speed", Type::number, "a finite number (m/s)", finite,
-     [](GridPoint& p, double x) { p.scene.ball_speed = x; }, ball_kinds, ball_kinds},
+    {"ball_speed", Type::number, "a finite speed", finite,
+     [](GridPoint& p, double x) { p.scene.ball_speed = x; }, ball_kinds, ball_kinds, true, Dimension::speed},
     {"e0", Type::number, "a number in (0, 1]", unit_interval, [](GridPoint& p, double x) { p.scene.ball.e0 = x; },
      ball_kinds},
-    {"ball_mass", Type::number, "a finite number > 0 (kg)", positive,
-     [](GridPoint& p, double x) { p.scene.ball.mass = x; }, ball_kinds},
-    {"ball_radius", Type::number, "a finite number > 0 (m)", positive,
-     [](GridPoint& p, double x) { p.scene.ball.radius = x; }, ball_kinds},
+    {"ball_mass", Type::number, "a mass > 0", positive,
+     [](GridPoint& p, double x) { p.scene.ball.mass = x; }, ball_kinds, 0, true, Dimension::mass},
+    {"ball_radius", Type::number, "a length > 0", positive,
+     [](GridPoint& p, double x) { p.scene.ball.radius = x; }, ball_kinds, 0, true, Dimension::length},
     {"k1", Type::number, "a finite number > 0 (N/m^a)", positive, [](GridPoint& p, double x) { p.scene.ball.k1 = x; },
      ball_kinds},
     {"a", Type::number, "a finite number > 0", positive, [](GridPoint& p, double x) { p.scene.ball.a = x; },
@@ -56,21 +57,24 @@ constexpr KeySpec keys[] = {
     // The ball's COR law (contact/ball.hpp): its fall with speed and the speed where the COR is e0.
     {"cor_slope", Type::number, "a finite number <= 0 (per m/s: how the COR falls with speed)", non_positive,
      [](GridPoint& p, double x) { p.scene.ball.cor_slope = x; }, ball_kinds},
-    {"cor_speed", Type::number, "a number in [0, 100] (m/s: where the COR is e0)", cor_speed,
-     [](GridPoint& p, double x) { p.scene.ball.cor_speed = x; }, ball_kinds},
+    {"cor_speed", Type::number, "a speed from 0 to 100 m/s (where the COR is e0)", cor_speed,
+     [](GridPoint& p, double x) { p.scene.ball.cor_speed = x; }, ball_kinds, 0, true, Dimension::speed},
     {"curved_contact", Type::boolean, "true or false (the ball meets the barrel's curvature)", any,
      [](GridPoint& p, double x) { p.scene.ball.curved_contact = x != 0; }, ball_kinds},
-    {"center", Type::number, "a finite number (m from the knob)", finite,
+    {"center", Type::number, "a finite length from the knob", finite,
      [](GridPoint& p, double x) {
        p.scene.swing.center = x;
        p.scene.swing.about_center = true;
-     }},
-    {"cm_speed", Type::number, "a finite number (m/s)", finite,
+     },
+     impact, 0, true, Dimension::length},
+    {"cm_speed", Type::number, "a finite speed", finite,
      [](GridPoint& p, double x) {
        p.scene.swing.cm_speed = x;
        p.scene.swing.about_center = false;
-     }},
-    {"omega", Type::number, "a finite number (rad/s)", finite, [](GridPoint& p, double x) { p.scene.swing.omega = x; }},
+     },
+     impact, 0, true, Dimension::speed},
+    {"omega", Type::number, "a finite angular speed", finite, [](GridPoint& p, double x) { p.scene.swing.omega = x; },
+     impact, 0, true, Dimension::angular_speed},
     {"pivot", Type::boolean, "true or false", any, [](GridPoint& p, double x) { p.scene.pivoted = x != 0; }},
     // Equal effort scales each bat's swing from the reference bat's by their MOIs (grid_point).
     {"swing", Type::swing, "\"given\" or \"equal_effort\" (the swing scaled by the bat's MOI)", any,
@@ -79,8 +83,8 @@ constexpr KeySpec keys[] = {
      [](GridPoint&, double) {}, impact, 0, false},
     {"swing_exponent", Type::number, "a finite number > 0 (n in swing speed ~ MOI^-n)", positive,
      [](GridPoint& p, double x) { p.swing_exponent = x; }},
-    {"e_a_speed", Type::number, "a finite number > 0 (m/s: the speed e_A is taken at for bbs_linear)", positive,
-     [](GridPoint& p, double x) { p.scene.e_a_speed = x; }},
+    {"e_a_speed", Type::number, "a speed > 0 (the speed e_A is taken at for bbs_linear)", positive,
+     [](GridPoint& p, double x) { p.scene.e_a_speed = x; }, impact, 0, true, Dimension::speed},
     {"modes", Type::modes, "a number of vibrational modes >= 0, \"all\" or \"auto\"", mode_count,
      [](GridPoint& p, double x) { p.scene.vibrational_modes = static_cast<int>(x); }, bat_kinds},
     {"mode_tolerance", Type::number, "a finite number > 0 (relative vf error allowed the dropped modes)", positive,
@@ -99,8 +103,8 @@ constexpr KeySpec keys[] = {
     {"window", Type::number, "a finite number > 0 (s)", positive,
      [](GridPoint& p, double x) { p.scene.integrator.window = x; }, ball_kinds},
     // Histories shape the dataset's dimensions (probe, time), so they are never axes.
-    {"probes", Type::numbers, "a list of points on the bat, each a finite number >= 0 (m from the knob)", on_bat,
-     [](GridPoint& p, double x) { p.scene.history.probes.push_back(x); }, impact, 0, false},
+    {"probes", Type::numbers, "a list of points on the bat, each a length >= 0 from the knob", on_bat,
+     [](GridPoint& p, double x) { p.scene.history.probes.push_back(x); }, impact, 0, false, Dimension::length},
     {"history_window", Type::number, "a finite number > 0 (s of history from first touch)", positive,
      [](GridPoint& p, double x) { p.scene.history.window = x; }, ball_kinds, 0, false},
     {"history_step", Type::number, "a finite number > 0 (s between history samples)", positive,
@@ -168,7 +172,9 @@ std::vector<std::string> output_list(StudyKind kind, KindSet OutputSpec::*member
 
 // A bat's own parameters set the point's design (design_index), not its scene.
 constexpr KeySpec bat_parameter{"bat.", Type::bat_parameter,
-                                "a finite number, the bat parameter in SI units (m, kg/m^3, Pa)", finite,
+                                "a finite number, the bat parameter in SI units (m, kg/m^3, Pa), or a dimension "
+                                "with its unit (\"2.625 in\")",
+                                finite,
                                 [](GridPoint&, double) {}, bat_kinds};
 constexpr KeySpec bat_material{"bat.material", Type::material, "the name of a wood preset", any,
                                [](GridPoint&, double) {}, bat_kinds};
@@ -186,6 +192,11 @@ const KeySpec* find_key(std::string_view name) {
   if (is_bat_parameter(name)) return &bat_parameter;
   const auto it = std::ranges::find(keys, name, &KeySpec::name);
   return it == std::end(keys) ? nullptr : &*it;
+}
+
+std::optional<Dimension> key_dimension(const KeySpec& spec, std::string_view name) {
+  if (spec.type == Type::bat_parameter) return design_parameter_dimension(name.substr(bat_parameter_prefix.size()));
+  return spec.dimension;
 }
 
 std::string key_list(StudyKind kind, bool axes_only) {

@@ -2,12 +2,14 @@
 // Internal to the study code: the [scene] keys and the outputs of each kind of study, as tables
 // that reading (study_reading.cpp), checking (study_checks.cpp) and the grid (study_grid.cpp)
 // all look up, so that a key is described, validated and applied in one place.
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "sweetspot/study/study.hpp"
+#include "sweetspot/units/quantity.hpp"
 
 namespace sweetspot::study_detail {
 
@@ -34,7 +36,8 @@ enum class Type {
 
 // One key of [scene]: how its value is read, the rule validate() in scene.cpp applies to it, how
 // it sets a grid point, and the kinds of study it belongs to and must be given in. Every value
-// is a number here (see Axis in study.hpp).
+// is a number here (see Axis in study.hpp). A key with a `dimension` also takes a string with a
+// unit ("28 in"); its `expected` then names the dimension, and messages add the units.
 struct KeySpec {
   std::string_view name;
   Type type;
@@ -44,6 +47,7 @@ struct KeySpec {
   KindSet kinds = impact;
   KindSet required = 0;
   bool axis = true;
+  std::optional<Dimension> dimension = std::nullopt;
 };
 
 // Every [scene] key, in the order of the table of keys.
@@ -51,6 +55,8 @@ std::span<const KeySpec> scene_key_specs();
 // The key of that name, or nullptr. Every "bat.NAME" finds the one spec of bat parameters (or of
 // bat.material): which parameters a bat has is for its design to say (study_checks.cpp).
 const KeySpec* find_key(std::string_view name);
+// The dimension of the key `name` (spec's, or a bat parameter's from its name), if it has one.
+std::optional<Dimension> key_dimension(const KeySpec& spec, std::string_view name);
 // The keys of a kind (only those that may be axes, with axes_only), comma-separated for messages.
 std::string key_list(StudyKind kind, bool axes_only);
 

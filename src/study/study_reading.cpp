@@ -17,6 +17,7 @@
 namespace sweetspot::study_detail {
 
 using detail::describe;
+using detail::describe_quantity;
 using detail::format_number;
 using detail::quote;
 
@@ -95,11 +96,22 @@ struct Value {
   std::string label;
 };
 
-Value read_value(const Where& at, const KeySpec& spec, const toml::node& node) {
-  const auto bad = [&] { reject(at, describe(node), "expected " + std::string(spec.expected)); };
+// A value the key takes, with the units it may be written in when it has a dimension.
+std::string expected_value(const KeySpec& spec, std::optional<Dimension> dimension) {
+  return std::string(spec.expected) + (dimension ? " " + quantity_hint(*dimension) : "");
+}
+
+Value read_value(const Where& at, const KeySpec& spec, std::optional<Dimension> dimension, const toml::node& node) {
+  const auto bad = [&] {
+    reject(at, dimension ? describe_quantity(node) : describe(node), "expected " + expected_value(spec, dimension));
+  };
   Value v;
   const bool numeric = spec.type == Type::number || spec.type == Type::numbers || spec.type == Type::bat_parameter;
-  if (numeric && node.is_number())
+  if (numeric && dimension && node.is_string()) {
+    const std::optional<double> x = detail::quantity(node, *dimension);
+    if (!x) bad();
+    v.number = *x;
+  } else if (numeric && node.is_number())
     v.number = *node.value<double>();
   else if ((spec.type == Type::integer || spec.type == Type::modes) && node.is_integer())
     v.number = static_cast<double>(node.as_integer()->get());
@@ -148,17 +160,27 @@ double tidy(double x) {
   return std::strtod(text, nullptr);
 }
 
-double range_bound(const Where& at, const toml::table& range, std::string_view name, bool integer) {
+// A bound (start, stop or step) of a range: for a key with a dimension, in any of its units.
+double range_bound(const Where& at, const toml::table& range, std::string_view name, bool integer,
+                   std::optional<Dimension> dimension) {
   const toml::node* node = range.get(name);
   if (!node) reject(at.missing(name), "", "a range needs start, stop and either step or count");
+  if (dimension) {
+    const std::optional<double> x = detail::quantity(*node, *dimension);
+    if (!x || !std::isfinite(*x))
+      reject(at.child(name, *node), describe_quantity(*node),
+             "expected a finite " + std::string(dimension_name(*dimension)) + " " + quantity_hint(*dimension));
+    return *x;
+  }
   if (!(integer ? node->is_integer() : node->is_number()) || !std::isfinite(*node->value<double>()))
     reject(at.child(name, *node), describe(*node), integer ? "expected an integer" : "expected a finite number");
   return *node->value<double>();
 }
 
 // {start, stop, step}: stop is included when it lands within 1e-9 step of a point.
-std::vector<double> stepped_range(const Where& at, const toml::table& range, double start, double stop, bool integer) {
-  const double step = range_bound(at, range, "step", integer);
+std::vector<double> stepped_range(const Where& at, const toml::table& range, double start, double stop, bool integer,
+                                  std::optional<Dimension> dimension) {
+  const double step = range_bound(at, range, "step", integer, dimension);
   const Where where = at.child("step", *range.get("step"));
   if (step == 0 || (stop - start) * step < 0)
     reject(where, format_number(step),
@@ -203,14 +225,16 @@ bool log_spacing(const Where& at, const toml::table& range) {
   return name == "log";
 }
 
-std::vector<double> read_range(const Where& at, const KeySpec& spec, const toml::table& range) {
+std::vector<double> read_range(const Where& at, const KeySpec& spec, std::optional<Dimension> dimension,
+                               const toml::table& range) {
   reject_unknown(at, range, {"start", "stop", "step", "count", "spacing"});
   const bool integer = spec.type == Type::integer || spec.type == Type::modes;  // slices, modes
-  const double start = range_bound(at, range, "start", integer), stop = range_bound(at, range, "stop", integer);
+  const double start = range_bound(at, range, "start", integer, dimension),
+               stop = range_bound(at, range, "stop", integer, dimension);
   if (range.contains("step") == range.contains("count"))
     reject(at, "{...}", "a range needs exactly one of step and count");
   const bool log = log_spacing(at, range);
-  const std::vector<double> values = range.contains("step") ? stepped_range(at, range, start, stop, integer)
+  const std::vector<double> values = range.contains("step") ? stepped_range(at, range, start, stop, integer, dimension)
                                                             : counted_range(at, range, start, stop, log);
   for (const double x : values)
     if (!spec.valid(x) || (integer && x != std::round(x)))
@@ -236,17 +260,19 @@ void reject_duplicates(const Setting& s, const fs::path& dir) {
   }
 }
 
-Setting read_axis(const Where& at, const KeySpec& spec, const toml::node& node, const fs::path& dir) {
+Setting read_axis(const Where& at, const KeySpec& spec, std::optional<Dimension> dimension, const toml::node& node,
+                  const fs::path& dir) {
   Setting s{&spec, at, {}, {}};
   const bool numeric = spec.type == Type::number || spec.type == Type::integer || spec.type == Type::modes ||
                        spec.type == Type::bat_parameter;
   if (const toml::array* list = node.as_array()) {
-    for (std::size_t i = 0; i < list->size(); ++i) add(s, read_value(at.item(i, (*list)[i]), spec, (*list)[i]));
+    for (std::size_t i = 0; i < list->size(); ++i)
+      add(s, read_value(at.item(i, (*list)[i]), spec, dimension, (*list)[i]));
   } else if (numeric && node.is_table()) {
-    s.values = read_range(at, spec, *node.as_table());
+    s.values = read_range(at, spec, dimension, *node.as_table());
   } else {
     reject(at, describe(node),
-           "expected a list of values, each " + std::string(spec.expected) +
+           "expected a list of values, each " + expected_value(spec, dimension) +
                (numeric ? ", or a range {start, stop, step} or {start, stop, count[, spacing = \"log\"]}" : ""));
   }
   if (s.values.empty()) reject(at, "[]", "an axis needs at least one value");
@@ -258,8 +284,9 @@ Setting read_axis(const Where& at, const KeySpec& spec, const toml::node& node, 
 Setting read_list(const Where& at, const KeySpec& spec, const toml::node& node) {
   Setting s{&spec, at, {}, {}};
   const toml::array* list = node.as_array();
-  if (!list || list->empty()) reject(at, describe(node), "expected " + std::string(spec.expected));
-  for (std::size_t i = 0; i < list->size(); ++i) add(s, read_value(at.item(i, (*list)[i]), spec, (*list)[i]));
+  if (!list || list->empty()) reject(at, describe(node), "expected " + expected_value(spec, spec.dimension));
+  for (std::size_t i = 0; i < list->size(); ++i)
+    add(s, read_value(at.item(i, (*list)[i]), spec, spec.dimension, (*list)[i]));
   if (const auto twice = first_repeat(s.values))
     reject(at, format_number(*twice), "appears twice in the list; its values must differ");
   return s;
@@ -291,12 +318,13 @@ std::vector<Setting> read_settings(const Where& top, const toml::table& doc, std
     // TOML reads bat.density = ... unquoted as a table bat = {density = ...}.
     if (spec->type == Type::bat && node->is_table())
       reject(where, describe(*node), "a bat parameter is a quoted key: \"bat.density\" = ..., not bat.density = ...");
+    const std::optional<Dimension> dimension = key_dimension(*spec, name);
     if (axes)
-      settings.push_back(read_axis(where, *spec, *node, top.file->parent_path()));
+      settings.push_back(read_axis(where, *spec, dimension, *node, top.file->parent_path()));
     else if (spec->type == Type::numbers)
       settings.push_back(read_list(where, *spec, *node));
     else
-      add(settings.emplace_back(Setting{spec, where, {}, {}}), read_value(where, *spec, *node));
+      add(settings.emplace_back(Setting{spec, where, {}, {}}), read_value(where, *spec, dimension, *node));
     settings.back().name = std::string(name);
   }
   return settings;

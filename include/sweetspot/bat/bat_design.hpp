@@ -14,6 +14,7 @@
 #include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/bat/dimensions.hpp"
 #include "sweetspot/bat/profile.hpp"
+#include "sweetspot/units/quantity.hpp"
 
 namespace sweetspot {
 
@@ -52,6 +53,9 @@ std::vector<std::string> design_parameters(const BatDesign& design);
 // design has no such parameter (e.g. a dimension of a bat given by a CSV profile).
 void set_design_parameter(BatDesign& design, std::string_view name, double value);
 double design_parameter(const BatDesign& design, std::string_view name);
+// Length for the length and every dimension (which may then be written "2.625 in"); nothing for
+// the material's constants, which are read in SI only.
+std::optional<Dimension> design_parameter_dimension(std::string_view name);
 
 // The wood presets, with their sources (README): names, and setting one as the material.
 const std::vector<std::string>& material_presets();

@@ -25,7 +25,7 @@ from pathlib import Path
 import numpy as np
 
 from ._sweetspot import (Bat, __version__, _ball, _certify, _describe, _git_commit, _impact, _impacts,
-                         _point_arguments, _scene_record, _status_names)
+                         _point_arguments, _scene_record, _si, _status_names)
 
 __all__ = ["Bat", "Result", "ball", "impact", "impacts", "run_study", "certify", "scene_of", "bat_of", "impacts_like",
            "__version__"]
@@ -87,7 +87,9 @@ def _from_knots(name, length, z, outer_diameter, inner_diameter=None, *, interpo
     inner_diameter (m, one per knot; no inner for a solid bat); interpolation "linear" (frustums),
     "pchip" or "stepped"; slices (default about 1 cm each); material, a wood preset, with density
     (kg/m^3), youngs_modulus, shear_modulus (Pa) and shear_coefficient overriding the preset's.
+    length may be a string with a unit ("33 in"); the knot arrays are numbers in m.
     Returns: a Bat. Its results store its name and slices but no bat file (it has none)."""
+    length = _si("length", length, "length")
     inner = None if inner_diameter is None else [float(d) for d in np.ravel(inner_diameter)]
     return Bat._from_knots(name, float(length), [float(v) for v in np.ravel(z)],
                            [float(d) for d in np.ravel(outer_diameter)], inner, interpolation, slices, material,
@@ -100,16 +102,18 @@ def _from_dimensions(name, length, *, knob_diameter, knob_length, handle_diamete
                      density=None, youngs_modulus=None, shear_modulus=None, shear_coefficient=None):
     """A bat from the named dimensions of a bat file's [dimensions] (README, "Bat files").
 
-    Parameters: name; length (m); knob_diameter, knob_length, handle_diameter, taper_start,
+    Parameters: name; length (m, or a string with a unit, "33 in", as every dimension); knob_diameter, knob_length, handle_diameter, taper_start,
     taper_end, barrel_diameter, end_depth and wall_thickness (m; no wall for a solid bat); end
     "flat", "rounded" or "cupped"; slices (default about 1 cm each); material, a wood preset, with
     density (kg/m^3), youngs_modulus, shear_modulus (Pa) and shear_coefficient overriding the preset's.
     Returns: a Bat, whose results store a bat file's text (bat_toml) that Bat.from_text reads back."""
+    length = _si("length", length, "length")
     dimensions = dict(knob_diameter=knob_diameter, knob_length=knob_length, handle_diameter=handle_diameter,
                       taper_start=taper_start, taper_end=taper_end, barrel_diameter=barrel_diameter,
                       end_depth=end_depth)
     if wall_thickness is not None:  # a hollow bat's wall; a solid bat has none (0 is refused)
         dimensions["wall_thickness"] = wall_thickness
+    dimensions = {k: _si(k, v, "length") for k, v in dimensions.items()}
     return Bat._from_dimensions(name, float(length), {k: float(v) for k, v in dimensions.items()}, end, slices,
                                 material, dict(density=density, youngs_modulus=youngs_modulus,
                                                shear_modulus=shear_modulus, shear_coefficient=shear_coefficient))
@@ -134,8 +138,8 @@ def certify(bat, standard="bbcor", *, ball=None, e0=None, ball_speed=None, pivot
             theory="timoshenko"):
     """The bat in the virtual test rig of a standard, as `sweetspot certify --json`.
 
-    Parameters: bat, a Bat; standard "bbcor", "besr" or "bpf"; e0, ball_speed (m/s) and pivot (m
-    from the knob) override the standard's rig; ball (a preset's name or a TOML file with a [ball]
+    Parameters: bat, a Bat; standard "bbcor", "besr" or "bpf"; e0, ball_speed (m/s, or a string such
+    as "93 mph") and pivot (m from the knob, or "6 in") override the standard's rig; ball (a preset's name or a TOML file with a [ball]
     table) replaces the standard's ball, the preset "ncaa"; modes (a count, "all" or "auto") and
     theory ("timoshenko" or "euler-bernoulli") of the bat's modes.
     Returns: a Result, a dict with standard, z_max (m), e_a, the measure by its name, moi_pivot
@@ -143,7 +147,8 @@ def certify(bat, standard="bbcor", *, ball=None, e0=None, ball_speed=None, pivot
     `attrs`: the rig as run (scene_standard, scene_e0, scene_ball_speed, scene_pivot, scene_modes,
     scene_theory; scene_ball when given), the bat and the program's version and commit, so that
     certify(bat, **scene_of(result)) certifies again the same way."""
-    result = _certify(bat, standard, ball, e0, ball_speed, pivot, modes, theory)
+    result = _certify(bat, standard, ball, e0, _si("ball_speed", ball_speed, "speed"), _si("pivot", pivot, "length"),
+                      modes, theory)
     scene = {"scene_standard": result["standard"]} | ({"scene_ball": str(ball)} if ball is not None else {})
     scene |= {"scene_e0": result["e0"], "scene_ball_speed": result["ball_speed"], "scene_pivot": result["pivot"],
               "scene_modes": modes if isinstance(modes, str) else int(modes), "scene_theory": theory}
@@ -154,6 +159,11 @@ _POINT = tuple(_point_arguments())  # z, ball_speed, cm_speed, center, omega, e0
 
 def _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, pivot, modes,
            mode_tolerance, accuracy, integrator, dt, tolerance, window, theory, n2000, ball=None):
+    # A length, mass or speed given as a string with a unit ("28 in", "136 mph") is SI from here on.
+    z, ball_speed, cm_speed, center, omega, ball_mass, ball_radius = (
+        _si(name, value) for name, value in (("z", z), ("ball_speed", ball_speed), ("cm_speed", cm_speed),
+                                             ("center", center), ("omega", omega), ("ball_mass", ball_mass),
+                                             ("ball_radius", ball_radius)))
     return dict(ball=ball, z=z, ball_speed=ball_speed, cm_speed=cm_speed, center=center, omega=omega, e0=e0,
                 ball_mass=ball_mass, ball_radius=ball_radius, k1=k1, a=a, pivot=pivot, modes=modes,
                 mode_tolerance=mode_tolerance, accuracy=accuracy, integrator=integrator, dt=dt,
@@ -168,6 +178,8 @@ def impact(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=No
     energy, mode_energy, modes_kept, modes_error, contacts), NaN where the JSON has null.
 
     The swing is cm_speed (m/s) or center (m from the knob, the point at rest), with omega (rad/s).
+    z, ball_speed, cm_speed, center, omega, ball_mass and ball_radius may be strings with a unit
+    ("28 in", "136 mph", "480 rpm", "5.125 oz"); numbers are SI.
     `ball` names the ball (a preset's name or a TOML file with a [ball] table; default N2000's), and
     e0, ball_mass, ball_radius, k1 and a override its values.
     None means the program's default: e0 0.5, exact stepping at 10 us, modes "auto" (a count, "all"
@@ -179,7 +191,7 @@ def impact(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=No
     args = _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, pivot, modes,
                   mode_tolerance, accuracy, integrator, dt, tolerance, window, theory, n2000, ball)
     result = _impact(bat, args)
-    radius = ball_radius if ball_radius is not None else _ball(ball or "n2000")["radius"]
+    radius = _si("ball_radius", ball_radius) if ball_radius is not None else _ball(ball or "n2000")["radius"]
     if result["u_max"] > radius:
         warnings.warn(f"the ball compressed {1e3 * result['u_max']:.3g} mm, past its radius "
                       f"{1e3 * radius:.3g} mm: the force law is not meant for that", RuntimeWarning, stacklevel=2)
