@@ -5,7 +5,7 @@
 # ranks), torn down on exit. Checks, against a plain `sweetspot run` of the same study:
 #   2 ranks x 1 thread and 1 rank x 2 threads: the job succeeds, the log reports the ranks and
 #   threads, each rank's cores without a false warning, and the dataset is bit for bit the same;
-#   a rank bound to one core for 2 threads (srun without --cpus-per-task) warns;
+#   a rank bound to one core for its 2 threads warns;
 #   a job cancelled mid-run (scancel) and submitted again resumes from the journal, same bits;
 #   no program to be found: the script says so and fails.
 # Exit 77 (CTest's SKIP_RETURN_CODE) when the Slurm or munge packages are absent.
@@ -17,7 +17,7 @@ program=$(realpath "$1")
 source_dir=$(realpath "$2")
 python=/usr/bin/python3
 
-for tool in slurmctld slurmd sbatch srun squeue scancel sinfo munged mungekey; do
+for tool in slurmctld slurmd sbatch srun squeue scancel scontrol sinfo munged mungekey; do
   if ! PATH=$PATH:/usr/sbin command -v "$tool" >/dev/null; then
     echo "SKIP: $tool not installed (Debian: apt-get install slurmctld slurmd slurm-client munge)"
     exit 77
