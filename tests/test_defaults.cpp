@@ -9,6 +9,7 @@
 
 #include "n2000_scenes.hpp"
 #include "program.hpp"
+#include "refusal.hpp"
 #include "temp_dir.hpp"
 #include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/impact/impact.hpp"
@@ -134,8 +135,7 @@ TEST_CASE("A bad preset is refused naming the key and the value", "[defaults][in
                                                                      "preset = \"N2000\"\n")
                                                   .string() +
                                      " -o " + dir / "out.h5");
-  CHECK(run.exit_code == 2);
-  CHECK_THAT(run.output, Catch::StartsWith("sweetspot: error: ") && Catch::Contains("preset"));
+  require_refused(run, {"preset"});
 }
 
 TEST_CASE("The default is exact to 2e-5 where N2000's 18 modes err by up to 1.3 %", "[defaults]") {

@@ -99,17 +99,19 @@ ImpactResult guarded_point(const GridPoint& point, const ModalBasis* basis, cons
   return r;
 }
 
-// Where the rank may run, and a warning when its threads must share cores: under Slurm >= 22.05
-// an srun without --cpus-per-task binds a rank to one core whatever sbatch asked for.
+// Where the rank's threads may run, and a warning when they must share cores: under Slurm >= 22.05
+// an srun without --cpus-per-task binds a rank to one core whatever sbatch asked for. The cores
+// are those of the whole team (team_cores), not the calling thread's alone, which OMP_PROC_BIND
+// has pinned to one core even in a right binding.
 void log_rank_cores(int rank) {
-  const std::vector<int> cores = allowed_cores();
+  const std::vector<int> cores = team_cores();
   const int threads = omp_get_max_threads();
   spdlog::info("rank {}: {} OpenMP thread(s) on core(s) {} ({} allowed)", rank, threads,
                cores.empty() ? "unknown" : core_list(cores), cores.size());
   if (!cores.empty() && static_cast<int>(cores.size()) < threads)
     spdlog::warn("rank {}: {} OpenMP threads but only {} core(s) allowed ({}): the threads take turns; bind each rank "
                  "to as many cores as it has threads (srun --cpus-per-task, mpirun --map-by slot:PE=N; "
-                 "cluster/README.md)",
+                 "docs/clusters.md)",
                  rank, threads, cores.size(), core_list(cores));
 }
 
