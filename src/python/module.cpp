@@ -17,6 +17,7 @@
 #include "scene_args.hpp"
 #include "sweetspot/ball/ball_file.hpp"
 #include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/bat/shipped_bats.hpp"
 #include "sweetspot/impact/impact.hpp"
 #include "sweetspot/input_error.hpp"
 #include "sweetspot/study/study_results.hpp"
@@ -26,6 +27,17 @@ using namespace sweetspot;
 using namespace sweetspot::python;
 
 namespace {
+
+// The shipped bats' folder seen from this module (installed, or in the build tree: CMakeLists.txt
+// sets both paths), found once, at the first Bat.load, when the module knows its __file__.
+const std::filesystem::path& shipped_bats() {
+  static const std::filesystem::path dir = [] {
+    const auto file = py::module_::import("sweetspot._sweetspot").attr("__file__").cast<std::filesystem::path>();
+    return shipped_bats_dir(std::filesystem::weakly_canonical(file).parent_path(),
+                            {SWEETSPOT_DATA_INSTALLED, SWEETSPOT_DATA_BUILD});
+  }();
+  return dir;
+}
 
 py::array_t<double> array(const std::vector<double>& v) { return py::array_t<double>(v.size(), v.data()); }
 py::array_t<double> array(const Eigen::VectorXd& v) { return py::array_t<double>(v.size(), v.data()); }
@@ -222,9 +234,10 @@ PYBIND11_MODULE(_sweetspot, m) {
   bat
       .def_static("load", [](const std::filesystem::path& path, std::optional<int> slices) {
             BatSource source;
-            return make_bat(load_bat_design(path, source), slices);
+            return make_bat(load_bat_design(find_bat_file(path.string(), shipped_bats(), "path"), source), slices);
           }, py::arg("path"), py::arg("slices") = py::none(),
-          "A bat from its TOML file, cut into `slices` slices (default: its profile's own).")
+          "A bat from its TOML file or a shipped bat's name (\"r161\"), cut into `slices` slices (default: its "
+          "profile's own).")
       .def_property_readonly("name", [](const BatHandle& b) { return b.bat().name; })
       .def_property_readonly("length", [](const BatHandle& b) { return b.bat().length; }, "m")
       .def_property_readonly("slices", [](const BatHandle& b) { return b.bat().slices(); })
