@@ -197,6 +197,17 @@ for bad, what in ((lambda: sweetspot.Bat.from_knots("b", 0.84, [0, 0.9], [0.06, 
     except ValueError as e:
         check(what in str(e), f"{what}: {e}")
 
+# 6b. A shipped bat by name, found in the build tree (build/share/sweetspot links the checkout's
+# studies/bats); an unknown name is a ValueError naming the shipped bats.
+by_name = sweetspot.Bat.load("r161")
+check(by_name.name == bat.name and by_name.mass == bat.mass and by_name.slices == bat.slices,
+      f"Bat.load('r161'): {by_name.name} {by_name.mass}, not the file's {bat.name} {bat.mass}")
+try:
+    sweetspot.Bat.load("r16")
+    check(False, "Bat.load('r16'): no ValueError")
+except ValueError as e:
+    check("'r16'" in str(e) and "r161 torpedo" in str(e) and "\n" not in str(e), f"Bat.load('r16'): {e}")
+
 # 7. cmake --install puts the package under the prefix, where the interpreter imports it.
 prefix = f"{work}/prefix"
 subprocess.run(["cmake", "--install", build, "--prefix", prefix], check=True, capture_output=True)

@@ -1,6 +1,8 @@
 // The program's commands end to end: what they print and how they exit.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include "program.hpp"
 
 TEST_CASE("modes --json prints the mass properties and Table II of the R161 bat", "[program]") {
@@ -30,4 +32,25 @@ TEST_CASE("wall and toy commands print JSON with their results", "[program]") {
   CHECK_THAT(toy.output, Catch::Contains("\"exit_ratio\": 0.71"));
   CHECK(run_program("wall --speed -3").exit_code == 2);
   CHECK(run_program("toy --omega-tau 0").exit_code == 2);
+}
+
+TEST_CASE("a shipped bat is found by name, and an unknown name is refused with the shipped names", "[program]") {
+  const std::string scene = " --z 0.7 --ball-speed 40 --cm-speed 10 --omega 40 --json";
+  const ProgramRun by_file = run_program("impact --bat " + source_path("studies/bats/r161.toml") + scene);
+  const ProgramRun by_name = run_program("impact --bat r161" + scene);
+  REQUIRE(by_file.exit_code == 0);
+  CHECK(by_name.exit_code == 0);
+  CHECK(by_name.output == by_file.output);
+  CHECK(run_program("modes torpedo --count 1").exit_code == 0);
+  CHECK(run_program("certify alloy_bbcor --json").exit_code == 0);
+
+  const ProgramRun unknown = run_program("impact --bat r16" + scene);
+  CHECK(unknown.exit_code == 2);
+  CHECK_THAT(unknown.output, Catch::StartsWith("sweetspot: error: --bat: no bat file or shipped bat 'r16' (shipped: "));
+  CHECK_THAT(unknown.output, Catch::Contains(" r161 torpedo)\n"));
+  CHECK(std::count(unknown.output.begin(), unknown.output.end(), '\n') == 1);
+  // A path is a path: no lookup, load_bat's own message.
+  const ProgramRun missing = run_program("impact --bat no_such_bat.toml" + scene);
+  CHECK(missing.exit_code == 2);
+  CHECK_THAT(missing.output, !Catch::Contains("shipped"));
 }

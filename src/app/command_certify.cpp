@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "bat_argument.hpp"
 #include "commands.hpp"
 #include "display_units.hpp"
 #include "json.hpp"
@@ -118,7 +119,7 @@ void print_text(const std::string& bat_name, const std::string& ball, const Cert
 
 void run_certify(CertifyCommand& o) {
   BatSource source;
-  const BatDesign design = load_bat_design(o.bat_file, source);
+  const BatDesign design = load_bat_design(bat_argument(o.bat_file, "bat"), source);
   o.options.e0 = o.e0, o.options.ball_speed = o.ball_speed, o.options.pivot = o.pivot;
   o.options.ball = load_ball(o.ball).ball;
   o.options.vibrational_modes = parse_modes(o.modes);
@@ -134,7 +135,7 @@ void run_certify(CertifyCommand& o) {
 void add_certify_command(CLI::App& app) {
   auto o = std::make_shared<CertifyCommand>();
   CLI::App* cmd = app.add_subcommand("certify", "A bat in the virtual test rig against BBCOR, BESR or BPF");
-  cmd->add_option("bat", o->bat_file, "bat file (TOML)")->required();
+  cmd->add_option("bat", o->bat_file, "bat file (TOML) or a shipped bat's name (r161, alloy_bbcor, ...)")->required();
   cmd->add_option("--standard", o->standard, "bbcor (NCAA/NFHS), besr (NCAA 1999-2010) or bpf (USSSA)")
       ->capture_default_str();
   cmd->add_option("--ball", o->ball, "the rig's ball: a preset's name or a TOML file with a [ball] table")

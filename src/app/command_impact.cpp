@@ -6,6 +6,7 @@
 #include <map>
 #include <string>
 
+#include "bat_argument.hpp"
 #include "commands.hpp"
 #include "display_units.hpp"
 #include "json.hpp"
@@ -117,7 +118,7 @@ void print_text(const ImpactResult& r, const DisplayUnits& u) {
 }
 
 void run_impact(ImpactOptions& o) {
-  Bat bat = load_bat(o.bat_file);
+  Bat bat = load_bat(bat_argument(o.bat_file, "--bat"));
   if (o.slices > 0) bat = resample(bat, o.slices);
   o.scene.vibrational_modes = parse_modes(o.modes);
   o.scene.swing.about_center = o.center.has_value();
@@ -219,7 +220,7 @@ void add_integrator_options(CLI::App& cmd, CollisionOptions& options) {
 void add_impact_command(CLI::App& app) {
   auto o = std::make_shared<ImpactOptions>();
   CLI::App* cmd = app.add_subcommand("impact", "One ball on one bat: exit speed, times, energies");
-  cmd->add_option("--bat", o->bat_file, "bat file (TOML)")->required();
+  cmd->add_option("--bat", o->bat_file, "bat file (TOML) or a shipped bat's name (r161, torpedo, ...)")->required();
   cmd->add_option("--theory", o->theory, "beam theory")
       ->check(CLI::IsMember({"timoshenko", "euler-bernoulli"}))
       ->capture_default_str();

@@ -3,6 +3,7 @@
 #include <memory>
 #include <string>
 
+#include "bat_argument.hpp"
 #include "commands.hpp"
 #include "display_units.hpp"
 #include "json.hpp"
@@ -79,7 +80,7 @@ void print_json(const Bat& bat, const MassProperties& mp, const ModalBasis& basi
 }
 
 void run_modes(const ModesOptions& o) {
-  Bat bat = load_bat(o.bat_file);
+  Bat bat = load_bat(bat_argument(o.bat_file, "bat"));
   if (o.slices > 0) bat = resample(bat, o.slices);
   const BeamTheory theory = parse_beam_theory(o.theory);
   const int available = vibrational_mode_count(bat.slices(), theory);
@@ -98,7 +99,7 @@ void run_modes(const ModesOptions& o) {
 void add_modes_command(CLI::App& app) {
   auto options = std::make_shared<ModesOptions>();
   CLI::App* cmd = app.add_subcommand("modes", "Normal modes and mass properties of a bat (N2000 Table II)");
-  cmd->add_option("bat", options->bat_file, "bat file (TOML)")->required();
+  cmd->add_option("bat", options->bat_file, "bat file (TOML) or a shipped bat's name (r161, torpedo, ...)")->required();
   cmd->add_option("--theory", options->theory, "beam theory")
       ->check(CLI::IsMember({"timoshenko", "euler-bernoulli"}))
       ->capture_default_str();

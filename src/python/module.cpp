@@ -20,6 +20,7 @@
 #include "scene_record.hpp"
 #include "sweetspot/ball/ball_file.hpp"
 #include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/bat/shipped_bats.hpp"
 #include "sweetspot/impact/impact.hpp"
 #include "sweetspot/input_error.hpp"
 #include "sweetspot/study/study_results.hpp"
@@ -30,6 +31,17 @@ using namespace sweetspot;
 using namespace sweetspot::python;
 
 namespace {
+
+// The shipped bats' folder seen from this module (installed, or in the build tree: CMakeLists.txt
+// sets both paths), found once, at the first Bat.load, when the module knows its __file__.
+const std::filesystem::path& shipped_bats() {
+  static const std::filesystem::path dir = [] {
+    const auto file = py::module_::import("sweetspot._sweetspot").attr("__file__").cast<std::filesystem::path>();
+    return shipped_bats_dir(std::filesystem::weakly_canonical(file).parent_path(),
+                            {SWEETSPOT_DATA_INSTALLED, SWEETSPOT_DATA_BUILD});
+  }();
+  return dir;
+}
 
 py::array_t<double> array(const std::vector<double>& v) { return py::array_t<double>(v.size(), v.data()); }
 py::array_t<double> array(const Eigen::VectorXd& v) { return py::array_t<double>(v.size(), v.data()); }
@@ -247,11 +259,11 @@ outer_diameter and inner_diameter (per slice, m).)");
   bat
       .def_static("load", [](const std::filesystem::path& path, std::optional<int> slices) {
             BatSource source;
-            BatDesign design = load_bat_design(path, source);
+            BatDesign design = load_bat_design(find_bat_file(path.string(), shipped_bats(), "path"), source);
             return make_bat(std::move(design), slices, std::move(source));
           }, py::arg("path"), py::arg("slices") = py::none(),
-          "Load a bat from its TOML file (README \"Bat files\").\n\n"
-          "Parameters: path, the bat file; slices, the number of slices to cut it into (default: its own).\n"
+          "Load a bat from its TOML file or a shipped bat's name (\"r161\"; docs/bats.md).\n\n"
+          "Parameters: path, the bat file or a shipped bat's name; slices, the number of slices to cut it into (default: its own).\n"
           "Returns: a Bat. Raises ValueError naming the file, key and value that are wrong.")
       .def_static("_from_text", [](const std::string& toml, const std::string& profile, const std::string& name,
                                    std::optional<int> slices) {
