@@ -16,13 +16,16 @@ BATS = ROOT / "studies" / "bats"
 INCH, MPH, LBF = 0.0254, 0.44704, 4.4482216152605
 
 
-def sweetspot(*args):
-    out = subprocess.run([str(PROGRAM), *map(str, args)], check=True, capture_output=True, text=True).stdout
-    return json.loads(out)
+def sweetspot(*args, verdicts=(0,)):
+    """The program's JSON; `verdicts` the exit statuses that are answers (certify: 3, it fails a rule)."""
+    run = subprocess.run([str(PROGRAM), *map(str, args)], capture_output=True, text=True)
+    if run.returncode not in verdicts:
+        raise RuntimeError(f"sweetspot {' '.join(map(str, args))}: exit status {run.returncode}: {run.stderr.strip()}")
+    return json.loads(run.stdout)
 
 
 def certify(bat, standard="bbcor"):
-    return sweetspot("certify", bat, "--standard", standard, "--json")
+    return sweetspot("certify", bat, "--standard", standard, "--json", verdicts=(0, 3))
 
 
 def stretched_wood(folder, wood, inches):

@@ -294,7 +294,7 @@ outer_diameter and inner_diameter (per slice, m).)");
            "The bat's normal modes.\n\n"
            "Parameters: count, the lowest vibrational modes to solve (default: all); theory, \"timoshenko\" or "
            "\"euler-bernoulli\".\n"
-           "Returns: a dict of theory, frequencies_hz (Hz), shapes (count x slices, max |psi| = 1, + at the barrel "
+           "Returns: a dict of theory, frequencies_hz (Hz), shapes (count x slices, largest ``|psi|`` = 1, + at the barrel "
            "end), z_m (slice centres, m), nodes_m (each mode's nodes, m from the knob), omega (rad/s, the two rigid "
            "modes first), mass_kg, z_cm_m and moment_of_inertia_cm_kg_m2.")
       .def("__repr__", [](const BatHandle& b) {

@@ -1,4 +1,4 @@
-"""sweetspot: the ball-bat collision (A. M. Nathan, Am. J. Phys. 68, 979 (2000)) from Python.
+"""sweetspot: the ball-bat collision (A. M. Nathan, Am. J. Phys. 68, 979 (2000)) from Python::
 
     import sweetspot
     bat = sweetspot.Bat.load("studies/bats/r161.toml")
@@ -146,7 +146,7 @@ def certify(bat, standard="bbcor", *, ball=None, e0=None, ball_speed=None, pivot
     (kg m^2), mass (kg), drop, barrel_diameter (m), checks (rule, value, limit, pass) and pass, and
     `attrs`: the rig as run (scene_standard, scene_e0, scene_ball_speed, scene_pivot, scene_modes,
     scene_theory; scene_ball when given), the bat and the program's version and commit, so that
-    certify(bat, **scene_of(result)) certifies again the same way."""
+    ``certify(bat, **scene_of(result))`` certifies again the same way."""
     result = _certify(bat, standard, ball, e0, _si("ball_speed", ball_speed, "speed"), _si("pivot", pivot, "length"),
                       modes, theory)
     scene = {"scene_standard": result["standard"]} | ({"scene_ball": str(ball)} if ball is not None else {})
@@ -187,7 +187,7 @@ def impact(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=No
     The bat's modes are solved once per needed set and kept on the bat.
 
     Returns: a Result, the dict above with `attrs` (the resolved scene as scene_*, the bat, the
-    program's version and commit); impact(bat, **scene_of(result)) computes it again bit for bit."""
+    program's version and commit); ``impact(bat, **scene_of(result))`` computes it again bit for bit."""
     args = _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, pivot, modes,
                   mode_tolerance, accuracy, integrator, dt, tolerance, window, theory, n2000, ball)
     result = _impact(bat, args)
@@ -280,8 +280,8 @@ def scene_of(result):
 
     Parameters: result, what impacts(), impact() or certify() returned, or that dataset read back
     with xarray.open_dataset after to_netcdf(), or its attributes as a dict.
-    Returns: a dict of keyword arguments, for impacts(bat, **...) (the per-point arguments as
-    arrays shaped as the dataset's dimensions), impact(bat, **...) or certify(bat, **...) (kind
+    Returns: a dict of keyword arguments, for ``impacts(bat, **...)`` (the per-point arguments as
+    arrays shaped as the dataset's dimensions), ``impact(bat, **...)`` or ``certify(bat, **...)`` (kind
     "certification"). Every value is the resolved one, so the defaults of a later version do not
     change what is computed."""
     attrs = _attrs_of(result)
@@ -333,7 +333,7 @@ def bat_of(result, *, path=None):
 
 
 def impacts_like(result, bat=None, *, threads=None):
-    """Computes a stored impacts() result again: impacts(bat, **scene_of(result)).
+    """Computes a stored impacts() result again: ``impacts(bat, **scene_of(result))``.
 
     Parameters: result, an impacts() dataset (or one read back with xarray.open_dataset); bat,
     the Bat (default: bat_of(result), rebuilt from the stored bat file's text); threads as impacts'.
