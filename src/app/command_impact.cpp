@@ -13,6 +13,8 @@
 #include "quantity_option.hpp"
 #include "sweetspot/ball/ball_file.hpp"
 #include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/bat/bat_design.hpp"
+#include "sweetspot/impact/error_estimates.hpp"
 #include "sweetspot/impact/impact.hpp"
 #include "sweetspot/input_error.hpp"
 #include "sweetspot/impact/n2000_settings.hpp"
@@ -72,6 +74,9 @@ void print_json(const ImpactResult& r, const Bat& bat) {
       .add("mode_energy", Json::numbers(r.mode_energy))
       .add("modes_kept", Json::numbers({r.modes_kept.begin(), r.modes_kept.end()}))
       .add("modes_error", r.modes_error)
+      .add("slicing_error", r.slicing_error)  // error_estimates.hpp; null where not estimated
+      .add("step_error", r.step_error)
+      .add("total_error", r.total_error)
       .add("contacts", Json::integer(r.contacts));
   if (bat.hollow()) out.add("barrel", barrel_json(bat.material.barrel));
   std::printf("%s\n", Json(out).text().c_str());
@@ -115,10 +120,14 @@ void print_text(const ImpactResult& r, const DisplayUnits& u) {
   if (r.modes_error > 0)
     std::printf("modes kept: %zu; estimated relative vf error of the dropped ones %.2g\n", r.modes_kept.size(),
                 r.modes_error);
+  std::printf("estimated error total %.2g (relative vf): slicing %.2g, modes %.2g, time step %.2g\n", r.total_error,
+              r.slicing_error, r.modes_error, r.step_error);
 }
 
 void run_impact(ImpactOptions& o) {
-  Bat bat = load_bat(bat_argument(o.bat_file, "--bat"));
+  BatSource source;
+  const BatDesign design = load_bat_design(bat_argument(o.bat_file, "--bat"), source);
+  Bat bat = build_bat(design);
   if (o.slices > 0) bat = resample(bat, o.slices);
   o.scene.vibrational_modes = parse_modes(o.modes);
   o.scene.swing.about_center = o.center.has_value();
@@ -128,7 +137,18 @@ void run_impact(ImpactOptions& o) {
   // What a study's point solves for (study/parallel.cpp), so that both give the same result.
   const ModeRequest request = impact_mode_request(o.scene, compute_modes(bat, theory, ModeRequest::rigid_only()));
   const ModalBasis basis = compute_modes(bat, theory, request);
-  const ImpactResult r = simulate_impact(basis, o.scene);
+  // Every estimate (error_estimates.hpp): the slicing error from the design at twice the slices.
+  ImpactResult r;
+  if (can_refine(bat.slices(), theory)) {
+    const Bat finer = bat_with_slices(design, slicing_refinement * bat.slices());
+    const ModalBasis finer_basis = compute_modes(
+        finer, theory, impact_mode_request(o.scene, compute_modes(finer, theory, ModeRequest::rigid_only())));
+    r = simulate_impact_with_errors(basis, finer_basis, o.scene);
+  } else {
+    ImpactScene scene = o.scene;
+    scene.error_estimates = true;
+    r = simulate_impact(basis, scene);
+  }
   if (r.status == CollisionStatus::refused_step) throw InputError("--dt: " + r.message);
   if (o.json) print_json(r, bat);
   else print_text(r, o.units);

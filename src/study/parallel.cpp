@@ -17,6 +17,7 @@
 #include <string_view>
 #include <tuple>
 
+#include "sweetspot/impact/error_estimates.hpp"
 #include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/study/output_paths.hpp"
 #include "sweetspot/study/affinity.hpp"
@@ -206,6 +207,9 @@ class ModalCache {
   }
 
   ModalBasis solve(const GridPoint& p, ModeRequest request) const {
+    // A finer point (finer_point): the design cut anew, so that knots and dimensions are sampled
+    // from their shape.
+    if (p.slices < 0) return compute_modes(bat_with_slices(study_.design_specs[p.design], -p.slices), p.theory, request);
     Bat bat = study_.designs[p.design];
     if (p.slices > 0) bat = resample(bat, p.slices);
     return compute_modes(bat, p.theory, request);
@@ -248,6 +252,19 @@ class ModalCache {
   double solve_seconds_ = 0;
 };
 
+// The point on its design at slicing_refinement times the point's slices, for its slicing error
+// (error_estimates.hpp): slices negative, which ModalCache::solve cuts from the design itself.
+// Its own step error is not asked. nullopt for a point that asks no estimate or cannot be refined.
+std::optional<GridPoint> finer_point(const Study& study, const GridPoint& p) {
+  if (p.kind != StudyKind::impact || !p.scene.error_estimates) return std::nullopt;
+  const int slices = p.slices > 0 ? p.slices : study.designs[p.design].slices();
+  if (!can_refine(slices, p.theory)) return std::nullopt;
+  GridPoint finer = p;
+  finer.slices = -slicing_refinement * slices;
+  finer.scene.error_estimates = false;
+  return finer;
+}
+
 // Computes a chunk of points with the OpenMP threads; rows in the order of `points`. Adds the
 // chunk to the rank's tally.
 std::vector<double> compute_chunk(const Study& study, const OutputLayout& layout, ModalCache& cache,
@@ -257,9 +274,18 @@ std::vector<double> compute_chunk(const Study& study, const OutputLayout& layout
   std::vector<std::string> reasons(points.size());  // why a point failed: first its modes', then its own
   cache.make_room();
   for (std::size_t i = 0; i < points.size(); ++i) grid[i] = grid_point(study, points[i]);
-  cache.prefetch(grid);  // the chunk's bats solved over the threads
-  for (std::size_t i = 0; i < points.size(); ++i)  // then looked up serially: the cache is not shared
+  // The finer points of those asking for their slicing error, and their bases.
+  std::vector<std::optional<GridPoint>> finer(points.size());
+  std::vector<const ModalBasis*> finer_bases(points.size(), nullptr);
+  std::vector<GridPoint> to_solve = grid;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if ((finer[i] = finer_point(study, grid[i]))) to_solve.push_back(*finer[i]);
+  cache.prefetch(to_solve);  // the chunk's bats solved over the threads
+  for (std::size_t i = 0; i < points.size(); ++i) {  // then looked up serially: the cache is not shared
     if (needs_modal_basis(grid[i].kind)) bases[i] = cache.get(grid[i], reasons[i]);
+    std::string ignored;  // no finer basis: the slicing error stays NaN
+    if (finer[i]) finer_bases[i] = cache.get(*finer[i], ignored);
+  }
   std::vector<double> rows(points.size() * layout.width);
   std::vector<char> failed(points.size(), 0);  // char, not bool: each thread writes its own
   const auto start = Clock::now();
@@ -267,7 +293,8 @@ std::vector<double> compute_chunk(const Study& study, const OutputLayout& layout
 #pragma omp parallel for schedule(dynamic) reduction(+ : past_radius)
   for (std::size_t i = 0; i < points.size(); ++i) {
     try {
-      const ImpactResult r = guarded_point(grid[i], bases[i], reasons[i]);
+      ImpactResult r = guarded_point(grid[i], bases[i], reasons[i]);
+      if (finer_bases[i]) add_slicing_error(r, guarded_point(*finer[i], finer_bases[i], {}), grid[i].scene.ball_speed);
       // The toy model's ball is dimensionless: no radius to pass.
       if (grid[i].kind != StudyKind::toy && grid[i].kind != StudyKind::certification &&
           r.u_max > grid[i].scene.ball.radius)

@@ -160,6 +160,9 @@ constexpr OutputSpec outputs[] = {
     {"mode_response", impact, 0},
     {"modes_kept", impact, 0},
     {"modes_error", impact, 0},
+    {"slicing_error", impact, 0},
+    {"step_error", impact, 0},
+    {"total_error", impact, 0},
     {"status", every_kind, every_kind},
 };
 

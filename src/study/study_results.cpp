@@ -50,6 +50,9 @@ const std::map<std::string, Description>& descriptions() {
       {"contacts", {"1", "number of separate contacts"}},
       {"modes_kept", {"1", "vibrational modes kept (modes = auto)"}},
       {"modes_error", {"1", "estimated relative vf error of the dropped modes (modes = auto)"}},
+      {"slicing_error", {"1", "estimated relative vf error of the slicing against the continuous bat (Richardson, N and 2N)"}},
+      {"step_error", {"1", "estimated relative vf error of the time stepping (step doubling)"}},
+      {"total_error", {"1", "estimated total relative vf error: slicing + modes + step"}},
       {"mode_tolerance", {"1", "relative vf error allowed the dropped modes (modes = auto)"}},
       {"accuracy", {"1", "relative vf error the integration may add (sets the step)"}},
       {"status", {"", "outcome of the impact"}},  // a flag, not a quantity: no units
@@ -181,6 +184,9 @@ double scalar_value(const ImpactResult& r, const std::string& name) {
   if (name == "contacts") return r.contacts;
   if (name == "modes_kept") return static_cast<double>(r.modes_kept.size());
   if (name == "modes_error") return r.modes_error;
+  if (name == "slicing_error") return r.slicing_error;
+  if (name == "step_error") return r.step_error;
+  if (name == "total_error") return r.total_error;
   return energy_value(r.energy, name);
 }
 

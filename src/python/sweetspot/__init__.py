@@ -175,7 +175,10 @@ def impact(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=No
            integrator=None, dt=None, tolerance=None, window=None, theory="timoshenko", n2000=False):
     """One ball on one bat, as `sweetspot impact --json`: a dict with the same keys (status, z, vf,
     e_eff, contact_time, collision_time, u_max, peak_force, impulse, bat_speed, e_a, bbcor, besr, bpf,
-    energy, mode_energy, modes_kept, modes_error, contacts), NaN where the JSON has null.
+    energy, mode_energy, modes_kept, modes_error, slicing_error, step_error, total_error, contacts),
+    NaN where the JSON has null. slicing_error, modes_error and step_error estimate each source of
+    the relative vf error against the continuous bat (its slices, the dropped modes, the time step),
+    total_error their sum; the slicing's costs the bat's modes at twice its slices.
 
     The swing is cm_speed (m/s) or center (m from the knob, the point at rest), with omega (rad/s).
     z, ball_speed, cm_speed, center, omega, ball_mass and ball_radius may be strings with a unit
