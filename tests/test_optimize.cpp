@@ -6,6 +6,10 @@
 // optimisation file is refused before any work.
 #include <catch2/catch.hpp>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -19,6 +23,7 @@
 #include "sweetspot/impact/formulas.hpp"
 #include "sweetspot/optimize/optimizer.hpp"
 #include "sweetspot/study/journal.hpp"
+#include "sweetspot/study/output_lock.hpp"
 #include "temp_dir.hpp"
 
 using namespace sweetspot;
@@ -421,4 +426,30 @@ TEST_CASE("optimize's BBCOR constraint is certify's maximum over the barrel, and
     CHECK(problem.constraints[i].limit == c.checks[i].limit);
   }
   CHECK(feasible(problem, e) == c.pass);
+}
+
+TEST_CASE("optimize takes a lock on its best bat file, which outputs of one stem share", "[optimize][program]") {
+  // r.h5 and r.nc both write r_best.toml: the second is refused while the first holds it.
+  TempDir dir;
+  const auto opt = dir.write("opt.toml", density_problem());
+  int ready[2];
+  REQUIRE(::pipe(ready) == 0);
+  const pid_t holder = ::fork();
+  REQUIRE(holder >= 0);
+  if (holder == 0) {
+    const sweetspot::OutputLock lock(dir / "r_best.toml");
+    const char byte = 1;
+    if (::write(ready[1], &byte, 1) != 1) ::_exit(1);
+    ::pause();
+  }
+  char byte = 0;
+  REQUIRE(::read(ready[0], &byte, 1) == 1);
+  const ProgramRun run = run_program("optimize " + opt.string() + " -o " + dir / "r.nc --quiet");
+  ::kill(holder, SIGKILL);
+  ::waitpid(holder, nullptr, 0);
+  INFO(run.output);
+  CHECK(run.exit_code == 2);
+  CHECK(run.output.find("r_best.toml") != std::string::npos);
+  CHECK(run.output.find("another sweetspot run (process " + std::to_string(holder) + ")") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir / "r.nc"));
 }

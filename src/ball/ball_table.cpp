@@ -93,6 +93,13 @@ BallFit read_ball_table(const toml::table& table, const std::string& where) {
   }
   if (table.empty())
     throw InputError(where + ": is empty: expected a preset or the ball's test values (" + join(known_keys) + ")");
+  // One stiffness: two of them given would have one silently overrule the other.
+  std::vector<std::string> stiffnesses;
+  for (const char* key : {"dynamic_stiffness", "compression", "k1"})
+    if (table.contains(key)) stiffnesses.emplace_back(key);
+  if (stiffnesses.size() > 1)
+    throw InputError(where + ": " + join(stiffnesses) + " given together: expected one stiffness (dynamic_stiffness, " +
+                     "compression or k1)");
   if (table.contains("mass")) t.mass = quantity_key(table, "mass", Dimension::mass, where);
   if (table.contains("radius")) t.radius = quantity_key(table, "radius", Dimension::length, where);
   if (table.contains("cor")) {

@@ -1,5 +1,6 @@
 #include "sweetspot/ball/ball_tests.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -83,7 +84,10 @@ void fit_dynamic_stiffness(const BallTests& t, const std::string& where, BallFit
   }
   Ball& b = fit.ball;
   b.a = t.exponent > 0 ? t.exponent : default_ball_exponent;
-  if (t.dynamic_stiffness.size() > 1 && !(t.exponent > 0)) {
+  // The exponent comes from the growth with speed: values at one speed only (replicates) have none
+  // to give, and keep N2000's.
+  const auto [slowest, fastest] = std::ranges::minmax(log_v);
+  if (fastest > slowest && !(t.exponent > 0)) {
     // F_peak grows as v^(2a/(a+1)), so DS as v^s with s = 2 (a - 1) / (a + 1): a = (2 + s) / (2 - s).
     const double s = fit_line(log_v, log_ds).slope;
     b.a = (2 + s) / (2 - s);

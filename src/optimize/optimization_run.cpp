@@ -75,9 +75,13 @@ fs::path temporary(const fs::path& path) { return path.string() + ".tmp"; }
 
 struct OutputClaim {
   OutputLock lock;
+  // The best bat file is named after the output's stem, which outputs of other names share
+  // (r.h5, r.nc): it has a lock of its own, or two runs would write one file.
+  OutputLock best_lock;
   Journal journal;
   OutputClaim(const OptimizationProblem& p, const OptimizeOptions& o)
       : lock(o.output),
+        best_lock(best_bat_path(o.output)),
         journal(Journal::path_for(o.output),
                 journal_key(p.text, {p.base_source, p.reference_source},
                             static_cast<std::uint64_t>(p.optimizer.max_evaluations), row_width(p)),
@@ -88,7 +92,7 @@ struct OutputClaim {
     const fs::path journal = Journal::path_for(o.output), best = best_bat_path(o.output);
     check_output_paths(o.output,
                        {dataset_temporary_path(o.output), journal, Journal::rewrite_path(journal),
-                        OutputLock::path_for(o.output), best, temporary(best)},
+                        OutputLock::path_for(o.output), best, temporary(best), OutputLock::path_for(best)},
                        inputs(p));
   }
 };
