@@ -123,6 +123,77 @@ for call in [lambda: sweetspot.Bat.load(f"{source}/studies/bats/no_such_bat.toml
     except ValueError as e:
         print("ValueError:", e)
 
+# 3b. Every argument of a wrong type or value is a ValueError naming it (issue 24): not
+# pybind11's RuntimeError ("Unable to cast") or TypeError, no crash, no complex number read as its
+# real part; threads bounded; dt and accuracy not both; an accuracy of 0 refused as a study's is.
+swing = dict(z=0.7, ball_speed=40, cm_speed=10)
+rod_args = ("rod", 0.84, [0, 0.84], [0.06, 0.06])
+for call, fragments in [
+        (lambda: sweetspot.impacts(bat, **swing, threads=100000), ["threads", "100000", "from 1 to"]),
+        (lambda: sweetspot.impacts(bat, **swing, threads=sweetspot._max_threads() + 1),
+         ["threads", str(sweetspot._max_threads() + 1), "4 per processor"]),
+        (lambda: sweetspot.impacts(bat, **swing, threads=-1), ["threads", "-1"]),
+        (lambda: sweetspot.impacts(bat, **swing, threads=0), ["threads", "0"]),
+        (lambda: sweetspot.impacts(bat, **swing, threads=2.5), ["threads", "2.5"]),
+        (lambda: sweetspot.impacts(bat, **swing, threads="4"), ["threads", "'4'"]),
+        (lambda: sweetspot.impact(bat, **swing, dt=1e-5, accuracy=1e-4), ["dt", "accuracy"]),
+        (lambda: sweetspot.impacts(bat, **swing, dt=1e-5, accuracy=1e-4), ["dt", "accuracy"]),
+        (lambda: sweetspot.impact(bat, **swing, accuracy=0), ["accuracy", "0", "> 0"]),
+        (lambda: sweetspot.impact(bat, **swing, accuracy=-1e-4), ["accuracy", "-0.0001", "> 0"]),
+        (lambda: sweetspot.impact(bat, **swing, accuracy=math.nan), ["accuracy", "nan", "> 0"]),
+        (lambda: sweetspot.impact(bat, **swing, pivot="yes"), ["pivot", "'yes'", "True or False"]),
+        (lambda: sweetspot.impact(bat, **swing, n2000="no"), ["n2000", "'no'"]),
+        (lambda: sweetspot.impact(bat, **swing, modes=10 ** 20), ["modes", "100000000000000000000"]),
+        (lambda: sweetspot.impact(bat, **swing, theory=5), ["theory", "5"]),
+        (lambda: sweetspot.impact(bat, **swing, integrator=["rk4"]), ["integrator"]),
+        (lambda: sweetspot.impact(bat, z=0.7 + 1e-3j, ball_speed=40, cm_speed=10), ["z", "0.7"]),
+        (lambda: sweetspot.impact(bat, **swing, e0=np.complex128(0.5 + 0.1j)), ["e0", "0.5"]),
+        (lambda: sweetspot.impact(bat, **swing, e0=True), ["e0", "True"]),
+        (lambda: sweetspot.impact(bat, **swing, dt="1e-5"), ["dt", "'1e-5'"]),
+        (lambda: sweetspot.impact(bat, z=[0.6, 0.7], ball_speed=40, cm_speed=10), ["z", "[0.6, 0.7]"]),
+        (lambda: sweetspot.impacts(bat, z=np.array([0.6, 0.7 + 1e-3j]), ball_speed=40, cm_speed=10), ["z"]),
+        (lambda: sweetspot.impacts(bat, z=[0.6, "0.7"], ball_speed=40, cm_speed=10), ["z"]),
+        (lambda: sweetspot.impacts(bat, z=[[0.6], [0.7, 0.8]], ball_speed=40, cm_speed=10), ["z"]),
+        (lambda: sweetspot.impact("r161", **swing), ["bat", "'r161'", "sweetspot.Bat"]),
+        (lambda: sweetspot.Bat.from_knots(*rod_args, density="700"), ["density", "'700'", "real number"]),
+        (lambda: sweetspot.Bat.from_knots(*rod_args, density=700 + 1j), ["density"]),
+        (lambda: sweetspot.Bat.from_knots("", *rod_args[1:]), ["name", "''", "non-empty"]),
+        (lambda: sweetspot.Bat.from_knots(5, *rod_args[1:]), ["name", "5"]),
+        (lambda: sweetspot.Bat.from_knots("rod", 0.84, [0, 0.84 + 1j], [0.06, 0.06]), ["z"]),
+        (lambda: sweetspot.Bat.from_knots(*rod_args, slices="40"), ["slices", "'40'"]),
+        (lambda: sweetspot.Bat.from_knots(*rod_args, slices=10 ** 20), ["slices", "100000000000000000000"]),
+        (lambda: sweetspot.Bat.from_knots(*rod_args, interpolation=1), ["interpolation", "1"]),
+        (lambda: sweetspot.Bat.from_dimensions("", 0.8382, knob_diameter=0.0505, knob_length=0.02,
+                                               handle_diameter=0.0238125, taper_start=0.3048, taper_end=0.6604,
+                                               barrel_diameter=0.0635), ["name", "''"]),
+        (lambda: sweetspot.Bat.from_dimensions("b", 0.8382, knob_diameter=0.0505, knob_length=0.02,
+                                               handle_diameter=0.0238125, taper_start=0.3048, taper_end=0.6604,
+                                               barrel_diameter=0.0635j), ["barrel_diameter"]),
+        (lambda: sweetspot.Bat.load(BAT, slices=3.5), ["slices", "3.5"]),
+        (lambda: sweetspot.Bat.load(161), ["path", "161"]),
+        (lambda: bat.modes(count="4"), ["count", "'4'"]),
+        (lambda: bat.modes(count=10 ** 20), ["count"]),
+        (lambda: bat.moment_of_inertia_about(1j), ["z", "1j"]),
+        (lambda: sweetspot.certify(bat, e0="0.5"), ["e0", "'0.5'"]),
+        (lambda: sweetspot.certify(bat, standard=None), ["standard", "None"]),
+        (lambda: sweetspot.certify(bat, modes=10 ** 20), ["modes"]),
+        (lambda: sweetspot.ball(5), ["name", "5"])]:
+    try:
+        call()
+        check(False, f"no ValueError for {fragments}")
+    except ValueError as e:
+        check(all(f in str(e) for f in fragments) and "\n" not in str(e), f"{fragments} not all in {e!r}")
+    except Exception as e:  # noqa: BLE001 (RuntimeError, TypeError: what this section refuses)
+        check(False, f"{fragments}: {type(e).__name__}, not ValueError: {e}")
+# What stays accepted: units as strings, numpy numbers, 0/1 flags, threads up to the bound, a dt or
+# an accuracy alone, a replay of a result with an accuracy (its record holds both).
+one = sweetspot.impact(bat, z="27.56 in", ball_speed=np.float32(40), cm_speed=np.int64(10), pivot=0)
+check(one["status"] == "ok", "units and numpy numbers")
+check(sweetspot.impacts(bat, **swing, threads=1).vf.values[()] == sweetspot.impact(bat, **swing)["vf"], "threads=1")
+accurate = sweetspot.impact(bat, **swing, accuracy=1e-4)
+check(sweetspot.impact(bat, **sweetspot.scene_of(accurate))["vf"] == accurate["vf"], "replay with an accuracy")
+check(sweetspot.Bat.from_knots(*rod_args, density=np.float64(700), slices=np.int64(40)).slices == 40, "numpy args")
+
 # 4. The GIL released: two Python threads each run impacts; both finish with the same numbers.
 zs = np.linspace(0.45, 0.84, 3000)
 # OpenMP's threads per call, then one each: two one-thread calls on two cores take about as long as

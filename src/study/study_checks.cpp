@@ -55,6 +55,16 @@ void check_swing(const Settings& s, const Where& top) {
     reject(pivot->where, "true", "a pivoted bat is held at its rotation centre: give center, not cm_speed");
 }
 
+// A stated accuracy chooses the step (or dopri's tolerance) from the scene's pulse: a dt given
+// beside it would be silently overridden, so the two are refused together.
+void check_step_or_accuracy(const Settings& s) {
+  const Setting *accuracy = s["accuracy"], *dt = s["dt"];
+  if (accuracy && dt)
+    reject(dt->where, dt->values.size() == 1 ? format_number(dt->values[0]) : "[...]",
+           "expected dt or accuracy, not both: key '" + accuracy->where.key +
+               "' is also given, and chooses the step itself");
+}
+
 // The bat files, each read once into its design.
 void load_bat_files(Study& study, const Setting& bat) {
   for (const std::string& label : bat.labels) {
@@ -305,6 +315,7 @@ void check_rig_fits(const Settings& s, const std::vector<Bat>& bats, const std::
 // The impact kind's checks across keys: the swing, the bat files, z on every bat, mode counts.
 void check_bat_scene(Study& study, const Settings& s, const Where& top) {
   const Setting& bat = *s["bat"];
+  check_step_or_accuracy(s);
   if (study.kind == StudyKind::certification) {  // the rig holds each bat at rest: no swing, no point
     load_bat_files(study, bat);
     const std::vector<std::string> labels = build_designs(study, s, bat);
