@@ -452,6 +452,7 @@ TEST_CASE("optimize takes a lock on its best bat file, which outputs of one stem
   CHECK(run.output.find("r_best.toml") != std::string::npos);
   CHECK(run.output.find("another sweetspot run (process " + std::to_string(holder) + ")") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(dir / "r.nc"));
+}
 
 TEST_CASE("optimize stops for max_evaluations only with that many evaluations recorded", "[optimize]") {
   // NLopt counts its calls, not the designs scored: a design asked twice in a row (the same point
