@@ -82,7 +82,6 @@ wait "$pid" 2>/dev/null || true
 if [ -f long.h5 ] || [ ! -f long.h5.journal ]; then
   echo "FAILED: the run to kill ended first or left no journal"; cat "$dir/killed"; failures=$((failures + 1))
 fi
-rm -f long.h5.lock
 check "run --resume" env OMP_NUM_THREADS=2 "${memcheck[@]}" "$program" run long.toml -o long.h5 --resume
 grep -q "resuming: [1-9][0-9]* of 150 points already done" "$dir/out" ||
   { echo "FAILED: the resumed run recovered no point"; cat "$dir/out"; failures=$((failures + 1)); }
