@@ -51,6 +51,16 @@ std::optional<RuleBreak> positive_rule_break(std::string_view name, double value
   return std::nullopt;
 }
 
+// G = E / 2(1 + nu) lies from E/3 to E/2 for nu from 0 to 0.5 (wood's is about E/16): a shear
+// modulus far above E (1e12 beside 1e6 Pa) makes the beam's stiffness singular at a thin handle.
+std::optional<RuleBreak> shear_rule_break(const Material& m) {
+  if (m.shear_modulus <= m.youngs_modulus) return std::nullopt;
+  return RuleBreak{"shear_modulus", "shear_modulus " + with_unit(m.shear_modulus, "Pa") + " exceeds youngs_modulus " +
+                                        with_unit(m.youngs_modulus, "Pa") +
+                                        "; expected at most youngs_modulus (G = E / 2(1 + nu) is E/3 to E/2 for nu "
+                                        "from 0 to 0.5; wood's is about E/16)"};
+}
+
 std::optional<RuleBreak> wall_material_rule_break(const Material& m) {
   if (!(std::isfinite(m.hoop_modulus) && m.hoop_modulus >= 0))
     return RuleBreak{"hoop_modulus", "hoop_modulus " + with_unit(m.hoop_modulus, "Pa") +
@@ -206,6 +216,7 @@ std::optional<RuleBreak> rule_break(const BatDesign& design) {
   if (auto rule = positive_rule_break("length", design.length, "m")) return rule;
   for (const MaterialField& f : material_fields)
     if (auto rule = positive_rule_break(f.name, design.material.*f.value, f.unit)) return rule;
+  if (auto rule = shear_rule_break(design.material)) return rule;
   if (auto rule = wall_material_rule_break(design.material)) return rule;
   if (design.dimensions) return dimensions_rule_break(*design.dimensions, design.length);
   if (auto rule = profile_rule_break(design.profile)) return rule;
