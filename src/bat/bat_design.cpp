@@ -51,14 +51,17 @@ std::optional<RuleBreak> positive_rule_break(std::string_view name, double value
   return std::nullopt;
 }
 
-// G = E / 2(1 + nu) lies from E/3 to E/2 for nu from 0 to 0.5 (wood's is about E/16): a shear
-// modulus far above E (1e12 beside 1e6 Pa) makes the beam's stiffness singular at a thin handle.
+// An isotropic G = E / 2(1 + nu) is E/3 to E/2 for nu from 0 to 0.5 (wood's is about E/16); a
+// study may sweep E below a fixed G, but a shear modulus far above E (1e12 beside 1e6 Pa) makes
+// the beam's stiffness singular at a thin handle.
+constexpr double max_shear_to_youngs = 10;
+
 std::optional<RuleBreak> shear_rule_break(const Material& m) {
-  if (m.shear_modulus <= m.youngs_modulus) return std::nullopt;
-  return RuleBreak{"shear_modulus", "shear_modulus " + with_unit(m.shear_modulus, "Pa") + " exceeds youngs_modulus " +
+  if (m.shear_modulus <= max_shear_to_youngs * m.youngs_modulus) return std::nullopt;
+  return RuleBreak{"shear_modulus", "shear_modulus " + with_unit(m.shear_modulus, "Pa") + " exceeds 10 times youngs_modulus " +
                                         with_unit(m.youngs_modulus, "Pa") +
-                                        "; expected at most youngs_modulus (G = E / 2(1 + nu) is E/3 to E/2 for nu "
-                                        "from 0 to 0.5; wood's is about E/16)"};
+                                        "; expected at most 10 times youngs_modulus (G = E / 2(1 + nu) is E/3 to E/2 "
+                                        "for nu from 0 to 0.5; wood's is about E/16)"};
 }
 
 std::optional<RuleBreak> wall_material_rule_break(const Material& m) {
@@ -178,9 +181,10 @@ void set_design_parameter(BatDesign& design, std::string_view name, double value
   if (positive_when_given(name) && !(value > 0 && std::isfinite(value)))
     throw InputError("bat parameter '" + std::string(name) + "' = " + format_number(value) +
                      ": expected a positive, finite value (0 stands for none only by leaving the key out of a bat file)");
-  // An end's depth of 0 is a flat end's: the range is a depth's when there is one.
+  // A positive value outside its range is refused here, naming the range; 0, negatives and NaN
+  // are left to the design's rules, which say what they stand for (a flat end's depth of 0).
   const ParameterBound* bound = parameter_bound(name);
-  if (bound && !within(*bound, value) && !(name == "end_depth" && value == 0))
+  if (bound && value > 0 && std::isfinite(value) && !within(*bound, value))
     throw InputError("bat parameter '" + std::string(name) + "' = " + format_number(value) + ": expected " +
                      expected_range(*bound));
   *parameter = value;

@@ -457,7 +457,7 @@ void check_knots(const fs::path& file, const std::vector<Row>& rows, double leng
 void check_wall_between_knots(const fs::path& file, const std::vector<Row>& rows, const Profile& profile) {
   const ThinnestWall thinnest = thinnest_wall(profile);
   const ParameterBound& wall = *parameter_bound(profile_wall);
-  if (thinnest.wall > 0 && thinnest.wall / 2 >= wall.low) return;
+  if (thinnest.wall > 0 && within(wall, thinnest.wall / 2)) return;
   const Row &from = rows[thinnest.interval], &to = rows[thinnest.interval + 1];
   fail(file.string() + ": lines " + std::to_string(from.line) + "-" + std::to_string(to.line),
        std::string("with interpolation '") + to_string(profile.interpolation) +

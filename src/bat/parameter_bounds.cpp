@@ -66,7 +66,12 @@ std::string expected_range(const ParameterBound& bound) {
          std::string(bound.why) + ")";
 }
 
-bool within(const ParameterBound& bound, double value) { return value >= bound.low && value <= bound.high; }
+// A rounding's worth beyond either end is within: a wall of 0.06 - 0.0598 m is 0.1 mm, and a
+// value written in inches at the bound converts with round-off.
+bool within(const ParameterBound& bound, double value) {
+  constexpr double rounding = 1e-9;
+  return value >= bound.low * (1 - rounding) && value <= bound.high * (1 + rounding);
+}
 
 std::optional<std::string> bound_break(std::string_view name, double value) {
   const ParameterBound* bound = parameter_bound(name);
