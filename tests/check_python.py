@@ -268,6 +268,38 @@ for bad, what in ((lambda: sweetspot.Bat.from_knots("b", 0.84, [0, 0.9], [0.06, 
     except ValueError as e:
         check(what in str(e), f"{what}: {e}")
 
+# 6a. Each bat parameter's range (parameter_bounds.hpp), as bat files and studies have it: just
+# inside, a bat with finite modes; just outside, a ValueError naming the parameter and the range.
+dims = dict(knob_diameter=0.0505, knob_length=0.02, handle_diameter=0.0238125, taper_start=0.3048,
+            taper_end=0.6604, barrel_diameter=0.0635, end="cupped", end_depth=0.0254)
+for key, inside, outside, expected in (("density", 25000, 25001, "10 to 25000 kg/m^3"),
+                                       ("youngs_modulus", 1e6, 9.9e5, "1000000 to 1e+12 Pa"),
+                                       ("shear_coefficient", 1, 1.01, "0.1 to 1"),
+                                       ("barrel_diameter", 1, 1e300, "0.001 to 1 m")):
+    material = {k: v for k, v in ((key, inside),) if key != "barrel_diameter"}
+    if key == "youngs_modulus":  # the shear modulus stays at most Young's
+        material["shear_modulus"] = inside
+    shape = dict(dims, **({key: inside, "knob_diameter": 1} if key == "barrel_diameter" else {}))
+    good = sweetspot.Bat.from_dimensions("b", 0.8382, material="maple", **material, **shape)
+    hz = good.modes(count=3)["frequencies_hz"]
+    check(all(math.isfinite(f) and f > 0 for f in hz) and math.isfinite(good.mass), f"{key} = {inside}: {hz}")
+    try:
+        material = {k: v for k, v in ((key, outside),) if key != "barrel_diameter"}
+        if key == "youngs_modulus":
+            material["shear_modulus"] = 1e6
+        shape = dict(dims, **({key: outside, "knob_diameter": 1} if key == "barrel_diameter" else {}))
+        sweetspot.Bat.from_dimensions("b", 0.8382, material="maple", **material, **shape)
+        check(False, f"{key} = {outside}: no ValueError")
+    except ValueError as e:
+        check(key in str(e) and expected in str(e) and "\n" not in str(e), f"{key} = {outside}: {e}")
+thin = sweetspot.Bat.from_knots("tube", 0.84, [0, 0.84], [0.06, 0.06], [0.0598, 0.0598], material="maple")
+check(math.isfinite(thin.mass) and thin.modes(count=2)["frequencies_hz"][1] > 0, "a 0.1-mm wall from knots")
+try:
+    sweetspot.Bat.from_knots("tube", 0.84, [0, 0.84], [0.06, 0.06], [0.06 - 2e-9, 0.06 - 2e-9], material="maple")
+    check(False, "a 1-nm wall from knots: no ValueError")
+except ValueError as e:
+    check("wall" in str(e) and "0.0001 to 0.5 m" in str(e), f"a 1-nm wall from knots: {e}")
+
 # 6b. A shipped bat by name, found in the build tree (build/share/sweetspot links the checkout's
 # studies/bats); an unknown name is a ValueError naming the shipped bats.
 by_name = sweetspot.Bat.load("r161")

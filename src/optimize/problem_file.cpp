@@ -5,6 +5,7 @@
 #include <string>
 
 #include "ball/ball_table.hpp"
+#include "sweetspot/impact/equal_effort.hpp"
 #include "problem_values.hpp"
 #include "sweetspot/input_error.hpp"
 
@@ -135,8 +136,8 @@ Player read_player(const Where& top, const toml::table& doc, OptimizationProblem
         reject(at.child(key, *node), describe(*node), "applies only with swing = \"equal_effort\"");
     return p;
   }
-  p.swing_exponent = number_key(at, t, "swing_exponent", 0.3, [](double v) { return v >= 0 && v <= 2; },
-                                "a power-law exponent in [0, 2] (0.3 fits college hitters)");
+  p.swing_exponent = number_key(at, t, "swing_exponent", default_swing_exponent, valid_swing_exponent,
+                                "a power-law exponent in [0, 2] (n in swing speed ~ MOI^-n; 0.3 fits college hitters)");
   const toml::node* reference = t.get("reference_bat");
   if (reference) {
     const std::string name = string_key(at, t, "reference_bat", "", "a bat file (the player's swing was measured with it)");
