@@ -1,10 +1,9 @@
 #!/usr/bin/python3
-"""Draws a design map from a study over bat parameters (README, "Bats as design spaces"): the
+"""Draws a design map from a study over bat parameters (docs/studies.md, "Bats as design spaces"): the
 sweet spot's width and its peak exit speed against two bat dimensions, the other axes at a value
 you choose (default: their middle one), with the designs that break a rule marked: a barrel over
-2.61 in (MLB rule 3.02(a)) or a bat lighter than "drop -3"
-(drop = length in inches - weight in ounces over 3,
-the NCAA/BBCOR limit). Run it with Debian's interpreter, which has xarray, h5netcdf and matplotlib.
+2 5/8 in or a bat lighter than "drop -3" (the NCAA/BBCOR rules that `sweetspot certify` and
+`sweetspot optimize` apply by default; drop = length in inches - weight in ounces). Run it with Debian's interpreter, which has xarray, h5netcdf and matplotlib.
 
 Usage: /usr/bin/python3 scripts/plot_design_map.py RESULT.h5 [OUT.png] [--x DIM] [--y DIM] [DIM=VALUE ...]
   --x, --y   the dimensions of the map (default bat_barrel_diameter and bat_length)
@@ -21,6 +20,7 @@ import numpy as np
 import xarray as xr
 
 INCH = 0.0254
+BBCOR_BARREL = 2.625 * INCH  # NCAA rule 1-12: a non-wood bat's barrel at most 2 5/8 in (certify's bbcor)
 args = [a for a in sys.argv[1:]]
 x_dim, y_dim = "bat_barrel_diameter", "bat_length"
 
@@ -82,7 +82,7 @@ with xr.open_dataset(path, engine="h5netcdf") as ds:
         # Designs that break a rule: crossed out.
         illegal = np.asarray(drop) > 3  # drop = length - weight: "-3" bats are the lightest allowed
         if x_dim == "bat_barrel_diameter":
-            illegal = illegal | (ds[x_dim].values[None, :] > 2.61 * INCH)
+            illegal = illegal | (ds[x_dim].values[None, :] > BBCOR_BARREL * (1 + 1e-12))
         yy, xx = np.meshgrid(y, x, indexing="ij")
         ax.scatter(xx[illegal], yy[illegal], marker="x", color="white", s=18, label="breaks a rule")
         ax.scatter(xx[~illegal], yy[~illegal], marker=".", color="black", s=6, label="legal")
@@ -92,7 +92,7 @@ with xr.open_dataset(path, engine="h5netcdf") as ds:
     axes[1].legend(loc="lower right", fontsize=8, framealpha=0.8)
     held_text = ", ".join(f"{k} = {v if isinstance(v, str) else f'{float(v):g}'}" for k, v in chosen.items())
     swing = "equal effort" if ds.attrs.get("scene_swing") == "equal_effort" else "the same swing for every bat"
-    fig.suptitle(f"{ds.attrs.get('title', '')} ({swing})\n{held_text}; x: barrel > 2.61 in (MLB) or lighter than drop -3 (NCAA)",
+    fig.suptitle(f"{ds.attrs.get('title', '')} ({swing})\n{held_text}; x: breaks NCAA/BBCOR (barrel > 2 5/8 in or lighter than drop -3)",
                  fontsize=9)
     fig.tight_layout()
     fig.savefig(out, dpi=120)

@@ -4,6 +4,7 @@
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include <toml++/toml.h>
 
@@ -17,6 +18,17 @@ inline std::string format_number(double x) {
   out.precision(10);
   out << x;
   return out.str();
+}
+
+// A value and the bound it broke, with as many significant digits as tell them apart (at least 6,
+// the same for both): z = 0.840000002 beside a bat of 0.84 m, not 0.84 beside 0.840000.
+inline std::pair<std::string, std::string> format_apart(double value, double bound) {
+  for (int digits = 6;; ++digits) {
+    std::ostringstream a, b;
+    a.precision(digits), b.precision(digits);
+    a << value, b << bound;
+    if (a.str() != b.str() || digits >= 17 || value == bound) return {a.str(), b.str()};
+  }
 }
 
 // A string as TOML writes it in basic form.
@@ -34,8 +46,18 @@ std::string join(const Names& names) {
   return list;
 }
 
-// A TOML value as written, with its type when that is not a plain number.
+// A number's value as a double: toml++ gives nothing for an integer a double cannot hold exactly
+// (2^63 - 1), which is then taken as the nearest double.
+inline std::optional<double> number(const toml::node& node) {
+  if (node.is_integer()) return static_cast<double>(node.as_integer()->get());
+  if (node.is_floating_point()) return node.as_floating_point()->get();
+  return std::nullopt;
+}
+
+// A TOML value as written, with its type when that is not a plain number: an integer in all its
+// digits (9223372036854775807, not the double it rounds to).
 inline std::string describe(const toml::node& node) {
+  if (node.is_integer()) return std::to_string(node.as_integer()->get());
   if (node.is_number()) return format_number(*node.value<double>());
   if (node.is_boolean()) return std::string(node.as_boolean()->get() ? "true" : "false") + " (boolean)";
   if (node.is_string()) return quote(node.as_string()->get()) + " (string)";
@@ -55,7 +77,7 @@ inline std::string describe(const toml::node& node) {
 // checks refuse NaN, as before); a string that is not a finite quantity of that dimension, or any
 // other type, gives nothing, for the caller to refuse with its own message.
 inline std::optional<double> quantity(const toml::node& node, Dimension dimension) {
-  if (node.is_number()) return node.value<double>();
+  if (node.is_number()) return number(node);
   if (node.is_string()) return parse_quantity(node.as_string()->get(), dimension);
   return std::nullopt;
 }

@@ -123,6 +123,77 @@ for call in [lambda: sweetspot.Bat.load(f"{source}/studies/bats/no_such_bat.toml
     except ValueError as e:
         print("ValueError:", e)
 
+# 3b. Every argument of a wrong type or value is a ValueError naming it (issue 24): not
+# pybind11's RuntimeError ("Unable to cast") or TypeError, no crash, no complex number read as its
+# real part; threads bounded; dt and accuracy not both; an accuracy of 0 refused as a study's is.
+swing = dict(z=0.7, ball_speed=40, cm_speed=10)
+rod_args = ("rod", 0.84, [0, 0.84], [0.06, 0.06])
+for call, fragments in [
+        (lambda: sweetspot.impacts(bat, **swing, threads=100000), ["threads", "100000", "from 1 to"]),
+        (lambda: sweetspot.impacts(bat, **swing, threads=sweetspot._max_threads() + 1),
+         ["threads", str(sweetspot._max_threads() + 1), "4 per processor"]),
+        (lambda: sweetspot.impacts(bat, **swing, threads=-1), ["threads", "-1"]),
+        (lambda: sweetspot.impacts(bat, **swing, threads=0), ["threads", "0"]),
+        (lambda: sweetspot.impacts(bat, **swing, threads=2.5), ["threads", "2.5"]),
+        (lambda: sweetspot.impacts(bat, **swing, threads="4"), ["threads", "'4'"]),
+        (lambda: sweetspot.impact(bat, **swing, dt=1e-5, accuracy=1e-4), ["dt", "accuracy"]),
+        (lambda: sweetspot.impacts(bat, **swing, dt=1e-5, accuracy=1e-4), ["dt", "accuracy"]),
+        (lambda: sweetspot.impact(bat, **swing, accuracy=0), ["accuracy", "0", "> 0"]),
+        (lambda: sweetspot.impact(bat, **swing, accuracy=-1e-4), ["accuracy", "-0.0001", "> 0"]),
+        (lambda: sweetspot.impact(bat, **swing, accuracy=math.nan), ["accuracy", "nan", "> 0"]),
+        (lambda: sweetspot.impact(bat, **swing, pivot="yes"), ["pivot", "'yes'", "True or False"]),
+        (lambda: sweetspot.impact(bat, **swing, n2000="no"), ["n2000", "'no'"]),
+        (lambda: sweetspot.impact(bat, **swing, modes=10 ** 20), ["modes", "100000000000000000000"]),
+        (lambda: sweetspot.impact(bat, **swing, theory=5), ["theory", "5"]),
+        (lambda: sweetspot.impact(bat, **swing, integrator=["rk4"]), ["integrator"]),
+        (lambda: sweetspot.impact(bat, z=0.7 + 1e-3j, ball_speed=40, cm_speed=10), ["z", "0.7"]),
+        (lambda: sweetspot.impact(bat, **swing, e0=np.complex128(0.5 + 0.1j)), ["e0", "0.5"]),
+        (lambda: sweetspot.impact(bat, **swing, e0=True), ["e0", "True"]),
+        (lambda: sweetspot.impact(bat, **swing, dt="1e-5"), ["dt", "'1e-5'"]),
+        (lambda: sweetspot.impact(bat, z=[0.6, 0.7], ball_speed=40, cm_speed=10), ["z", "[0.6, 0.7]"]),
+        (lambda: sweetspot.impacts(bat, z=np.array([0.6, 0.7 + 1e-3j]), ball_speed=40, cm_speed=10), ["z"]),
+        (lambda: sweetspot.impacts(bat, z=[0.6, "0.7"], ball_speed=40, cm_speed=10), ["z"]),
+        (lambda: sweetspot.impacts(bat, z=[[0.6], [0.7, 0.8]], ball_speed=40, cm_speed=10), ["z"]),
+        (lambda: sweetspot.impact("r161", **swing), ["bat", "'r161'", "sweetspot.Bat"]),
+        (lambda: sweetspot.Bat.from_knots(*rod_args, density="700"), ["density", "'700'", "real number"]),
+        (lambda: sweetspot.Bat.from_knots(*rod_args, density=700 + 1j), ["density"]),
+        (lambda: sweetspot.Bat.from_knots("", *rod_args[1:]), ["name", "''", "non-empty"]),
+        (lambda: sweetspot.Bat.from_knots(5, *rod_args[1:]), ["name", "5"]),
+        (lambda: sweetspot.Bat.from_knots("rod", 0.84, [0, 0.84 + 1j], [0.06, 0.06]), ["z"]),
+        (lambda: sweetspot.Bat.from_knots(*rod_args, slices="40"), ["slices", "'40'"]),
+        (lambda: sweetspot.Bat.from_knots(*rod_args, slices=10 ** 20), ["slices", "100000000000000000000"]),
+        (lambda: sweetspot.Bat.from_knots(*rod_args, interpolation=1), ["interpolation", "1"]),
+        (lambda: sweetspot.Bat.from_dimensions("", 0.8382, knob_diameter=0.0505, knob_length=0.02,
+                                               handle_diameter=0.0238125, taper_start=0.3048, taper_end=0.6604,
+                                               barrel_diameter=0.0635), ["name", "''"]),
+        (lambda: sweetspot.Bat.from_dimensions("b", 0.8382, knob_diameter=0.0505, knob_length=0.02,
+                                               handle_diameter=0.0238125, taper_start=0.3048, taper_end=0.6604,
+                                               barrel_diameter=0.0635j), ["barrel_diameter"]),
+        (lambda: sweetspot.Bat.load(BAT, slices=3.5), ["slices", "3.5"]),
+        (lambda: sweetspot.Bat.load(161), ["path", "161"]),
+        (lambda: bat.modes(count="4"), ["count", "'4'"]),
+        (lambda: bat.modes(count=10 ** 20), ["count"]),
+        (lambda: bat.moment_of_inertia_about(1j), ["z", "1j"]),
+        (lambda: sweetspot.certify(bat, e0="0.5"), ["e0", "'0.5'"]),
+        (lambda: sweetspot.certify(bat, standard=None), ["standard", "None"]),
+        (lambda: sweetspot.certify(bat, modes=10 ** 20), ["modes"]),
+        (lambda: sweetspot.ball(5), ["name", "5"])]:
+    try:
+        call()
+        check(False, f"no ValueError for {fragments}")
+    except ValueError as e:
+        check(all(f in str(e) for f in fragments) and "\n" not in str(e), f"{fragments} not all in {e!r}")
+    except Exception as e:  # noqa: BLE001 (RuntimeError, TypeError: what this section refuses)
+        check(False, f"{fragments}: {type(e).__name__}, not ValueError: {e}")
+# What stays accepted: units as strings, numpy numbers, 0/1 flags, threads up to the bound, a dt or
+# an accuracy alone, a replay of a result with an accuracy (its record holds both).
+one = sweetspot.impact(bat, z="27.56 in", ball_speed=np.float32(40), cm_speed=np.int64(10), pivot=0)
+check(one["status"] == "ok", "units and numpy numbers")
+check(sweetspot.impacts(bat, **swing, threads=1).vf.values[()] == sweetspot.impact(bat, **swing)["vf"], "threads=1")
+accurate = sweetspot.impact(bat, **swing, accuracy=1e-4)
+check(sweetspot.impact(bat, **sweetspot.scene_of(accurate))["vf"] == accurate["vf"], "replay with an accuracy")
+check(sweetspot.Bat.from_knots(*rod_args, density=np.float64(700), slices=np.int64(40)).slices == 40, "numpy args")
+
 # 4. The GIL released: two Python threads each run impacts; both finish with the same numbers.
 zs = np.linspace(0.45, 0.84, 3000)
 # OpenMP's threads per call, then one each: two one-thread calls on two cores take about as long as
@@ -196,6 +267,38 @@ for bad, what in ((lambda: sweetspot.Bat.from_knots("b", 0.84, [0, 0.9], [0.06, 
         check(False, f"{what}: no ValueError")
     except ValueError as e:
         check(what in str(e), f"{what}: {e}")
+
+# 6a. Each bat parameter's range (parameter_bounds.hpp), as bat files and studies have it: just
+# inside, a bat with finite modes; just outside, a ValueError naming the parameter and the range.
+dims = dict(knob_diameter=0.0505, knob_length=0.02, handle_diameter=0.0238125, taper_start=0.3048,
+            taper_end=0.6604, barrel_diameter=0.0635, end="cupped", end_depth=0.0254)
+for key, inside, outside, expected in (("density", 25000, 25001, "10 to 25000 kg/m^3"),
+                                       ("youngs_modulus", 1e6, 9.9e5, "1000000 to 1e+12 Pa"),
+                                       ("shear_coefficient", 1, 1.01, "0.1 to 1"),
+                                       ("barrel_diameter", 1, 1e300, "0.001 to 1 m")):
+    material = {k: v for k, v in ((key, inside),) if key != "barrel_diameter"}
+    if key == "youngs_modulus":  # the shear modulus stays at most Young's
+        material["shear_modulus"] = inside
+    shape = dict(dims, **({key: inside, "knob_diameter": 1} if key == "barrel_diameter" else {}))
+    good = sweetspot.Bat.from_dimensions("b", 0.8382, material="maple", **material, **shape)
+    hz = good.modes(count=3)["frequencies_hz"]
+    check(all(math.isfinite(f) and f > 0 for f in hz) and math.isfinite(good.mass), f"{key} = {inside}: {hz}")
+    try:
+        material = {k: v for k, v in ((key, outside),) if key != "barrel_diameter"}
+        if key == "youngs_modulus":
+            material["shear_modulus"] = 1e6
+        shape = dict(dims, **({key: outside, "knob_diameter": 1} if key == "barrel_diameter" else {}))
+        sweetspot.Bat.from_dimensions("b", 0.8382, material="maple", **material, **shape)
+        check(False, f"{key} = {outside}: no ValueError")
+    except ValueError as e:
+        check(key in str(e) and expected in str(e) and "\n" not in str(e), f"{key} = {outside}: {e}")
+thin = sweetspot.Bat.from_knots("tube", 0.84, [0, 0.84], [0.06, 0.06], [0.0598, 0.0598], material="maple")
+check(math.isfinite(thin.mass) and thin.modes(count=2)["frequencies_hz"][1] > 0, "a 0.1-mm wall from knots")
+try:
+    sweetspot.Bat.from_knots("tube", 0.84, [0, 0.84], [0.06, 0.06], [0.06 - 2e-9, 0.06 - 2e-9], material="maple")
+    check(False, "a 1-nm wall from knots: no ValueError")
+except ValueError as e:
+    check("wall" in str(e) and "0.0001 to 0.5 m" in str(e), f"a 1-nm wall from knots: {e}")
 
 # 6b. A shipped bat by name, found in the build tree (build/share/sweetspot links the checkout's
 # studies/bats); an unknown name is a ValueError naming the shipped bats.

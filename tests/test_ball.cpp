@@ -213,6 +213,10 @@ TEST_CASE("sweetspot ball runs the standard tests and refuses a ball that is not
   refused("", {"b.toml: [ball]: is empty", "preset"});
   refused("preset = \"mlb\"\na = 0\n", {"a = 0", "positive"});
   refused("preset = \"mlb\"\nk1 = 0\n", {"k1 = 0", "positive"});
+  // Two stiffnesses: one would silently overrule the other.
+  refused("mass = 0.145\nradius = 0.0366\ncor = 0.5\nk1 = 6.53e7\ndynamic_stiffness = 1.9e6\n",
+          {"b.toml: [ball]: dynamic_stiffness, k1 given together", "expected one stiffness"});
+  refused("preset = \"mlb\"\ndynamic_stiffness = 1.9e6\ncompression = 1500\n", {"dynamic_stiffness, compression"});
   // Stiffness that grows a thousandfold with speed: no power law of exponent 1 to 3 does that.
   refused("preset = \"mlb\"\ndynamic_stiffness = [[20, 1e6], [40, 1e9]]\n", {"exponent a = -1.5", "1 to 3"});
   require_refused(run_program("impact --bat " + source_path("studies/bats/r161.toml") +
@@ -267,4 +271,14 @@ TEST_CASE("The ball file of docs/balls.md gives its lab's CORs", "[ball]") {
   const Ball ball = load_ball(file.string()).ball;
   for (const auto& [speed, cor] : {std::pair{26.8, 0.55}, {40.2, 0.52}, {53.6, 0.49}})
     CHECK(ball_lab_test(ball, speed, 0, fine()).cor == Approx(cor).margin(1e-3));
+}
+
+TEST_CASE("Dynamic stiffness measured twice at one speed is a replicate: N2000's exponent, not a linear spring", "[ball]") {
+  const TempDir dir;
+  const auto once = dir.write("once.toml", "[ball]\npreset = \"mlb\"\ndynamic_stiffness = [[\"60 mph\", 1.9e6]]\n");
+  const auto twice = dir.write("twice.toml", "[ball]\npreset = \"mlb\"\ndynamic_stiffness = [[\"60 mph\", 1.9e6], [\"60 mph\", 1.9e6]]\n");
+  const Ball a = load_ball(once.string()).ball, b = load_ball(twice.string()).ball;
+  CHECK(b.a == 1.84);
+  CHECK(b.a == a.a);
+  CHECK(b.k1 == Approx(a.k1).epsilon(1e-12));
 }

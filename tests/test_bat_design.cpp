@@ -2,6 +2,7 @@
 // dimensions make the shapes they name, to closed forms of cylinders and frustums; a parametric
 // bat is the same bat as its knot CSV; every impossible bat is refused naming parameter, value and
 // rule; parameters set by name; wood presets are the Wood Handbook's numbers.
+#include <algorithm>
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -11,6 +12,7 @@
 
 #include "program.hpp"
 #include "sweetspot/bat/bat_design.hpp"
+#include "sweetspot/bat/parameter_bounds.hpp"
 #include "sweetspot/input_error.hpp"
 #include "temp_dir.hpp"
 
@@ -302,8 +304,11 @@ TEST_CASE("A design's parameters: length, the material constants and every dimen
                                              "wall_thickness"};
   CHECK(design_parameters(bat) == expected);
   for (const std::string& name : expected) {
-    set_design_parameter(bat, name, 0.125);
-    CHECK(design_parameter(bat, name) == 0.125);
+    // A value within the parameter's range (parameter_bounds.hpp): outside it, setting it throws.
+    const ParameterBound* bound = parameter_bound(name);
+    const double value = bound ? std::clamp(0.125, bound->low, bound->high) : 0.125;
+    set_design_parameter(bat, name, value);
+    CHECK(design_parameter(bat, name) == value);
   }
   const BatDesign r161 = load("r161.toml");
   CHECK(design_parameters(r161) == std::vector<std::string>(expected.begin(), expected.begin() + 8));

@@ -100,3 +100,16 @@ TEST_CASE("A certification study refuses a bat too short for the rig before any 
   const ProgramRun certify = run_program("certify " + d / "short.toml");
   CHECK(certify.exit_code == 2);
 }
+
+TEST_CASE("A refusal shows control characters from a file as escapes, never raw", "[certification]") {
+  // A bat named with an escape sequence that would clear and recolour the terminal.
+  const StudyDir d(3);
+  d.dir.write("evil.csv", "z_m,outer_diameter_m\n0,0.03\n0.4,0.06\n");
+  d.dir.write("evil.toml", "name = \"R\\u001b[2J\\u001b[31mEVIL\"\nlength = 0.4\nprofile = \"evil.csv\"\n[material]\npreset = \"maple\"\n");
+  const auto study = d.dir.write("evil_rig.toml", "kind = \"certification\"\n[scene]\nbat = \"evil.toml\"\n");
+  const ProgramRun run = run_program("run " + study.string() + " -o " + d / "evil.h5");
+  INFO(run.output);
+  CHECK(run.exit_code == 2);
+  CHECK(run.output.find('\x1b') == std::string::npos);
+  CHECK(run.output.find("R\\x1b[2J\\x1b[31mEVIL") != std::string::npos);
+}

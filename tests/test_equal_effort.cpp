@@ -110,8 +110,11 @@ TEST_CASE("Bad equal-effort settings are refused naming the key", "[swing]") {
   CHECK_THAT(refusal("reference_bat = \"bats/r161.toml\"\n"),
              Catch::Contains("key 'scene.reference_bat'") && Catch::Contains("equal_effort"));
   CHECK_THAT(refusal("swing = \"fast\"\n"), Catch::Contains("key 'scene.swing' = \"fast\""));
-  CHECK_THAT(refusal("swing = \"equal_effort\"\nreference_bat = \"bats/r161.toml\"\nswing_exponent = 0\n"),
-             Catch::Contains("key 'scene.swing_exponent' = 0"));
+  // The range optimisations take too: 0 (every bat swung as the reference) to 2.
+  CHECK_THAT(refusal("swing = \"equal_effort\"\nreference_bat = \"bats/r161.toml\"\nswing_exponent = 2.5\n"),
+             Catch::Contains("key 'scene.swing_exponent' = 2.5") && Catch::Contains("[0, 2]"));
+  CHECK_THAT(refusal("swing = \"equal_effort\"\nreference_bat = \"bats/r161.toml\"\nswing_exponent = -0.1\n"),
+             Catch::Contains("key 'scene.swing_exponent' = -0.1"));
   CHECK_THAT(refusal("swing = \"equal_effort\"\nreference_bat = \"bats/none.toml\"\n"),
              Catch::Contains("key 'scene.reference_bat'") && Catch::Contains("none.toml"));
 }

@@ -243,6 +243,72 @@ TEST_CASE("A journal cut at every record boundary and inside records resumes to 
   }
 }
 
+// Every (point, row) entry of a journal's whole records, in their order.
+std::vector<std::pair<std::uint64_t, Row>> entries_of(const std::string& journal) {
+  std::vector<std::pair<std::uint64_t, Row>> entries;
+  const std::vector<std::size_t> ends = record_ends(journal);
+  for (std::size_t r = 0; r + 1 < ends.size(); ++r)
+    for (std::uint64_t i = 0; i < word_at(journal, ends[r]); ++i) {
+      const std::size_t at = ends[r] + 8 + i * entry_size;
+      Row row;
+      std::memcpy(row.data(), journal.data() + at + 8, sizeof row);
+      entries.emplace_back(word_at(journal, at), row);
+    }
+  return entries;
+}
+
+// A journal of the header and `entries`, `per_record` of them to a record.
+std::string journal_of(const std::string& header, const std::vector<std::pair<std::uint64_t, Row>>& entries,
+                       std::size_t per_record) {
+  std::string bytes = header;
+  for (std::size_t from = 0; from < entries.size(); from += per_record) {
+    std::vector<std::uint64_t> points;
+    std::vector<Row> rows;
+    for (std::size_t i = from; i < std::min(from + per_record, entries.size()); ++i) {
+      points.push_back(entries[i].first);
+      rows.push_back(entries[i].second);
+    }
+    bytes += record(points, rows);
+  }
+  return bytes;
+}
+
+TEST_CASE("Two and three ranks resume from journals of any pattern of recovered points and end", "[run][journal][mpi]") {
+  // Rank 0 hands out what the journal lacks and answers every request, whatever is left: the
+  // whole recovered prefix, holes between every other point, one point or none recovered.
+  const KilledRun k;
+  const auto entries = entries_of(k.journal);
+  REQUIRE(entries.size() >= 8);
+  std::vector<std::pair<std::uint64_t, Row>> every_other, all_but_first(entries.begin() + 1, entries.end());
+  for (std::size_t i = 0; i < entries.size(); i += 2) every_other.push_back(entries[i]);
+  const std::string header = k.journal.substr(0, header_size);
+  struct Pattern {
+    std::string name, bytes;
+    int ranks;
+  };
+  const Pattern patterns[] = {
+      {"mpi_all", journal_of(header, entries, entries.size()), 2},
+      {"mpi_every_other", journal_of(header, every_other, 7), 2},
+      {"mpi_every_other3", journal_of(header, every_other, 3), 3},
+      {"mpi_all_but_first", journal_of(header, all_but_first, 50), 2},
+      {"mpi_first", journal_of(header, {entries.front()}, 1), 2},
+      {"mpi_last", journal_of(header, {entries.back()}, 1), 2},
+      {"mpi_none", header, 2},
+  };
+  std::vector<std::string> resumed;
+  for (const Pattern& p : patterns) {
+    // A hang fails here (timeout's 124) instead of stopping the suite.
+    const ProgramRun run = k.resume(p.name, p.bytes,
+                                    "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1 "
+                                    "timeout 120 mpirun -np " + std::to_string(p.ranks) +
+                                        " --oversubscribe --bind-to none ");
+    k.require_resumed(run, p.name);
+    CHECK_THAT(run.output, Catch::Contains("points on " + std::to_string(p.ranks) + " rank(s)"));
+    resumed.push_back(p.name);
+  }
+  k.require_identical(resumed);
+}
+
 TEST_CASE("Random byte flips in a journal never reach the dataset", "[run][journal]") {
   const KilledRun k;
   std::mt19937 random(20240611);  // fixed: the same trials every time

@@ -6,6 +6,10 @@
 // optimisation file is refused before any work.
 #include <catch2/catch.hpp>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -19,6 +23,7 @@
 #include "sweetspot/impact/formulas.hpp"
 #include "sweetspot/optimize/optimizer.hpp"
 #include "sweetspot/study/journal.hpp"
+#include "sweetspot/study/output_lock.hpp"
 #include "temp_dir.hpp"
 
 using namespace sweetspot;
@@ -421,4 +426,100 @@ TEST_CASE("optimize's BBCOR constraint is certify's maximum over the barrel, and
     CHECK(problem.constraints[i].limit == c.checks[i].limit);
   }
   CHECK(feasible(problem, e) == c.pass);
+}
+
+TEST_CASE("optimize takes a lock on its best bat file, which outputs of one stem share", "[optimize][program]") {
+  // r.h5 and r.nc both write r_best.toml: the second is refused while the first holds it.
+  TempDir dir;
+  const auto opt = dir.write("opt.toml", density_problem());
+  int ready[2];
+  REQUIRE(::pipe(ready) == 0);
+  const pid_t holder = ::fork();
+  REQUIRE(holder >= 0);
+  if (holder == 0) {
+    const sweetspot::OutputLock lock(dir / "r_best.toml");
+    const char byte = 1;
+    if (::write(ready[1], &byte, 1) != 1) ::_exit(1);
+    ::pause();
+  }
+  char byte = 0;
+  REQUIRE(::read(ready[0], &byte, 1) == 1);
+  const ProgramRun run = run_program("optimize " + opt.string() + " -o " + dir / "r.nc --quiet");
+  ::kill(holder, SIGKILL);
+  ::waitpid(holder, nullptr, 0);
+  INFO(run.output);
+  CHECK(run.exit_code == 2);
+  CHECK(run.output.find("r_best.toml") != std::string::npos);
+  CHECK(run.output.find("another sweetspot run (process " + std::to_string(holder) + ")") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir / "r.nc"));
+}
+
+TEST_CASE("optimize stops for max_evaluations only with that many evaluations recorded", "[optimize]") {
+  // NLopt counts its calls, not the designs scored: a design asked twice in a row (the same point
+  // after clamping to the bounds, or a local search starting where the global one sampled) is
+  // scored once. The stop reason must agree with the evaluations a dataset records.
+  TempDir dir;
+  const std::string algorithm = GENERATE("cobyla", "bobyqa", "mlsl");
+  const std::string constraints = GENERATE(std::string(), std::string("[constraints]\nmass = { max = 0.9 }\n"));
+  for (const int budget : {3, 7, 12, 25}) {
+    std::string text = density_problem(constraints);
+    text.replace(text.find("max_evaluations = 400"), 21, "max_evaluations = " + std::to_string(budget));
+    text.replace(text.find("xtol_rel"), 0, "algorithm = \"" + algorithm + "\"\n");
+    const OptimizationProblem problem = load_optimization(dir.write("opt.toml", text));
+    const OptimizationHistory history = optimize(problem);
+    INFO(algorithm << ", " << constraints << "budget " << budget << ": " << history.evaluations.size()
+                   << " evaluations, " << history.stop_reason);
+    CHECK(history.evaluations.size() <= static_cast<std::size_t>(budget));
+    if (history.stop_reason == "max_evaluations reached") CHECK(history.evaluations.size() == static_cast<std::size_t>(budget));
+    else CHECK(history.stop_reason.find("max_evaluations") == std::string::npos);
+  }
+}
+
+TEST_CASE("optimize refuses a player's negative omega: the swing turns the barrel toward the ball", "[optimize][program]") {
+  TempDir dir;
+  std::string text = density_problem();
+  text.replace(text.find("omega = 51"), 10, "omega = -51");
+  const auto opt = dir.write("opt.toml", text);
+  require_refused(run_program("optimize " + opt.string() + " -o " + dir / "out.h5"),
+                  {"opt.toml", "player.omega", "-51", ">= 0"});
+  CHECK_FALSE(std::filesystem::exists(dir / "out.h5"));
+  CHECK_FALSE(std::filesystem::exists(dir / "out.h5.journal"));
+  text.replace(text.find("omega = -51"), 11, "omega = 0");  // a swing without rotation: a push, allowed
+  CHECK(load_optimization(dir.write("zero.toml", text)).player.swing.omega == 0);
+}
+
+TEST_CASE("a failed evaluation's reason names the point and the collision's status", "[optimize]") {
+  // A bat at rest (omega 0 about a centre) and a ball at rest: they never approach, and every
+  // impact ends no_contact.
+  TempDir dir;
+  std::string text = density_problem();
+  text.replace(text.find("omega = 51"), 10, "omega = 0");
+  text.replace(text.find("ball_speed = 40"), 15, "ball_speed = 0");
+  const OptimizationProblem problem = load_optimization(dir.write("opt.toml", text));
+  const DesignEvaluation e = evaluate_design(problem, {problem.free[0].start}, serial_map);
+  INFO(e.message);
+  CHECK(e.status == EvaluationStatus::failed);
+  CHECK_THAT(e.message, Catch::StartsWith("the impact at z = 0.7 m ended no_contact"));
+}
+
+TEST_CASE("a rerun into the same output that finds no feasible design removes the earlier best bat file",
+          "[optimize][program]") {
+  TempDir dir;
+  const auto feasible = dir.write("feasible.toml", density_problem("[constraints]\nmass = { max = 0.9 }\n"));
+  REQUIRE(run_program("optimize " + feasible.string() + " -o " + dir / "out.h5 --quiet").exit_code == 0);
+  REQUIRE(std::filesystem::exists(dir / "out_best.toml"));
+  // No density from 100 to 3000 makes the maple 271 lighter than 50 g.
+  std::string text = density_problem("[constraints]\nmass = { max = 0.05 }\n");
+  text.replace(text.find("max_evaluations = 400"), 21, "max_evaluations = 20");
+  const auto infeasible = dir.write("infeasible.toml", text);
+  const ProgramRun run = run_program("optimize " + infeasible.string() + " -o " + dir / "out.h5");
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  CHECK_FALSE(std::filesystem::exists(dir / "out_best.toml"));
+  CHECK(run.output.find("no feasible design among") != std::string::npos);
+  CHECK(run.output.find("removed " + dir / "out_best.toml" + ", an earlier run's best design") != std::string::npos);
+  const ProgramRun check = run_command(std::string(python) + " -c \"import h5py; f = h5py.File('" + dir / "out.h5" +
+                                       "'); print(int(f['best_evaluation'][()]))\"");
+  INFO(check.output);
+  CHECK(check.output == "-1\n");
 }

@@ -218,6 +218,19 @@ void resolve_integrator(const CLI::App& cmd, CollisionOptions& options) {
   }
 }
 
+void check_accuracy(const CLI::App& cmd, double accuracy) {
+  if (cmd.count("--accuracy") == 0) return;
+  // As a study's key: a stated accuracy is a finite number > 0; it chooses the step, so a step
+  // given beside it would be silently overridden.
+  if (!(std::isfinite(accuracy) && accuracy > 0)) {
+    char value[32];
+    std::snprintf(value, sizeof value, "%g", accuracy);
+    throw InputError(cmd.get_name() + ": --accuracy " + value + ": expected " + accuracy_expected);
+  }
+  if (cmd.count("--dt"))
+    throw InputError(cmd.get_name() + ": --dt excludes --accuracy (which chooses the step): give one of them");
+}
+
 void add_integrator_options(CLI::App& cmd, CollisionOptions& options) {
   cmd.add_option("--integrator", options.method, "rk4 (N2000), exact (modal, any step) or dopri (adaptive)")
       ->transform(CLI::Validator(
@@ -275,6 +288,7 @@ void add_impact_command(CLI::App& app) {
   o->units.add_option(*cmd);
   cmd->callback([o, cmd] {
     o->units.check_text_output("impact", o->json);
+    check_accuracy(*cmd, o->scene.accuracy);
     resolve_integrator(*cmd, o->scene.integrator);
     resolve_ball(*cmd, o->named_ball, o->scene.ball);
     if (cmd->count("--n2000") && cmd->count("--modes") == 0) o->modes = std::to_string(n2000_modes);

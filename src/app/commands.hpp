@@ -2,6 +2,9 @@
 // The program's subcommands. Each adds itself to the command line and runs when chosen.
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
+#include <string>
+
 #include "json.hpp"
 #include "sweetspot/bat/bat.hpp"
 #include "sweetspot/contact/ball.hpp"
@@ -14,6 +17,25 @@ namespace sweetspot::app {
 // verdict from a failure to reach one.
 inline constexpr int failed_check = 3;
 inline int exit_status = 0;
+
+// An error line as the terminal shows it: control characters from a file's contents (an escape
+// sequence in a bat's name, say) written as \xHH, so that the one line stays one line and cannot
+// clear or recolour the user's screen.
+inline std::string printable(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 || byte == 0x7f) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\x%02x", byte);
+      out += escaped;
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
 
 void add_modes_command(CLI::App& app);
 void add_impact_command(CLI::App& app);

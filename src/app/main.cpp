@@ -33,14 +33,14 @@ int main(int argc, char** argv) {
       text = "expected a command: modes, impact, wall, toy, ball, run, convergence, certify or optimize";
       if (argc > 1) text += ", not '" + std::string(argv[1]) + "'";
     }
-    std::fprintf(stderr, "sweetspot: error: %s (see sweetspot%s --help)\n", text.c_str(),
+    std::fprintf(stderr, "sweetspot: error: %s (see sweetspot%s --help)\n", sweetspot::app::printable(text).c_str(),
                  app.get_subcommands().empty() ? "" : (" " + app.get_subcommands().front()->get_name()).c_str());
     return 2;
   } catch (const sweetspot::InputError& e) {
-    std::fprintf(stderr, "sweetspot: error: %s\n", e.what());
+    std::fprintf(stderr, "sweetspot: error: %s\n", sweetspot::app::printable(e.what()).c_str());
     return 2;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "sweetspot: error: %s\n", e.what());
+    std::fprintf(stderr, "sweetspot: error: %s\n", sweetspot::app::printable(e.what()).c_str());
     return 1;
   }
   return sweetspot::app::exit_status;

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "commands.hpp"
 #include "sweetspot/input_error.hpp"
 
 namespace sweetspot::app {
@@ -24,7 +25,7 @@ struct MpiCommandOptions {
 // Rank 0 says why, and the others wait until it has: mpirun stops the job at the first non-zero
 // exit, which could otherwise cut rank 0 off before its message.
 [[noreturn]] void refuse(const std::string& message, int rank) {
-  if (rank == 0) std::fprintf(stderr, "sweetspot: error: %s\n", message.c_str());
+  if (rank == 0) std::fprintf(stderr, "sweetspot: error: %s\n", printable(message).c_str());
   MPI_Barrier(MPI_COMM_WORLD);
   MPI_Finalize();
   std::exit(2);
@@ -54,7 +55,7 @@ void run_command(const MpiCommandOptions& o, const LoadInput& load, const RunWor
   } catch (const RunRefused& e) {  // thrown on every rank, before any work
     refuse(e.what(), rank);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "sweetspot: error on rank %d: %s\n", rank, e.what());
+    std::fprintf(stderr, "sweetspot: error on rank %d: %s\n", rank, printable(e.what()).c_str());
     MPI_Abort(MPI_COMM_WORLD, 1);  // the other ranks would wait for this one forever
   }
   MPI_Finalize();

@@ -25,7 +25,7 @@ constexpr std::array<std::string_view, 14> known_keys = {
 double number(const toml::table& t, std::string_view key, const std::string& where) {
   const toml::node& node = *t.get(key);
   if (!node.is_number()) reject(where, key, node, "a number");
-  return *node.value<double>();
+  return *detail::number(node);
 }
 
 // A mass, length or speed: a number in SI or a string with its unit ("5.125 oz", "60 mph").
@@ -49,7 +49,7 @@ std::vector<SpeedValue> speed_values(const toml::table& t, std::string_view valu
   if (node.is_number()) {
     const double speed =
         t.contains(speed_key) ? quantity_key(t, speed_key, Dimension::speed, where) : 60 * metres_per_second_per_mph;
-    return {{speed, *node.value<double>()}};
+    return {{speed, *detail::number(node)}};
   }
   const toml::array* rows = node.as_array();
   if (!rows || rows->empty()) reject(where, value_key, node, "a number, or [[speed, value], ...] pairs");
@@ -59,7 +59,7 @@ std::vector<SpeedValue> speed_values(const toml::table& t, std::string_view valu
     const toml::array* pair = row.as_array();
     if (!pair || pair->size() != 2 || !((*pair)[0].is_number() || (*pair)[0].is_string()) || !(*pair)[1].is_number())
       reject(where, value_key, row, "[speed, value] pairs (the speed in m/s or as \"60 mph\", the value a number)");
-    values.push_back({quantity_at((*pair)[0], value_key, Dimension::speed, where), *(*pair)[1].value<double>()});
+    values.push_back({quantity_at((*pair)[0], value_key, Dimension::speed, where), *detail::number((*pair)[1])});
   }
   return values;
 }
@@ -93,6 +93,13 @@ BallFit read_ball_table(const toml::table& table, const std::string& where) {
   }
   if (table.empty())
     throw InputError(where + ": is empty: expected a preset or the ball's test values (" + join(known_keys) + ")");
+  // One stiffness: two of them given would have one silently overrule the other.
+  std::vector<std::string> stiffnesses;
+  for (const char* key : {"dynamic_stiffness", "compression", "k1"})
+    if (table.contains(key)) stiffnesses.emplace_back(key);
+  if (stiffnesses.size() > 1)
+    throw InputError(where + ": " + join(stiffnesses) + " given together: expected one stiffness (dynamic_stiffness, " +
+                     "compression or k1)");
   if (table.contains("mass")) t.mass = quantity_key(table, "mass", Dimension::mass, where);
   if (table.contains("radius")) t.radius = quantity_key(table, "radius", Dimension::length, where);
   if (table.contains("cor")) {

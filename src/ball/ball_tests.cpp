@@ -1,5 +1,6 @@
 #include "sweetspot/ball/ball_tests.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -83,7 +84,10 @@ void fit_dynamic_stiffness(const BallTests& t, const std::string& where, BallFit
   }
   Ball& b = fit.ball;
   b.a = t.exponent > 0 ? t.exponent : default_ball_exponent;
-  if (t.dynamic_stiffness.size() > 1 && !(t.exponent > 0)) {
+  // The exponent comes from the growth with speed: values at one speed only (replicates) have none
+  // to give, and keep N2000's.
+  const auto [slowest, fastest] = std::ranges::minmax(log_v);
+  if (fastest > slowest && !(t.exponent > 0)) {
     // F_peak grows as v^(2a/(a+1)), so DS as v^s with s = 2 (a - 1) / (a + 1): a = (2 + s) / (2 - s).
     const double s = fit_line(log_v, log_ds).slope;
     b.a = (2 + s) / (2 - s);
@@ -118,12 +122,12 @@ void fit_stiffness(const BallTests& t, const std::string& where, BallFit& fit) {
   if (given != 1)
     throw InputError(where + ": give the ball's stiffness one way: dynamic_stiffness, compression or k1 (" +
                      std::to_string(given) + " given)");
-  if (t.exponent != 0) require_in(where, "exponent", t.exponent, 0.5, 3, "expected an exponent a in (0.5, 3]");
+  if (t.exponent != 0) require_in(where, "exponent", t.exponent, ball_exponent_range.low, ball_exponent_range.high, "expected an exponent a in (0.5, 3]");
   Ball& b = fit.ball;
   if (!t.dynamic_stiffness.empty()) return fit_dynamic_stiffness(t, where, fit);
   b.a = t.exponent > 0 ? t.exponent : default_ball_exponent;
   if (t.k1 != 0) {
-    require_in(where, "k1", t.k1, 1e3, 1e12, "expected a stiffness k1 in (1e3, 1e12] N/m^a");
+    require_in(where, "k1", t.k1, ball_k1_range.low, ball_k1_range.high, "expected a stiffness k1 in (1e3, 1e12] N/m^a");
     b.k1 = t.k1;
     fit.stiffness_from = "k1";
     return;
@@ -151,8 +155,8 @@ double dynamic_stiffness_on_rigid(const Ball& ball, double speed) {
 
 BallFit fit_ball(const BallTests& t, const std::string& where) {
   BallFit fit;
-  require_in(where, "mass", t.mass, 0, 10, "expected a mass in (0, 10] kg");
-  require_in(where, "radius", t.radius, 0, 1, "expected a radius in (0, 1] m");
+  require_in(where, "mass", t.mass, ball_mass_range.low, ball_mass_range.high, "expected a mass in (0, 10] kg");
+  require_in(where, "radius", t.radius, ball_radius_range.low, ball_radius_range.high, "expected a radius in (0, 1] m");
   if (t.stiffness_cylinder_diameter != 0)
     require_in(where, "stiffness_cylinder_diameter", t.stiffness_cylinder_diameter, 0, 1,
                "expected a diameter in (0, 1] m");

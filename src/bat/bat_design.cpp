@@ -7,6 +7,7 @@
 
 #include "sweetspot/bat/barrel_wall.hpp"
 #include "sweetspot/bat/material_presets.hpp"
+#include "sweetspot/bat/parameter_bounds.hpp"
 #include "sweetspot/input_error.hpp"
 #include "toml_values.hpp"
 
@@ -42,15 +43,33 @@ std::string with_unit(double value, std::string_view unit) {
   return text;
 }
 
+// Positive and finite, then within its range (parameter_bounds.hpp).
 std::optional<RuleBreak> positive_rule_break(std::string_view name, double value, std::string_view unit) {
-  if (std::isfinite(value) && value > 0) return std::nullopt;
-  return RuleBreak{std::string(name), std::string(name) + " " + with_unit(value, unit) + " is not a positive, finite number"};
+  if (!(std::isfinite(value) && value > 0))
+    return RuleBreak{std::string(name), std::string(name) + " " + with_unit(value, unit) + " is not a positive, finite number"};
+  if (auto outside = bound_break(name, value)) return RuleBreak{std::string(name), std::move(*outside)};
+  return std::nullopt;
+}
+
+// An isotropic G = E / 2(1 + nu) is E/3 to E/2 for nu from 0 to 0.5 (wood's is about E/16); a
+// study may sweep E below a fixed G, but a shear modulus far above E (1e12 beside 1e6 Pa) makes
+// the beam's stiffness singular at a thin handle.
+constexpr double max_shear_to_youngs = 10;
+
+std::optional<RuleBreak> shear_rule_break(const Material& m) {
+  if (m.shear_modulus <= max_shear_to_youngs * m.youngs_modulus) return std::nullopt;
+  return RuleBreak{"shear_modulus", "shear_modulus " + with_unit(m.shear_modulus, "Pa") + " exceeds 10 times youngs_modulus " +
+                                        with_unit(m.youngs_modulus, "Pa") +
+                                        "; expected at most 10 times youngs_modulus (G = E / 2(1 + nu) is E/3 to E/2 "
+                                        "for nu from 0 to 0.5; wood's is about E/16)"};
 }
 
 std::optional<RuleBreak> wall_material_rule_break(const Material& m) {
   if (!(std::isfinite(m.hoop_modulus) && m.hoop_modulus >= 0))
     return RuleBreak{"hoop_modulus", "hoop_modulus " + with_unit(m.hoop_modulus, "Pa") +
                                          " is not a positive, finite number (or 0 for youngs_modulus)"};
+  if (m.hoop_modulus > 0)
+    if (auto outside = bound_break("hoop_modulus", m.hoop_modulus)) return RuleBreak{"hoop_modulus", std::move(*outside)};
   if (!(m.wall_loss_factor >= 0 && m.wall_loss_factor < 1))
     return RuleBreak{"wall_loss_factor", "wall_loss_factor " + format_number(m.wall_loss_factor) + " is not in [0, 1)"};
   if (!(m.loss_factor >= 0 && m.loss_factor < 1))
@@ -65,6 +84,21 @@ std::optional<RuleBreak> knot_rule_break(const BatDesign& d) {
   if (last <= d.length * (1 + 1e-9)) return std::nullopt;  // a rounding's worth, as the file's check
   return RuleBreak{"length", "knot at z_m = " + format_number(last) + " m lies beyond length " + format_number(d.length) +
                                  " m; expected every knot on the bat (a length of at least " + format_number(last) + " m)"};
+}
+
+// A profile's diameters and, where it is hollow, its wall (thinnest anywhere, between knots too)
+// within their ranges. "profile" is no parameter a study sets: the bat file is to blame.
+std::optional<RuleBreak> profile_rule_break(const Profile& p) {
+  for (std::size_t i = 0; i < p.z.size(); ++i)
+    if (auto outside = bound_break(profile_outer_diameter, p.outer[i]))
+      return RuleBreak{"profile", "at z = " + format_number(p.z[i]) + " m, " + *outside};
+  if (p.inner.empty() || std::ranges::none_of(p.inner, [](double d) { return d > 0; })) return std::nullopt;
+  // A solid stretch of a partly hollow profile is as thick as its diameter: the knots with a bore
+  // and the intervals between them are what thinnest_wall weighs.
+  const ThinnestWall thinnest = thinnest_wall(p);
+  if (auto outside = bound_break(profile_wall, thinnest.wall / 2))
+    return RuleBreak{"profile", "at z = " + format_number(thinnest.z) + " m, the " + *outside};
+  return std::nullopt;
 }
 
 // A knot profile's default slices: about 1 cm thick, as N2000's.
@@ -147,6 +181,12 @@ void set_design_parameter(BatDesign& design, std::string_view name, double value
   if (positive_when_given(name) && !(value > 0 && std::isfinite(value)))
     throw InputError("bat parameter '" + std::string(name) + "' = " + format_number(value) +
                      ": expected a positive, finite value (0 stands for none only by leaving the key out of a bat file)");
+  // A positive value outside its range is refused here, naming the range; 0, negatives and NaN
+  // are left to the design's rules, which say what they stand for (a flat end's depth of 0).
+  const ParameterBound* bound = parameter_bound(name);
+  if (bound && value > 0 && std::isfinite(value) && !within(*bound, value))
+    throw InputError("bat parameter '" + std::string(name) + "' = " + format_number(value) + ": expected " +
+                     expected_range(*bound));
   *parameter = value;
 }
 
@@ -180,8 +220,10 @@ std::optional<RuleBreak> rule_break(const BatDesign& design) {
   if (auto rule = positive_rule_break("length", design.length, "m")) return rule;
   for (const MaterialField& f : material_fields)
     if (auto rule = positive_rule_break(f.name, design.material.*f.value, f.unit)) return rule;
+  if (auto rule = shear_rule_break(design.material)) return rule;
   if (auto rule = wall_material_rule_break(design.material)) return rule;
   if (design.dimensions) return dimensions_rule_break(*design.dimensions, design.length);
+  if (auto rule = profile_rule_break(design.profile)) return rule;
   return knot_rule_break(design);
 }
 

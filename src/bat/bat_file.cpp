@@ -19,6 +19,7 @@
 #include "sweetspot/bat/barrel_wall.hpp"
 #include "sweetspot/bat/bat_design.hpp"
 #include "sweetspot/bat/dimensions.hpp"
+#include "sweetspot/bat/parameter_bounds.hpp"
 #include "sweetspot/bat/profile.hpp"
 #include "sweetspot/input_error.hpp"
 #include "toml_values.hpp"
@@ -140,11 +141,18 @@ struct Section {
     const std::string number = "positive number (" + std::string(unit) + ")";
     if (fallback && !table.contains(key)) return *fallback;
     const toml::node& node = require(key, "a " + number);
-    const auto x = node.is_number() ? node.value<double>() : std::nullopt;
-    if (x && std::isfinite(*x) && *x > 0) return *x;
+    const auto x = detail::number(node);
     const bool nan_or_inf = x && !std::isfinite(*x);
-    fail(where(key),
-         "value " + describe(node) + " must be a " + (nan_or_inf ? "finite " : "") + number);
+    if (!x || nan_or_inf || !(*x > 0))
+      fail(where(key), "value " + describe(node) + " must be a " + (nan_or_inf ? "finite " : "") + number);
+    return bounded(key, node, *x);
+  }
+
+  // The value as the key's parameter range allows (parameter_bounds.hpp), the key naming it.
+  double bounded(std::string_view key, const toml::node& node, double x) const {
+    const ParameterBound* bound = parameter_bound(key);
+    if (!bound || within(*bound, x)) return x;
+    fail(where(key), "value " + detail::describe_quantity(node) + ": expected " + expected_range(*bound));
   }
 
   // A quantity of `dimension`, as a number in SI or a string with its unit ("33 in"), finite and
@@ -156,8 +164,8 @@ struct Section {
     if (fallback && !table.contains(key)) return *fallback;
     const toml::node& node = require(key, "a " + expected);
     const std::optional<double> x = detail::quantity(node, dimension);
-    if (x && std::isfinite(*x) && ok(*x)) return *x;
-    fail(where(key), "value " + detail::describe_quantity(node) + " must be a " + expected);
+    if (!(x && std::isfinite(*x) && ok(*x))) fail(where(key), "value " + detail::describe_quantity(node) + " must be a " + expected);
+    return *x == 0 ? 0.0 : bounded(key, node, *x);  // 0: an optional dimension the bat has not
   }
 
   double positive_length(std::string_view key) const {
@@ -168,7 +176,7 @@ struct Section {
   double fraction(std::string_view key, double fallback) const {
     if (!table.contains(key)) return fallback;
     const toml::node& node = *table.get(key);
-    const auto x = node.is_number() ? node.value<double>() : std::nullopt;
+    const auto x = detail::number(node);
     if (x && *x >= 0 && *x < 1) return *x;
     fail(where(key), "value " + describe(node) + " must be a number in [0, 1)");
   }
@@ -237,7 +245,7 @@ void read_material(const Section& s, BatDesign& design) {
 double measured(const Section& s, std::string_view key, double low, double high, std::string_view unit) {
   if (!s.table.contains(key)) return 0;
   const toml::node& node = *s.table.get(key);
-  const auto x = node.is_number() ? node.value<double>() : std::nullopt;
+  const auto x = detail::number(node);
   if (x && *x >= low && *x <= high) return *x;
   fail(s.where(key), "value " + describe(node) + " must be a measured " + std::string(unit) + " from " +
                          format_number(low) + " to " + format_number(high));
@@ -377,6 +385,11 @@ Row read_row(const fs::path& file, int line, std::string_view text, const Column
   if (c.inner >= 0 && inner >= x[c.outer]) {
     fail(where, what(c.inner) + " must be less than " + what(c.outer));
   }
+  if (const ParameterBound& outer = *parameter_bound(profile_outer_diameter); !within(outer, x[c.outer]))
+    fail(where, what(c.outer) + ": expected " + expected_range(outer));
+  if (const ParameterBound& wall = *parameter_bound(profile_wall); inner > 0 && !within(wall, (x[c.outer] - inner) / 2))
+    fail(where, what(c.inner) + " with " + what(c.outer) + " leaves a wall of " + format_number((x[c.outer] - inner) / 2) +
+                    " m: expected " + expected_range(wall));
   return {line, what(c.z), x[c.z], x[c.outer], inner};
 }
 
@@ -443,13 +456,15 @@ void check_knots(const fs::path& file, const std::vector<Row>& rows, double leng
 // two diameters apart).
 void check_wall_between_knots(const fs::path& file, const std::vector<Row>& rows, const Profile& profile) {
   const ThinnestWall thinnest = thinnest_wall(profile);
-  if (thinnest.wall > 0) return;
+  const ParameterBound& wall = *parameter_bound(profile_wall);
+  if (thinnest.wall > 0 && within(wall, thinnest.wall / 2)) return;
   const Row &from = rows[thinnest.interval], &to = rows[thinnest.interval + 1];
   fail(file.string() + ": lines " + std::to_string(from.line) + "-" + std::to_string(to.line),
        std::string("with interpolation '") + to_string(profile.interpolation) +
-           "' the inner diameter reaches the outer between these knots (wall " + format_number(thinnest.wall) +
-           " m at z = " + format_number(thinnest.z) +
-           " m); expected a wall everywhere: interpolation 'linear', or knots that keep the bore inside");
+           "' the inner diameter " + (thinnest.wall > 0 ? "comes close to" : "reaches") +
+           " the outer between these knots (wall " + format_number(thinnest.wall / 2) + " m at z = " +
+           format_number(thinnest.z) + " m); expected a wall everywhere, at least " + format_number(wall.low) +
+           " m thick (" + std::string(wall.why) + "): interpolation 'linear', or knots that keep the bore inside");
 }
 
 ProfileOptions read_profile_options(const Section& top) {
@@ -542,6 +557,21 @@ void read_dimensions(const Section& top, const ProfileOptions& options, BatDesig
     fail(top.where("dimensions." + rule->parameter), rule->message);
 }
 
+// The key a rule of a possible bat is about: "material.density", "dimensions.wall_thickness",
+// "length", or "profile" for the profile's rows.
+std::string rule_key(const BatDesign& design, const std::string& parameter) {
+  if (parameter == "length" || parameter == "profile") return parameter;
+  if (design.dimensions && std::ranges::find(dimension_fields, parameter, &DimensionField::name) != dimension_fields.end())
+    return "dimensions." + parameter;
+  return "material." + parameter;
+}
+
+// Every rule of a possible bat (bat_design.hpp) checked here too, so that a file breaking one is
+// refused naming itself and the key, not later by build_bat.
+void check_possible(const Section& top, const BatDesign& design) {
+  if (const auto rule = rule_break(design)) fail(top.where(rule_key(design, rule->parameter)), rule->message);
+}
+
 }  // namespace
 
 namespace {
@@ -564,6 +594,7 @@ BatDesign parse_bat_design(BatSource& source, ProfileText profile_text) {
   if (top.table.contains("dimensions")) {
     read_dimensions(top, options, design);
     read_barrel(top, design);
+    check_possible(top, design);
     return design;
   }
   source.profile_file = profile_path(toml_path, top);
@@ -571,6 +602,7 @@ BatDesign parse_bat_design(BatSource& source, ProfileText profile_text) {
   require_text(source.profile_file, source.profile_text);  // TOML itself must be UTF-8 already
   read_profile(source.profile_file, source.profile_text, options, design);
   read_barrel(top, design);
+  check_possible(top, design);
   return design;
 }
 

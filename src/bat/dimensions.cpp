@@ -6,6 +6,7 @@
 #include <numbers>
 #include <string>
 
+#include "sweetspot/bat/parameter_bounds.hpp"
 #include "sweetspot/input_error.hpp"
 #include "toml_values.hpp"
 
@@ -25,7 +26,8 @@ std::string metres(std::string_view name, double value) {
 
 RuleBreak broken(std::string_view name, std::string message) { return {std::string(name), std::move(message)}; }
 
-// Every dimension finite; those that make the bat positive, the optional ones at least 0.
+// Every dimension finite; those that make the bat positive, the optional ones at least 0; and any
+// given within its range (parameter_bounds.hpp).
 std::optional<RuleBreak> value_rule_break(const Dimensions& d) {
   for (const DimensionField& f : dimension_fields) {
     const double x = d.*f.value;
@@ -33,6 +35,8 @@ std::optional<RuleBreak> value_rule_break(const Dimensions& d) {
     if (f.optional ? x < 0 : x <= 0)
       return broken(f.name, metres(f.name, x) + (f.optional ? " is negative; expected 0 (none) or more"
                                                             : " is not positive; expected a positive length"));
+    if (x > 0)
+      if (auto outside = bound_break(f.name, x)) return broken(f.name, std::move(*outside));
   }
   return std::nullopt;
 }

@@ -6,6 +6,7 @@
 
 #include "sweetspot/impact/impact.hpp"
 #include "sweetspot/input_error.hpp"
+#include "toml_values.hpp"
 
 namespace sweetspot {
 
@@ -36,6 +37,14 @@ ModalBasis certification_modes(const BatDesign& design, const CertifyOptions& op
 
 }  // namespace
 
+std::optional<std::string> rig_misfit(const Standard& standard, double pivot, double length, const BarrelScan& scan) {
+  if (pivot < scan_start(scan, length)) return std::nullopt;
+  using detail::format_number;
+  return "expected a bat longer than " + format_number(pivot + scan.far_from_end) + " m: the " + standard.name +
+         " rig's pivot, " + format_number(pivot) + " m from the knob, must lie before the scanned barrel, which starts " +
+         format_number(scan.far_from_end) + " m from the end";
+}
+
 RigSettings certification_rig(const Standard& standard, const CertifyOptions& options, double length) {
   RigSettings rig;
   rig.ball = options.ball.value_or(standard.ball);
@@ -48,6 +57,11 @@ RigSettings certification_rig(const Standard& standard, const CertifyOptions& op
   if (!(rig.ball_speed > 0) || !std::isfinite(rig.ball_speed))
     reject("ball speed", rig.ball_speed, "a finite speed > 0 (m/s) toward the bat at rest");
   const double start = scan_start(options.scan, length);
+  // A bat too short for the rig (the standard's pivot, or any pivot when the scan starts before
+  // the knob) is the bat's fault, not the option's.
+  if (!options.pivot || !(start > 0))
+    if (const auto misfit = rig_misfit(standard, rig.pivot, length, options.scan))
+      throw InputError("certify: bat of length " + detail::format_number(length) + " m: " + *misfit);
   if (!(rig.pivot >= 0 && rig.pivot < start)) {
     std::ostringstream range;
     range << "a point on the bat before the scanned barrel (0 to " << start << " m from the knob of this "
@@ -76,6 +90,12 @@ std::vector<RuleCheck> rule_checks(const Standard& standard, double measure, dou
 Certification certify(const BatDesign& design, const Standard& standard, const CertifyOptions& options) {
   const RigSettings rig = certification_rig(standard, options, design.length);
   const ModalBasis basis = certification_modes(design, options);
+  if (const int most = basis.count() - 2;
+      options.vibrational_modes != all_modes && options.vibrational_modes != auto_modes &&
+      (options.vibrational_modes < 0 || options.vibrational_modes > most))
+    throw InputError("certify: modes " + std::to_string(options.vibrational_modes) + ": expected 'all', 'auto' or 0 to " +
+                     std::to_string(most) + " (the vibrational modes of " + design.name + " in " +
+                     std::to_string(basis.slices()) + " slices)");
   const ScanMaximum peak = barrel_maximum(basis, rig, standard.measure, options.scan);
 
   Certification c;

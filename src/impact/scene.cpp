@@ -7,6 +7,7 @@
 
 #include "sweetspot/input_error.hpp"
 #include "sweetspot/impact/mode_selection.hpp"
+#include "toml_values.hpp"
 
 namespace sweetspot {
 
@@ -16,6 +17,13 @@ namespace {
   std::ostringstream text;
   text << "impact: " << key << " = " << value << ": " << expected;
   throw InputError(text.str());
+}
+
+// A point off the bat, with the digits that tell it from the bat's end.
+[[noreturn]] void reject_off_bat(const std::string& key, double z, double length) {
+  const auto [value, end] = detail::format_apart(z, z < 0 ? 0.0 : length);
+  throw InputError("impact: " + key + " = " + value + ": must lie on the bat (0 to " +
+                   (z < 0 ? detail::format_number(length) : end) + " m)");
 }
 
 void require_finite(const std::string& key, double value) {
@@ -142,7 +150,7 @@ void validate_history(const HistoryRequest& h, double length) {
   if (!(h.steps() <= max_history_samples))
     reject("history_step", h.step, "gives more than 1e5 samples over the history window");
   for (const double z : h.probes)
-    if (!lies_on_bat(z, length)) reject("probes", z, "must lie on the bat (0 to " + std::to_string(length) + " m)");
+    if (!lies_on_bat(z, length)) reject_off_bat("probes", z, length);
 }
 
 // The wall's ovaling as one more mode of the contact (barrel_wall.hpp): mass-normalised, its
@@ -188,7 +196,7 @@ Eigen::VectorXd SceneGeometry::shapes_at(const ModalBasis& basis, double z) cons
 
 void validate(const ImpactScene& scene, const ModalBasis& basis) {
   const double length = basis.length();
-  if (!lies_on_bat(scene.z, length)) reject("z", scene.z, "must lie on the bat (0 to " + std::to_string(length) + " m)");
+  if (!lies_on_bat(scene.z, length)) reject_off_bat("z", scene.z, length);
   require_finite("ball_speed", scene.ball_speed);
   require_finite("omega", scene.swing.omega);
   require_finite(scene.swing.about_center ? "center" : "cm_speed",

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
@@ -22,8 +23,27 @@ struct Unscorable : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// "the impact at z = 0.7 m", as a failure names the point.
+std::string point_name(const char* what, double z) {
+  char text[96];
+  std::snprintf(text, sizeof text, "%s at z = %.6g m", what, z);
+  return text;
+}
+
+// Why f failed at z, f computed again on this worker alone (the map returns numbers only, and a
+// failure is rare): its exception's message, which names the collision's status ("the rig's hit at
+// z = 0.7 m ended no_separation"), or the value it gave.
+std::string failure_at(const std::function<double(double)>& f, double z, const char* what) {
+  try {
+    const double v = f(z);
+    return point_name(what, z) + " gave " + std::to_string(v);
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+}
+
 // Values at `points` through the map; a point that throws or fails gives NaN, and any NaN
-// makes the evaluation unscorable, saying what was computed there.
+// makes the evaluation unscorable, saying what was computed there and how it ended.
 std::vector<double> values_at(const std::vector<double>& points, const std::function<double(double)>& f,
                               const PointMap& map, const char* what) {
   std::vector<double> values = map(points.size(), [&](std::size_t i) {
@@ -34,8 +54,7 @@ std::vector<double> values_at(const std::vector<double>& points, const std::func
     }
   });
   for (std::size_t i = 0; i < values.size(); ++i)
-    if (!std::isfinite(values[i]))
-      throw Unscorable(std::string(what) + " at z = " + std::to_string(points[i]) + " m did not end ok");
+    if (!std::isfinite(values[i])) throw Unscorable(failure_at(f, points[i], what));
   return values;
 }
 
@@ -49,7 +68,7 @@ ScanMaximum mapped_scan_maximum(const std::function<double(double)>& f, double f
   const auto sampled_or_computed = [&](double x) {
     const auto at = std::ranges::find(points, x);
     const double v = at != points.end() ? values[static_cast<std::size_t>(at - points.begin())] : f(x);
-    if (!std::isfinite(v)) throw Unscorable(std::string(what) + " at z = " + std::to_string(x) + " m did not end ok");
+    if (!std::isfinite(v)) throw Unscorable(failure_at(f, x, what));
     return v;
   };
   return scan_maximum(sampled_or_computed, from, to, step, tolerance);
@@ -62,11 +81,15 @@ Swing design_swing(const Player& player, const MassProperties& exact) {
                             player.swing_exponent);
 }
 
-// The batted-ball speed (the flexible model's v_f) at z; NaN unless the impact ends ok.
+// The batted-ball speed (the flexible model's v_f) at z; throws naming the status unless the
+// impact ends ok.
 double batted_ball_speed(const ModalBasis& basis, ImpactScene scene, double z) {
   scene.z = z;
   const ImpactResult r = simulate_impact(basis, scene);
-  return r.status == CollisionStatus::ok ? r.vf : nan;
+  if (r.status != CollisionStatus::ok)
+    throw std::runtime_error(point_name("the impact", z) + " ended " + to_string(r.status) +
+                             (r.message.empty() ? "" : ": " + r.message));
+  return r.vf;
 }
 
 double objective_value(const OptimizationProblem& problem, const ModalBasis& basis, const ImpactScene& scene,

@@ -75,9 +75,13 @@ fs::path temporary(const fs::path& path) { return path.string() + ".tmp"; }
 
 struct OutputClaim {
   OutputLock lock;
+  // The best bat file is named after the output's stem, which outputs of other names share
+  // (r.h5, r.nc): it has a lock of its own, or two runs would write one file.
+  OutputLock best_lock;
   Journal journal;
   OutputClaim(const OptimizationProblem& p, const OptimizeOptions& o)
       : lock(o.output),
+        best_lock(best_bat_path(o.output)),
         journal(Journal::path_for(o.output),
                 journal_key(p.text, {p.base_source, p.reference_source},
                             static_cast<std::uint64_t>(p.optimizer.max_evaluations), row_width(p)),
@@ -88,7 +92,7 @@ struct OutputClaim {
     const fs::path journal = Journal::path_for(o.output), best = best_bat_path(o.output);
     check_output_paths(o.output,
                        {dataset_temporary_path(o.output), journal, Journal::rewrite_path(journal),
-                        OutputLock::path_for(o.output), best, temporary(best)},
+                        OutputLock::path_for(o.output), best, temporary(best), OutputLock::path_for(best)},
                        inputs(p));
   }
 };
@@ -255,11 +259,19 @@ void run_optimization(const OptimizationProblem& problem, const OptimizeOptions&
   if (history.best >= 0) {
     info.best_bat_file = best_bat_path(options.output);
     write_best_bat(problem, history, info.best_bat_file);
-  } else {
-    spdlog::warn("no feasible design among {} evaluations: no best bat file written ({} is not this run's)",
-                 history.evaluations.size(), best_bat_path(options.output).string());
   }
   write_dataset(options.output, optimization_dataset(problem, history, info));
+  if (history.best < 0) {
+    // A best bat file beside the dataset must be this dataset's: one left by an earlier run into
+    // the same output (whose dataset this one has just replaced) is removed, and the log says so.
+    const fs::path stale = best_bat_path(options.output);
+    std::error_code error;
+    const bool removed = fs::remove(stale, error);
+    spdlog::warn("no feasible design among {} evaluations: no best bat file written{}", history.evaluations.size(),
+                 removed  ? fmt::format(" (removed {}, an earlier run's best design)", stale.string())
+                 : error ? fmt::format(" ({}, an earlier run's, could not be removed: {})", stale.string(), error.message())
+                         : "");
+  }
   claim->journal.remove();
   if (evaluator.resumed() > 0) spdlog::info("resumed: {} evaluations from the journal", evaluator.resumed());
   if (history.best >= 0) {

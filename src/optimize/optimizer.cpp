@@ -2,7 +2,9 @@
 
 #include <nlopt.hpp>
 
+#include <algorithm>
 #include <cstring>
+#include <limits>
 #include <exception>
 
 namespace sweetspot {
@@ -17,6 +19,7 @@ struct Search {
   OptimizationHistory history;
   std::exception_ptr failure;  // an exception of the scorer, kept to be thrown again
   bool budget_spent = false;
+  std::size_t asks = 0;  // NLopt's calls: a design asked again at once is scored once, but counted by NLopt
 
   std::vector<double> design(const double* u) const {
     std::vector<double> x(problem.free.size());
@@ -28,6 +31,7 @@ struct Search {
   }
 
   const DesignEvaluation& at(const double* u) {
+    ++asks;
     const std::vector<double> x = design(u);
     if (!history.evaluations.empty() &&
         std::memcmp(history.evaluations.back().x.data(), x.data(), x.size() * sizeof(double)) == 0)
@@ -59,6 +63,16 @@ void constraints(unsigned m, double* result, unsigned n, const double* u, double
   for (unsigned i = 0; i < m; ++i) result[i] = constraint_violation(search.problem, e, i);
 }
 
+// NLopt's own limit on its calls. NLopt counts calls, not designs scored: a local search starting
+// where MLSL just sampled, the objective asked again at a point clamped to the bounds, each asks
+// the design just scored again, which is answered without a new evaluation. With max_evaluations
+// as NLopt's limit a run stopped "max_evaluations reached" with fewer evaluations recorded; the
+// budget of evaluations is therefore Search's alone, and NLopt's limit only a backstop against a
+// search that would ask the same design for ever.
+int call_limit(const OptimizerSettings& s) {
+  return static_cast<int>(std::min<long long>(100LL * s.max_evaluations + 1000, std::numeric_limits<int>::max()));
+}
+
 // The stopping rule of a local search, on parameters scaled to [0, 1].
 void local_stop(nlopt::opt& opt, const OptimizerSettings& s) {
   opt.set_xtol_rel(s.xtol_rel);
@@ -83,7 +97,7 @@ nlopt::opt algorithm(const OptimizationProblem& problem) {
   // run takes the whole budget.
   nlopt::opt mlsl(nlopt::GN_MLSL_LDS, n);
   mlsl.set_local_optimizer(bobyqa);
-  mlsl.set_maxeval(s.max_evaluations);
+  mlsl.set_maxeval(call_limit(s));
   local_stop(mlsl, s);
   if (problem.constraints.empty()) return mlsl;
   nlopt::opt auglag(nlopt::AUGLAG, n);
@@ -119,7 +133,7 @@ OptimizationHistory optimize_design(const OptimizationProblem& problem, const Ev
   nlopt::srand(s.seed);  // MLSL's random numbers, and any other algorithm's: the same every run
   nlopt::opt opt = algorithm(problem);
   local_stop(opt, s);
-  opt.set_maxeval(s.max_evaluations);
+  opt.set_maxeval(call_limit(s));
   opt.set_initial_step(s.initial_step);
   opt.set_max_objective(objective, &search);
   if (!problem.constraints.empty())
@@ -132,7 +146,12 @@ OptimizationHistory optimize_design(const OptimizationProblem& problem, const Ev
   }
   double value = 0;
   try {
-    search.history.stop_reason = stop_reason(opt.optimize(u, value));
+    const nlopt::result result = opt.optimize(u, value);
+    search.history.stop_reason =
+        result != nlopt::MAXEVAL_REACHED
+            ? stop_reason(result)
+            : "NLopt's limit of " + std::to_string(call_limit(s)) + " calls reached (" + std::to_string(search.asks) +
+                  " calls for " + std::to_string(search.history.evaluations.size()) + " designs)";
   } catch (const nlopt::forced_stop&) {
     if (search.failure) std::rethrow_exception(search.failure);
     search.history.stop_reason = "max_evaluations reached";

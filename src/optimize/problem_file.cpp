@@ -5,6 +5,7 @@
 #include <string>
 
 #include "ball/ball_table.hpp"
+#include "sweetspot/impact/equal_effort.hpp"
 #include "problem_values.hpp"
 #include "sweetspot/input_error.hpp"
 
@@ -116,8 +117,11 @@ Player read_player(const Where& top, const toml::table& doc, OptimizationProblem
   if (center)
     p.swing.center = number_key(at, t, "center", 0, finite, "a finite point from the knob", Dimension::length);
   if (cm) p.swing.cm_speed = number_key(at, t, "cm_speed", 0, finite, "a finite speed", Dimension::speed);
-  p.swing.omega =
-      required_number(at, t, "omega", finite, "the swing's angular speed, finite", Dimension::angular_speed);
+  // The swing turns the barrel toward the ball: v(z) = V_cm + omega (z - z_cm), + toward the ball
+  // (scene.hpp), so a batter's omega is >= 0; a negative one would swing the barrel away from the pitch.
+  p.swing.omega = required_number(at, t, "omega", [](double v) { return v >= 0; },
+                                  "the swing's angular speed, finite and >= 0 (the barrel turning toward the ball)",
+                                  Dimension::angular_speed);
   p.ball_speed = required_number(at, t, "ball_speed", [](double v) { return v >= 0; },
                                  "the pitch's speed toward the bat, finite and >= 0", Dimension::speed);
   // The pitched ball: the file's [ball] table (README "Balls"), N2000's without one; e0 sets its COR.
@@ -132,8 +136,8 @@ Player read_player(const Where& top, const toml::table& doc, OptimizationProblem
         reject(at.child(key, *node), describe(*node), "applies only with swing = \"equal_effort\"");
     return p;
   }
-  p.swing_exponent = number_key(at, t, "swing_exponent", 0.3, [](double v) { return v >= 0 && v <= 2; },
-                                "a power-law exponent in [0, 2] (0.3 fits college hitters)");
+  p.swing_exponent = number_key(at, t, "swing_exponent", default_swing_exponent, valid_swing_exponent,
+                                "a power-law exponent in [0, 2] (n in swing speed ~ MOI^-n; 0.3 fits college hitters)");
   const toml::node* reference = t.get("reference_bat");
   if (reference) {
     const std::string name = string_key(at, t, "reference_bat", "", "a bat file (the player's swing was measured with it)");

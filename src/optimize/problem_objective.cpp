@@ -92,7 +92,9 @@ void read_spread(const Where& at, const toml::table& t, ObjectiveSpec& o, double
       if (v < 0) reject(w, format_number(v), "expected weights >= 0");
       sum += v;
     }
-    if (!(sum > 0)) reject(w, describe(*weights), "expected weights with a sum > 0");
+    // The weights are divided by their sum: it must neither vanish nor overflow (1e308 + 1e308).
+    if (!(sum > 0 && std::isfinite(sum)))
+      reject(w, describe(*weights), "expected weights with a finite sum > 0 (they are divided by it), e.g. [1, 2]");
     for (double& v : o.weights) v /= sum;
   }
   for (const double z : o.z)

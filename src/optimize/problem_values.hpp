@@ -39,7 +39,7 @@ inline std::string expected_text(const std::string& expected, std::optional<Dime
 inline double number(const Where& at, const toml::node& node, const std::string& expected,
                      std::optional<Dimension> dimension = std::nullopt) {
   const std::optional<double> x =
-      dimension ? detail::quantity(node, *dimension) : node.is_number() ? node.value<double>() : std::nullopt;
+      dimension ? detail::quantity(node, *dimension) : detail::number(node);
   if (!x || !std::isfinite(*x)) reject_value(at, node, expected, dimension);
   return *x;
 }

@@ -24,7 +24,10 @@ namespace {
 void set_material(BatDesign& d, const std::string& preset, const py::dict& constants) {
   set_material_preset(d, preset);
   for (const auto& [key, value] : constants)
-    if (!value.is_none()) set_design_parameter(d, key.cast<std::string>(), value.cast<double>());
+    if (!value.is_none()) {
+      const std::string name = key.cast<std::string>();
+      set_design_parameter(d, name, number(name, value));
+    }
 }
 
 // Knots as a profile CSV gives them: at least two, sorted, on the bat, diameters positive and an
@@ -58,6 +61,13 @@ Profile knot_profile(const std::vector<double>& z, const std::vector<double>& ou
                        " m); expected a wall everywhere: interpolation 'linear', or knots that keep the bore inside");
   }
   return p;
+}
+
+// The name of a bat made in Python, under a bat file's rule for its key 'name' (bat_file.cpp):
+// a non-empty string, since results and datasets tell bats apart by it.
+const std::string& bat_name(const std::string& name) {
+  if (name.empty()) throw InputError("name '': expected a non-empty string (a bat file's 'name')");
+  return name;
 }
 
 py::dict properties(const BatHandle& b) {
@@ -149,7 +159,7 @@ void bind_bat_design(py::module_& m, py::class_<BatHandle, std::shared_ptr<BatHa
             const std::optional<std::vector<double>>& inner, const std::string& interpolation, std::optional<int> slices,
             const std::string& material, const py::dict& constants) {
            BatDesign d;
-           d.name = name;
+           d.name = bat_name(name);
            d.length = length;
            d.profile = knot_profile(z, outer, inner, interpolation);
            set_material(d, material, constants);
@@ -159,12 +169,14 @@ void bind_bat_design(py::module_& m, py::class_<BatHandle, std::shared_ptr<BatHa
                   [](const std::string& name, double length, const py::dict& dimensions, const std::string& end,
                      std::optional<int> slices, const std::string& material, const py::dict& constants) {
                     BatDesign d;
-                    d.name = name;
+                    d.name = bat_name(name);
                     d.length = length;
                     d.dimensions = Dimensions{};
                     d.dimensions->end = parse_end_shape(end);
-                    for (const auto& [key, value] : dimensions)
-                      set_design_parameter(d, key.cast<std::string>(), value.cast<double>());
+                    for (const auto& [key, value] : dimensions) {
+                      const std::string parameter = key.cast<std::string>();
+                      set_design_parameter(d, parameter, number(parameter, value));
+                    }
                     set_material(d, material, constants);
                     // Its bat file, which reads back as this design bit for bit (Bat.from_text).
                     BatSource source;

@@ -7,6 +7,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <set>
@@ -148,9 +149,16 @@ void fill_row(const ImpactResult& r, double* row) {
   std::copy(std::begin(values), std::end(values), row);
 }
 
+// The most threads impacts runs on: 4 per processor. More only contend for the same cores, and
+// each costs a stack: 100000 crashed the interpreter, 1000 under a memory limit aborted in libgomp.
+int max_threads() { return 4 * std::max(1, omp_get_num_procs()); }
+
 // Every point of flat per-point arrays (same length) over OpenMP threads without the GIL. A
 // point refused as bad input raises ValueError with the first such point's message.
 py::dict run_impacts(BatHandle& bat, const py::dict& scalars, const py::dict& arrays, int threads) {
+  if (threads < 0 || threads > max_threads())  // 0: OpenMP's default (the package's threads=None)
+    throw InputError("threads " + std::to_string(threads) + ": expected 1 to " + std::to_string(max_threads()) +
+                     " (4 per processor; more only contend for the same cores)");
   std::set<std::string> per_point;
   std::vector<std::pair<int, py::array_t<double, py::array::c_style | py::array::forcecast>>> columns;
   py::ssize_t n = -1;
@@ -159,6 +167,9 @@ py::dict run_impacts(BatHandle& bat, const py::dict& scalars, const py::dict& ar
     const auto& names = point_arguments();
     const auto it = std::find(names.begin(), names.end(), name);
     if (it == names.end()) throw py::type_error("'" + name + "' cannot vary from point to point");
+    const py::array given = py::array::ensure(value);
+    if (given && std::string("iuf").find(given.dtype().kind()) == std::string::npos)  // complex: no silent real part
+      throw InputError(name + ": expected an array of real numbers, not of dtype " + py::str(given.dtype()).cast<std::string>());
     auto column = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(value);
     if (!column || column.ndim() != 1) throw py::type_error("'" + name + "': expected a 1-D array of numbers");
     if (n >= 0 && column.size() != n) throw py::value_error("impacts: per-point arrays of different lengths");
@@ -177,7 +188,7 @@ py::dict run_impacts(BatHandle& bat, const py::dict& scalars, const py::dict& ar
   std::vector<std::string> errors(n);
   {
     py::gil_scoped_release release;
-    if (threads <= 0) threads = omp_get_max_threads();
+    if (threads == 0) threads = omp_get_max_threads();
 #pragma omp parallel for schedule(dynamic) num_threads(threads)
     for (py::ssize_t i = 0; i < n; ++i) {
       try {
@@ -277,14 +288,13 @@ Bat.from_knots or Bat.from_dimensions. Properties: name, length (m), slices, mas
 from the knob), moment_of_inertia_cm (kg m^2), radius_of_gyration (m), z (slice centres, m),
 outer_diameter and inner_diameter (per slice, m).)");
   bat
-      .def_static("load", [](const std::filesystem::path& path, std::optional<int> slices) {
+      // load, modes and moment_of_inertia_about are the package's (__init__.py), which check their
+      // arguments' types first: a wrong one is a ValueError naming it, not pybind11's TypeError.
+      .def_static("_load", [](const std::filesystem::path& path, std::optional<int> slices) {
             BatSource source;
             BatDesign design = load_bat_design(find_bat_file(path.string(), shipped_bats(), "path"), source);
             return make_bat(std::move(design), slices, std::move(source));
-          }, py::arg("path"), py::arg("slices") = py::none(),
-          "Load a bat from its TOML file or a shipped bat's name (\"r161\"; docs/bats.md).\n\n"
-          "Parameters: path, the bat file or a shipped bat's name; slices, the number of slices to cut it into (default: its own).\n"
-          "Returns: a Bat. Raises ValueError naming the file, key and value that are wrong.")
+          }, py::arg("path"), py::arg("slices") = py::none())
       .def_static("_from_text", [](const std::string& toml, const std::string& profile, const std::string& name,
                                    std::optional<int> slices) {
             BatSource source{name, {}, toml, profile};
@@ -300,8 +310,8 @@ outer_diameter and inner_diameter (per slice, m).)");
       .def_property_readonly("moment_of_inertia_cm", [](const BatHandle& b) { return b.mass().moment_of_inertia_cm; },
                              "kg m^2 about the centre of mass")
       .def_property_readonly("radius_of_gyration", [](const BatHandle& b) { return b.mass().radius_of_gyration(); }, "radius of gyration about the centre of mass, m")
-      .def("moment_of_inertia_about", [](const BatHandle& b, double z) { return b.mass().moment_of_inertia_about(z); },
-           py::arg("z"), "kg m^2 about the point z (m from the knob)")
+      .def("_moment_of_inertia_about", [](const BatHandle& b, double z) { return b.mass().moment_of_inertia_about(z); },
+           py::arg("z"))
       .def_property_readonly("z", [](const BatHandle& b) {
             std::vector<double> z(b.bat().slices());
             for (int i = 0; i < b.bat().slices(); ++i) z[i] = b.bat().slice_center(i);
@@ -310,13 +320,7 @@ outer_diameter and inner_diameter (per slice, m).)");
       .def_property_readonly("outer_diameter", [](const BatHandle& b) { return array(b.bat().outer_diameter); }, "outer diameter of each slice, m")
       .def_property_readonly("inner_diameter", [](const BatHandle& b) { return array(b.bat().inner_diameter); },
                              "inner diameter of each slice, m (empty for a solid bat)")
-      .def("modes", &modes_dict, py::arg("count") = py::none(), py::arg("theory") = "timoshenko",
-           "The bat's normal modes.\n\n"
-           "Parameters: count, the lowest vibrational modes to solve (default: all); theory, \"timoshenko\" or "
-           "\"euler-bernoulli\".\n"
-           "Returns: a dict of theory, frequencies_hz (Hz), shapes (count x slices, largest ``|psi|`` = 1, + at the barrel "
-           "end), z_m (slice centres, m), nodes_m (each mode's nodes, m from the knob), omega (rad/s, the two rigid "
-           "modes first), mass_kg, z_cm_m and moment_of_inertia_cm_kg_m2.")
+      .def("_modes", &modes_dict, py::arg("count") = py::none(), py::arg("theory") = "timoshenko")
       .def("__repr__", [](const BatHandle& b) {
         return "<sweetspot.Bat '" + b.bat().name + "': " + std::to_string(b.bat().length) + " m, " +
                std::to_string(b.bat().slices()) + " slices>";
@@ -333,6 +337,9 @@ outer_diameter and inner_diameter (per slice, m).)");
     }
     return result_dict(r, bat.bat());
   });
+  m.def("_max_threads", &max_threads);
+  m.attr("_min_slices") = min_slices;
+  m.attr("_max_slices") = max_slices;
   m.def("_impacts", &run_impacts, py::arg("bat"), py::arg("scalars"), py::arg("arrays"), py::arg("threads") = 0);
   m.def("_describe", [](const std::string& name) {
     const OutputDescription d = describe_output(name);

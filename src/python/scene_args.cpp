@@ -23,12 +23,24 @@ const std::set<std::string>& known_arguments() {
   return names;
 }
 
-double number(const std::string& name, const py::handle& value) {
-  try {
-    return value.cast<double>();
-  } catch (const py::cast_error&) {
-    throw InputError(name + " " + py::str(value).cast<std::string>() + ": expected a number");
+bool is_numpy(const py::handle& value, const char* type) {
+  return py::isinstance(value, py::module_::import("numpy").attr(type));
+}
+
+
+// True or False (numpy's bools too); 0 and 1 as Python reads them.
+bool flag(const std::string& name, const py::handle& value) {
+  if (py::isinstance<py::bool_>(value) || is_numpy(value, "bool_")) return value.cast<bool>();
+  if (py::isinstance<py::int_>(value)) {
+    const int v = value.equal(py::int_(1)) ? 1 : value.equal(py::int_(0)) ? 0 : -1;
+    if (v >= 0) return v == 1;
   }
+  throw InputError(name + " " + py::repr(value).cast<std::string>() + ": expected True or False");
+}
+
+std::string text(const std::string& name, const py::handle& value, const std::string& expected) {
+  if (py::isinstance<py::str>(value)) return value.cast<std::string>();
+  throw InputError(name + " " + py::repr(value).cast<std::string>() + ": expected " + expected);
 }
 
 // A point argument: a quantity where it has a dimension, else a plain number.
@@ -46,6 +58,23 @@ Dimension dimension_named(const std::string& name) {
 
 }  // namespace
 
+std::optional<double> real_number(const py::handle& value) {
+  // A complex number would lose its imaginary part, a bool read as 0 or 1: neither is a value.
+  if (PyComplex_Check(value.ptr()) || is_numpy(value, "complexfloating") || py::isinstance<py::bool_>(value) ||
+      is_numpy(value, "bool_") || py::isinstance<py::str>(value))
+    return std::nullopt;
+  try {
+    return value.cast<double>();
+  } catch (const py::cast_error&) {
+    return std::nullopt;
+  }
+}
+
+double number(const std::string& name, const py::handle& value) {
+  if (const std::optional<double> x = real_number(value)) return *x;
+  throw InputError(name + " " + py::repr(value).cast<std::string>() + ": expected a real number");
+}
+
 std::optional<Dimension> point_argument_dimension(const std::string& name) {
   if (name == "z" || name == "center" || name == "ball_radius") return Dimension::length;
   if (name == "ball_speed" || name == "cm_speed") return Dimension::speed;
@@ -56,10 +85,7 @@ std::optional<Dimension> point_argument_dimension(const std::string& name) {
 
 double quantity_argument(const std::string& name, const py::handle& value, Dimension dimension) {
   if (!py::isinstance<py::str>(value)) {
-    try {
-      return value.cast<double>();
-    } catch (const py::cast_error&) {
-    }
+    if (const std::optional<double> x = real_number(value)) return *x;
   } else if (const std::optional<double> si = parse_quantity(value.cast<std::string>(), dimension)) {
     return *si;
   }
@@ -98,8 +124,9 @@ int parse_modes(const py::handle& value) {
     if (text == "all") return all_modes;
     if (text == "auto") return auto_modes;
   } else if (py::isinstance<py::int_>(value) && !py::isinstance<py::bool_>(value)) {
-    const long long n = value.cast<long long>();
-    if (n >= 0 && n <= 2 * max_slices) return static_cast<int>(n);
+    // Compared as Python ints: 10**20 is no C++ integer, and refused like any other count too large.
+    if (value.attr("__ge__")(0).cast<bool>() && value.attr("__le__")(2 * max_slices).cast<bool>())
+      return value.cast<int>();
   }
   throw InputError("modes " + py::str(value).cast<std::string>() +
                    ": expected a number of vibrational modes (0, 1, 2, ...), 'all' or 'auto'");
@@ -135,16 +162,22 @@ SceneArgs scene_args(const py::dict& args, const std::set<std::string>& per_poin
   if (cm && center) throw InputError("impact: cm_speed excludes center: give the swing as one of them");
   s.swing.about_center = center;
 
-  if (has("theory")) out.theory = parse_beam_theory(get("theory").cast<std::string>());
-  if (has("pivot")) s.pivoted = get("pivot").cast<bool>();
+  if (has("theory")) out.theory = parse_beam_theory(text("theory", get("theory"), "\"timoshenko\" or \"euler-bernoulli\""));
+  if (has("pivot")) s.pivoted = flag("pivot", get("pivot"));
   if (has("mode_tolerance")) s.mode_tolerance = number("mode_tolerance", get("mode_tolerance"));
-  if (has("accuracy")) s.accuracy = number("accuracy", get("accuracy"));
+  if (has("accuracy")) {  // as a study's key and --accuracy: a stated accuracy is > 0, and chooses the step
+    s.accuracy = number("accuracy", get("accuracy"));
+    if (!(std::isfinite(s.accuracy) && s.accuracy > 0))
+      throw InputError("accuracy " + py::repr(get("accuracy")).cast<std::string>() + ": expected " + accuracy_expected);
+    if (has("dt")) throw InputError("impact: dt excludes accuracy (which chooses the step): give one of them");
+  }
   if (has("tolerance")) s.integrator.tolerance = number("tolerance", get("tolerance"));
   if (has("window")) s.integrator.window = number("window", get("window"));
   // As the program's --n2000: RK4 at 5 us and 18 modes unless integrator, dt or modes say otherwise.
-  const bool n2000 = has("n2000") && get("n2000").cast<bool>();
+  const bool n2000 = has("n2000") && flag("n2000", get("n2000"));
   if (n2000 && !has("integrator")) s.integrator = with_n2000_settings(s.integrator);
-  if (has("integrator")) s.integrator.method = parse_method(get("integrator").cast<std::string>());
+  if (has("integrator"))
+    s.integrator.method = parse_method(text("integrator", get("integrator"), "\"exact\", \"rk4\" or \"dopri\""));
   if (has("dt")) s.integrator.dt = number("dt", get("dt"));
   else s.integrator.dt = default_step(s.integrator.method);
   if (!(s.integrator.dt >= finest_step)) {

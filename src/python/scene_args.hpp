@@ -33,6 +33,12 @@ double quantity_argument(const std::string& name, const pybind11::handle& value,
 // "mass", "speed", "angular speed") defaults to the point argument's.
 void bind_quantity_arguments(pybind11::module_& m);
 
+// A real number as Python gives it (int, float, numpy's), or nothing for anything else: a
+// string, a bool, a complex number (whose imaginary part would be lost), an array.
+std::optional<double> real_number(const pybind11::handle& value);
+// real_number, or InputError "density '700': expected a real number".
+double number(const std::string& name, const pybind11::handle& value);
+
 // Sets one point argument (an index into point_arguments()) on the scene. No Python involved:
 // called with the GIL released.
 void set_point_argument(ImpactScene& scene, int which, double value);

@@ -55,6 +55,16 @@ void check_swing(const Settings& s, const Where& top) {
     reject(pivot->where, "true", "a pivoted bat is held at its rotation centre: give center, not cm_speed");
 }
 
+// A stated accuracy chooses the step (or dopri's tolerance) from the scene's pulse: a dt given
+// beside it would be silently overridden, so the two are refused together.
+void check_step_or_accuracy(const Settings& s) {
+  const Setting *accuracy = s["accuracy"], *dt = s["dt"];
+  if (accuracy && dt)
+    reject(dt->where, dt->values.size() == 1 ? format_number(dt->values[0]) : "[...]",
+           "expected dt or accuracy, not both: key '" + accuracy->where.key +
+               "' is also given, and chooses the step itself");
+}
+
 // The bat files, each read once into its design.
 void load_bat_files(Study& study, const Setting& bat) {
   for (const std::string& label : bat.labels) {
@@ -176,10 +186,12 @@ std::vector<std::string> build_designs(Study& study, const Settings& s, const Se
 void check_on_bats(const Setting& points, const std::vector<Bat>& bats, const std::vector<std::string>& labels) {
   for (const double x : points.values)
     for (std::size_t b = 0; b < bats.size(); ++b)
-      if (!lies_on_bat(x, bats[b].length))
-        reject(points.where, format_number(x),
-               "must lie on every bat of the study: 0 to " + format_number(bats[b].length) + " m for " +
-                   labels[b]);
+      if (!lies_on_bat(x, bats[b].length)) {
+        const auto [value, end] = detail::format_apart(x, x < 0 ? 0.0 : bats[b].length);
+        reject(points.where, value,
+               "must lie on every bat of the study: 0 to " + (x < 0 ? format_number(bats[b].length) : end) +
+                   " m for " + labels[b]);
+      }
 }
 
 void check_mode_counts(const Settings& s, const Where& top, const std::vector<Bat>& bats,
@@ -292,12 +304,8 @@ void check_rig_fits(const Settings& s, const std::vector<Bat>& bats, const std::
   const Standard& standard = standards()[static_cast<std::size_t>(s.values("standard", 0).front())];
   const BarrelScan scan;
   for (std::size_t b = 0; b < bats.size(); ++b)
-    if (!(standard.pivot < bats[b].length - scan.far_from_end))
-      reject(s["bat"]->where, labels[b] + " (" + format_number(bats[b].length) + " m)",
-             "expected a bat longer than " + format_number(standard.pivot + scan.far_from_end) + " m: the " + standard.name +
-                 " rig's pivot, " + format_number(standard.pivot) +
-                 " m from the knob, must lie before the scanned barrel, which starts " +
-                 format_number(scan.far_from_end) + " m from the end");
+    if (const auto misfit = rig_misfit(standard, standard.pivot, bats[b].length, scan))
+      reject(s["bat"]->where, labels[b] + " (" + format_number(bats[b].length) + " m)", *misfit);
 }
 
 }  // namespace
@@ -305,6 +313,7 @@ void check_rig_fits(const Settings& s, const std::vector<Bat>& bats, const std::
 // The impact kind's checks across keys: the swing, the bat files, z on every bat, mode counts.
 void check_bat_scene(Study& study, const Settings& s, const Where& top) {
   const Setting& bat = *s["bat"];
+  check_step_or_accuracy(s);
   if (study.kind == StudyKind::certification) {  // the rig holds each bat at rest: no swing, no point
     load_bat_files(study, bat);
     const std::vector<std::string> labels = build_designs(study, s, bat);

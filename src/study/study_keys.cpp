@@ -4,7 +4,9 @@
 #include <cmath>
 
 #include "sweetspot/bat/bat.hpp"
+#include "sweetspot/ball/ball_tests.hpp"
 #include "sweetspot/bat/bat_design.hpp"
+#include "sweetspot/impact/equal_effort.hpp"
 #include "sweetspot/impact/histories.hpp"
 #include "toml_values.hpp"
 
@@ -23,6 +25,12 @@ bool unit_interval(double x) { return x > 0 && x <= 1; }
 bool non_positive(double x) { return std::isfinite(x) && x <= 0; }
 bool cor_speed(double x) { return x >= 0 && x <= max_cor_law_speed; }
 bool slice_count(double x) { return x >= min_slices && x <= max_slices; }  // as `impact --slices`
+// The ball's values as a [ball] table takes them (ball_tests.hpp).
+bool ball_mass(double x) { return in_range(ball_mass_range, x); }
+bool ball_radius(double x) { return in_range(ball_radius_range, x); }
+bool ball_k1(double x) { return in_range(ball_k1_range, x); }
+bool ball_exponent(double x) { return in_range(ball_exponent_range, x); }
+bool swing_exponent(double x) { return valid_swing_exponent(x); }
 bool mode_count(double x) { return x >= 0 && x <= 1e6; }    // "all" and "auto" are not checked
 
 constexpr KeySpec keys[] = {
@@ -46,13 +54,13 @@ constexpr KeySpec keys[] = {
      [](GridPoint& p, double x) { p.scene.ball_speed = x; }, ball_kinds, ball_kinds, true, Dimension::speed},
     {"e0", Type::number, "a number in (0, 1]", unit_interval, [](GridPoint& p, double x) { p.scene.ball.e0 = x; },
      ball_kinds},
-    {"ball_mass", Type::number, "a mass > 0", positive,
+    {"ball_mass", Type::number, "a mass in (0, 10] kg, as a [ball] table takes it", ball_mass,
      [](GridPoint& p, double x) { p.scene.ball.mass = x; }, ball_kinds, 0, true, Dimension::mass},
-    {"ball_radius", Type::number, "a length > 0", positive,
+    {"ball_radius", Type::number, "a radius in (0, 1] m, as a [ball] table takes it", ball_radius,
      [](GridPoint& p, double x) { p.scene.ball.radius = x; }, ball_kinds, 0, true, Dimension::length},
-    {"k1", Type::number, "a finite number > 0 (N/m^a)", positive, [](GridPoint& p, double x) { p.scene.ball.k1 = x; },
+    {"k1", Type::number, "a stiffness in (1e3, 1e12] N/m^a, as a [ball] table takes it", ball_k1, [](GridPoint& p, double x) { p.scene.ball.k1 = x; },
      ball_kinds},
-    {"a", Type::number, "a finite number > 0", positive, [](GridPoint& p, double x) { p.scene.ball.a = x; },
+    {"a", Type::number, "an exponent in (0.5, 3], as a [ball] table takes it", ball_exponent, [](GridPoint& p, double x) { p.scene.ball.a = x; },
      ball_kinds},
     // The ball's COR law (contact/ball.hpp): its fall with speed and the speed where the COR is e0.
     {"cor_slope", Type::number, "a finite number <= 0 (per m/s: how the COR falls with speed)", non_positive,
@@ -81,7 +89,8 @@ constexpr KeySpec keys[] = {
      [](GridPoint&, double) {}, impact, 0, false},
     {"reference_bat", Type::reference, "the bat file the swing was measured with (relative to the study file)", any,
      [](GridPoint&, double) {}, impact, 0, false},
-    {"swing_exponent", Type::number, "a finite number > 0 (n in swing speed ~ MOI^-n)", positive,
+    {"swing_exponent", Type::number,
+     "a power-law exponent in [0, 2] (n in swing speed ~ MOI^-n; 0.3 fits college hitters)", swing_exponent,
      [](GridPoint& p, double x) { p.swing_exponent = x; }},
     {"e_a_speed", Type::number, "a speed > 0 (the speed e_A is taken at for bbs_linear)", positive,
      [](GridPoint& p, double x) { p.scene.e_a_speed = x; }, impact, 0, true, Dimension::speed},

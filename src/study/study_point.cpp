@@ -1,6 +1,7 @@
 #include "sweetspot/study/study_point.hpp"
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include "sweetspot/impact/certification.hpp"
@@ -35,6 +36,17 @@ ImpactResult certification_point(const GridPoint& point) {
 
 }  // namespace
 
+void flag_untrusted_modes_error(const ImpactScene& scene, ImpactResult& r) {
+  if (r.status != CollisionStatus::ok || scene.vibrational_modes != auto_modes) return;
+  if (!(r.modes_error > untrusted_modes_error * scene.mode_tolerance) && !std::isnan(r.modes_error)) return;
+  r.status = CollisionStatus::failed;
+  std::ostringstream why;
+  why << "modes = auto estimates a relative vf error of " << r.modes_error << " for the dropped modes, over "
+      << untrusted_modes_error << " times mode_tolerance = " << scene.mode_tolerance
+      << ": the modal model does not hold for this bat";
+  r.message = why.str();
+}
+
 ImpactResult simulate_point(const GridPoint& point, const ModalBasis* basis) {
   switch (point.kind) {
     case StudyKind::wall:
@@ -48,7 +60,9 @@ ImpactResult simulate_point(const GridPoint& point, const ModalBasis* basis) {
       break;
   }
   if (!basis) throw std::invalid_argument("simulate_point: an impact point needs its bat's modal basis");
-  return simulate_impact(*basis, point.scene);
+  ImpactResult r = simulate_impact(*basis, point.scene);
+  flag_untrusted_modes_error(point.scene, r);
+  return r;
 }
 
 }  // namespace sweetspot

@@ -112,7 +112,7 @@ Value read_value(const Where& at, const KeySpec& spec, std::optional<Dimension> 
     if (!x) bad();
     v.number = *x;
   } else if (numeric && node.is_number())
-    v.number = *node.value<double>();
+    v.number = *detail::number(node);
   else if ((spec.type == Type::integer || spec.type == Type::modes) && node.is_integer())
     v.number = static_cast<double>(node.as_integer()->get());
   else if (spec.type == Type::boolean && node.is_boolean())
@@ -172,9 +172,9 @@ double range_bound(const Where& at, const toml::table& range, std::string_view n
              "expected a finite " + std::string(dimension_name(*dimension)) + " " + quantity_hint(*dimension));
     return *x;
   }
-  if (!(integer ? node->is_integer() : node->is_number()) || !std::isfinite(*node->value<double>()))
+  if (!(integer ? node->is_integer() : node->is_number()) || !std::isfinite(*detail::number(*node)))
     reject(at.child(name, *node), describe(*node), integer ? "expected an integer" : "expected a finite number");
-  return *node->value<double>();
+  return *detail::number(*node);
 }
 
 // {start, stop, step}: stop is included when it lands within 1e-9 step of a point.
@@ -255,6 +255,8 @@ void reject_duplicates(const Setting& s, const fs::path& dir) {
     std::vector<std::string> paths;
     for (const std::string& label : s.labels) paths.push_back((dir / label).lexically_normal().string());
     if (const auto twice = first_repeat(paths)) reject(s.where, quote(*twice), "names the same bat file twice");
+  } else if (!s.labels.empty()) {  // names (a material, a theory) stand for their index in the values
+    if (const auto twice = first_repeat(s.labels)) reject(s.where, quote(*twice), "appears twice in the axis; its values must differ");
   } else if (const auto twice = first_repeat(s.values)) {
     reject(s.where, format_number(*twice), "appears twice in the axis; its values must differ");
   }
@@ -420,7 +422,7 @@ double read_sweet_spot_fraction(const Where& top, const toml::table& doc) {
   const toml::table* output = doc.get_as<toml::table>("output");
   const toml::node* node = output ? output->get("sweet_spot_fraction") : nullptr;
   if (!node) return Study{}.sweet_spot_fraction;
-  const std::optional<double> x = node->value<double>();
+  const std::optional<double> x = detail::number(*node);
   if (!node->is_number() || !(*x > 0 && *x < 1))
     reject(Where{top.file, "output", 0}.child("sweet_spot_fraction", *node), describe(*node),
            "expected a number in (0, 1): the fraction of the largest v_f that bounds the sweet spot");

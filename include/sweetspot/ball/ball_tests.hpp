@@ -42,6 +42,18 @@ struct BallTests {
 // N2000's exponent (Fig. 2), what a ball takes when its stiffness at one speed says nothing of a.
 inline constexpr double default_ball_exponent = 1.84;
 
+// The ranges of a ball's values, (low, high], wherever a ball is given: a [ball] table, a study's
+// [scene] keys and axes. A baseball weighs 0.145 kg and its k1 is about 1e8 N/m^a with a = 1.84;
+// beyond these, no ball the force law F = k1 u^a describes.
+struct BallRange {
+  double low, high;
+};
+inline constexpr BallRange ball_mass_range{0, 10};        // kg
+inline constexpr BallRange ball_radius_range{0, 1};       // m
+inline constexpr BallRange ball_k1_range{1e3, 1e12};      // N/m^a
+inline constexpr BallRange ball_exponent_range{0.5, 3};   // a
+inline bool in_range(BallRange r, double x) { return x > r.low && x <= r.high; }
+
 struct BallFit {
   Ball ball;
   // Root-mean-square residuals of the fit: COR (absolute) and dynamic stiffness (relative); 0

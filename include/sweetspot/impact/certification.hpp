@@ -69,6 +69,11 @@ struct Certification {
   bool pass = false;     // every check passes
 };
 
+// Why the rig, its pivot `pivot` m from the knob, cannot hold a bat of `length` before the scanned
+// barrel ("expected a bat longer than 0.457 m: the bbcor rig's pivot, ..."), or nothing when it can:
+// the one wording of certify, certification studies and optimisations.
+std::optional<std::string> rig_misfit(const Standard& standard, double pivot, double length, const BarrelScan& scan = {});
+
 // The rig of a standard with the options applied. Throws InputError naming the option (e0,
 // ball_speed, pivot) and what was expected: e0 in (0, 1], a speed > 0, a pivot on the bat before
 // the scanned barrel.

@@ -13,6 +13,11 @@
 namespace sweetspot {
 
 inline constexpr double default_swing_exponent = 0.3;
+// The exponent's range, in studies and optimisations alike: 0 swings every bat as the reference
+// (equal speed); measured values are 0.25 to 0.3, and beyond 2 a bat of twice the MOI would be
+// swung at under a quarter of the speed, no player's swing.
+inline constexpr double max_swing_exponent = 2;
+inline bool valid_swing_exponent(double n) { return n >= 0 && n <= max_swing_exponent; }
 
 // The swing of a bat whose MOI about the knob is `moi`, by the player whose swing with a bat of
 // MOI `reference_moi` is `reference`: the whole rigid velocity field (omega, and cm_speed when

@@ -22,6 +22,10 @@ struct Swing {
   double center = 0;          // m from the knob
 };
 
+// What a stated accuracy must be, wherever it is given (a study's key, --accuracy, accuracy=):
+// 0 or less would state no error at all, so it is refused rather than read as "not set".
+inline constexpr const char* accuracy_expected = "a finite number > 0 (relative vf error the integration may add)";
+
 inline constexpr int all_modes = -1;
 // Keep the modes the collision can excite (see mode_selection.hpp), within mode_tolerance.
 inline constexpr int auto_modes = -2;

@@ -14,4 +14,13 @@ namespace sweetspot {
 // on a bat without its basis.
 ImpactResult simulate_point(const GridPoint& point, const ModalBasis* basis);
 
+// auto's estimate of the dropped modes' error stays near mode_tolerance (up to about 12 times it
+// over repeated contacts, impact.cpp); this many times past it, the modal model is out of its
+// depth (a wall of a nanometre once gave 1.1) and the point's vf is not to be trusted.
+inline constexpr double untrusted_modes_error = 100;
+
+// Marks an ok result of a scene with modes = auto whose modes_error exceeds untrusted_modes_error
+// times the scene's mode_tolerance as failed, saying why; leaves any other result as it is.
+void flag_untrusted_modes_error(const ImpactScene& scene, ImpactResult& r);
+
 }  // namespace sweetspot

@@ -25,10 +25,61 @@ from pathlib import Path
 import numpy as np
 
 from ._sweetspot import (Bat, __version__, _ball, _certify, _describe, _git_commit, _impact, _impacts,
-                         _point_arguments, _scene_record, _si, _status_names)
+                         _max_slices, _max_threads, _min_slices, _point_arguments, _scene_record, _si,
+                         _status_names)
 
 __all__ = ["Bat", "Result", "ball", "impact", "impacts", "run_study", "certify", "scene_of", "bat_of", "impacts_like",
            "__version__"]
+
+# ---- Arguments: every one checked here, so that a wrong type is a ValueError naming it (not
+# pybind11's RuntimeError "Unable to cast" or TypeError "incompatible function arguments").
+
+def _refuse(name, value, expected):
+    raise ValueError(f"{name} {value!r}: expected {expected}")
+
+
+def _text(name, value, expected="a string", path=False):
+    """A string (or, with path=True, a path-like object, as a string)."""
+    if path and isinstance(value, os.PathLike):
+        value = os.fspath(value)
+    if not isinstance(value, str):
+        _refuse(name, value, expected)
+    return str(value)
+
+
+def _whole(name, value, low, high, why=""):
+    """A whole number from low to high (Python's or numpy's int; not a bool, a float or a string)."""
+    if (isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer))
+            or not low <= int(value) <= high):
+        _refuse(name, value, f"a whole number from {low} to {high}{why}")
+    return int(value)
+
+
+def _real(name, value, dimension=None, arrays=False):
+    """A real number as float (a string with its unit where the argument has a dimension, "28 in"),
+    or with arrays=True also an array of real numbers as a float array. Complex numbers (their
+    imaginary part would be lost), bools, other strings and objects are refused."""
+    if value is None:
+        return None
+    expected = "a real number" + (" or an array of real numbers" if arrays else "")
+    if isinstance(value, str):
+        si = _si(name, value, dimension)  # ValueError naming the argument and the units if no quantity
+        if isinstance(si, str):
+            _refuse(name, value, expected)
+        return float(si)
+    try:
+        array = np.asarray(value)
+    except (TypeError, ValueError):  # ragged nested lists
+        _refuse(name, value, expected)
+    if array.dtype.kind == "O":  # Python ints beyond int64, or anything else
+        if any(isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, float, np.integer, np.floating))
+               for v in array.flat):
+            _refuse(name, value, expected)
+        array = array.astype(float)
+    if array.dtype.kind not in "iuf" or (array.ndim > 0 and not arrays):
+        _refuse(name, value, expected)
+    return float(array) if array.ndim == 0 else array.astype(float)
+
 
 class Result(dict):
     """What impact() and certify() return: a dict with the keys of the program's --json, and
@@ -76,7 +127,7 @@ def ball(name="n2000"):
     Returns: a dict of mass (kg), radius (m), k1 (N m^-a) and a of the force law F = k1 u^a on a flat
     surface, e0 the flat-wall COR at cor_speed (m/s), cor_slope (per m/s), curved_contact, and the
     fit's stiffness_from, cor_residual and stiffness_residual."""
-    return _ball(name)
+    return _ball(_text("name", name, "a ball preset's name or a TOML file's path", path=True))
 
 
 def _from_knots(name, length, z, outer_diameter, inner_diameter=None, *, interpolation="linear", slices=None,
@@ -89,12 +140,23 @@ def _from_knots(name, length, z, outer_diameter, inner_diameter=None, *, interpo
     (kg/m^3), youngs_modulus, shear_modulus (Pa) and shear_coefficient overriding the preset's.
     length may be a string with a unit ("33 in"); the knot arrays are numbers in m.
     Returns: a Bat. Its results store its name and slices but no bat file (it has none)."""
-    length = _si("length", length, "length")
-    inner = None if inner_diameter is None else [float(d) for d in np.ravel(inner_diameter)]
-    return Bat._from_knots(name, float(length), [float(v) for v in np.ravel(z)],
-                           [float(d) for d in np.ravel(outer_diameter)], inner, interpolation, slices, material,
-                           dict(density=density, youngs_modulus=youngs_modulus, shear_modulus=shear_modulus,
-                                shear_coefficient=shear_coefficient))
+    knots = {k: None if v is None else [float(x) for x in np.ravel(_real(k, v, arrays=True))]
+             for k, v in (("z", z), ("outer_diameter", outer_diameter), ("inner_diameter", inner_diameter))}
+    return Bat._from_knots(_text("name", name), _real("length", length, "length"), knots["z"], knots["outer_diameter"],
+                           knots["inner_diameter"], _text("interpolation", interpolation, '"linear", "pchip" or "stepped"'),
+                           _slices(slices), _text("material", material, "a wood preset's name"),
+                           _constants(density, youngs_modulus, shear_modulus, shear_coefficient))
+
+
+def _slices(slices):
+    return None if slices is None else _whole("slices", slices, _min_slices, _max_slices)
+
+
+def _constants(density, youngs_modulus, shear_modulus, shear_coefficient):
+    """The material's constants given beside its preset, checked as real numbers."""
+    given = dict(density=density, youngs_modulus=youngs_modulus, shear_modulus=shear_modulus,
+                 shear_coefficient=shear_coefficient)
+    return {k: _real(k, v) for k, v in given.items()}
 
 
 def _from_dimensions(name, length, *, knob_diameter, knob_length, handle_diameter, taper_start, taper_end,
@@ -107,16 +169,17 @@ def _from_dimensions(name, length, *, knob_diameter, knob_length, handle_diamete
     "flat", "rounded" or "cupped"; slices (default about 1 cm each); material, a wood preset, with
     density (kg/m^3), youngs_modulus, shear_modulus (Pa) and shear_coefficient overriding the preset's.
     Returns: a Bat, whose results store a bat file's text (bat_toml) that Bat.from_text reads back."""
-    length = _si("length", length, "length")
+    length = _real("length", length, "length")
     dimensions = dict(knob_diameter=knob_diameter, knob_length=knob_length, handle_diameter=handle_diameter,
                       taper_start=taper_start, taper_end=taper_end, barrel_diameter=barrel_diameter,
                       end_depth=end_depth)
     if wall_thickness is not None:  # a hollow bat's wall; a solid bat has none (0 is refused)
         dimensions["wall_thickness"] = wall_thickness
-    dimensions = {k: _si(k, v, "length") for k, v in dimensions.items()}
-    return Bat._from_dimensions(name, float(length), {k: float(v) for k, v in dimensions.items()}, end, slices,
-                                material, dict(density=density, youngs_modulus=youngs_modulus,
-                                               shear_modulus=shear_modulus, shear_coefficient=shear_coefficient))
+    dimensions = {k: _real(k, v, "length") for k, v in dimensions.items()}
+    return Bat._from_dimensions(_text("name", name), length, dimensions,
+                                _text("end", end, '"flat", "rounded" or "cupped"'), _slices(slices),
+                                _text("material", material, "a wood preset's name"),
+                                _constants(density, youngs_modulus, shear_modulus, shear_coefficient))
 
 
 def _from_text(toml, profile=None, *, slices=None, name="<text>"):
@@ -126,12 +189,42 @@ def _from_text(toml, profile=None, *, slices=None, name="<text>"):
     Parameters: toml, the bat file's text; profile, the profile's text (None for a bat of
     [dimensions]); slices, as Bat.load's; name, what error messages call the text.
     Returns: a Bat. Raises ValueError as Bat.load does."""
-    return Bat._from_text(toml, profile or "", name, slices)
+    profile = "" if profile is None else _text("profile", profile, "the profile's text (a string) or None")
+    return Bat._from_text(_text("toml", toml, "the bat file's text (a string)"), profile,
+                          _text("name", name, "a string"), _slices(slices))
+
+
+def _load(path, slices=None):
+    """Load a bat from its TOML file or a shipped bat's name ("r161"; docs/bats.md).
+
+    Parameters: path, the bat file or a shipped bat's name; slices, the number of slices to cut it into (default: its own).
+    Returns: a Bat. Raises ValueError naming the file, key and value that are wrong."""
+    return Bat._load(_text("path", path, "a bat file's path or a shipped bat's name", path=True), _slices(slices))
+
+
+def _modes(self, count=None, theory="timoshenko"):
+    """The bat's normal modes.
+
+    Parameters: count, the lowest vibrational modes to solve (default: all); theory, "timoshenko" or
+    "euler-bernoulli".
+    Returns: a dict of theory, frequencies_hz (Hz), shapes (count x slices, largest ``|psi|`` = 1, + at the barrel
+    end), z_m (slice centres, m), nodes_m (each mode's nodes, m from the knob), omega (rad/s, the two rigid
+    modes first), mass_kg, z_cm_m and moment_of_inertia_cm_kg_m2."""
+    return self._modes(None if count is None else _whole("count", count, 1, 2 * _max_slices),
+                       _text("theory", theory, '"timoshenko" or "euler-bernoulli"'))
+
+
+def _moment_of_inertia_about(self, z):
+    """kg m^2 about the point z (m from the knob, or a string with a unit, "6 in")"""
+    return self._moment_of_inertia_about(_real("z", z, "length"))
 
 
 Bat.from_knots = staticmethod(_from_knots)
 Bat.from_dimensions = staticmethod(_from_dimensions)
 Bat.from_text = staticmethod(_from_text)
+Bat.load = staticmethod(_load)
+Bat.modes = _modes
+Bat.moment_of_inertia_about = _moment_of_inertia_about
 
 
 def certify(bat, standard="bbcor", *, ball=None, e0=None, ball_speed=None, pivot=None, modes="auto",
@@ -147,8 +240,11 @@ def certify(bat, standard="bbcor", *, ball=None, e0=None, ball_speed=None, pivot
     `attrs`: the rig as run (scene_standard, scene_e0, scene_ball_speed, scene_pivot, scene_modes,
     scene_theory; scene_ball when given), the bat and the program's version and commit, so that
     ``certify(bat, **scene_of(result))`` certifies again the same way."""
-    result = _certify(bat, standard, ball, e0, _si("ball_speed", ball_speed, "speed"), _si("pivot", pivot, "length"),
-                      modes, theory)
+    _check_bat(bat)
+    ball = None if ball is None else _text("ball", ball, "a ball preset's name or a TOML file's path", path=True)
+    result = _certify(bat, _text("standard", standard, '"bbcor", "besr" or "bpf"'), ball, _real("e0", e0),
+                      _real("ball_speed", ball_speed, "speed"), _real("pivot", pivot, "length"), modes,
+                      _text("theory", theory, '"timoshenko" or "euler-bernoulli"'))
     scene = {"scene_standard": result["standard"]} | ({"scene_ball": str(ball)} if ball is not None else {})
     scene |= {"scene_e0": result["e0"], "scene_ball_speed": result["ball_speed"], "scene_pivot": result["pivot"],
               "scene_modes": modes if isinstance(modes, str) else int(modes), "scene_theory": theory}
@@ -158,16 +254,24 @@ _POINT = tuple(_point_arguments())  # z, ball_speed, cm_speed, center, omega, e0
 
 
 def _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, pivot, modes,
-           mode_tolerance, accuracy, integrator, dt, tolerance, window, theory, n2000, ball=None):
-    # A length, mass or speed given as a string with a unit ("28 in", "136 mph") is SI from here on.
-    z, ball_speed, cm_speed, center, omega, ball_mass, ball_radius = (
-        _si(name, value) for name, value in (("z", z), ("ball_speed", ball_speed), ("cm_speed", cm_speed),
-                                             ("center", center), ("omega", omega), ("ball_mass", ball_mass),
-                                             ("ball_radius", ball_radius)))
-    return dict(ball=ball, z=z, ball_speed=ball_speed, cm_speed=cm_speed, center=center, omega=omega, e0=e0,
-                ball_mass=ball_mass, ball_radius=ball_radius, k1=k1, a=a, pivot=pivot, modes=modes,
-                mode_tolerance=mode_tolerance, accuracy=accuracy, integrator=integrator, dt=dt,
-                tolerance=tolerance, window=window, theory=theory, n2000=n2000)
+           mode_tolerance, accuracy, integrator, dt, tolerance, window, theory, n2000, ball=None, arrays=False):
+    # Each point argument a real number (impacts: or an array of them); a length, mass or speed
+    # given as a string with a unit ("28 in", "136 mph") is SI from here on.
+    point = {name: _real(name, value, arrays=arrays)
+             for name, value in (("z", z), ("ball_speed", ball_speed), ("cm_speed", cm_speed), ("center", center),
+                                 ("omega", omega), ("e0", e0), ("ball_mass", ball_mass), ("ball_radius", ball_radius),
+                                 ("k1", k1), ("a", a))}
+    numbers = {name: _real(name, value) for name, value in (("mode_tolerance", mode_tolerance), ("accuracy", accuracy),
+                                                            ("dt", dt), ("tolerance", tolerance), ("window", window))}
+    if ball is not None:
+        ball = _text("ball", ball, "a ball preset's name or a TOML file with a [ball] table", path=True)
+    return dict(ball=ball, **point, pivot=pivot, modes=modes, **numbers, integrator=integrator, theory=theory,
+                n2000=n2000)
+
+
+def _check_bat(bat):
+    if not isinstance(bat, Bat):
+        _refuse("bat", bat, "a sweetspot.Bat (Bat.load, Bat.from_knots, Bat.from_dimensions or Bat.from_text)")
 
 
 def impact(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=None, e0=None, ball_mass=None,
@@ -193,6 +297,7 @@ def impact(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=No
     program's version and commit); ``impact(bat, **scene_of(result))`` computes it again bit for bit."""
     args = _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, pivot, modes,
                   mode_tolerance, accuracy, integrator, dt, tolerance, window, theory, n2000, ball)
+    _check_bat(bat)
     result = _impact(bat, args)
     radius = _si("ball_radius", ball_radius) if ball_radius is not None else _ball(ball or "n2000")["radius"]
     if result["u_max"] > radius:
@@ -226,13 +331,14 @@ def impacts(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=N
             integrator=None, dt=None, tolerance=None, window=None, theory="timoshenko", n2000=False, threads=None):
     """Many impacts at once: z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1
     and a may be arrays, broadcast together as numpy does. Runs in C++ over OpenMP threads with the
-    GIL released (`threads` of them, default OpenMP's: OMP_NUM_THREADS or every core), each needed set of modes solved once. Returns an xarray.Dataset with a study
+    GIL released (`threads` of them, 1 to 4 per processor; default OpenMP's: OMP_NUM_THREADS or every core), each needed set of modes solved once. Returns an xarray.Dataset with a study
     dataset's names, units and status flags: dims named after the array arguments when each is 1-D
     along its own axis (z=np.linspace(...), ball_speed=v[:, None] gives dims (ball_speed, z)), else
     one dim `point` with the arguments as coordinates over it.
 
     Units: z, center (m from the knob), ball_speed, cm_speed (m/s), omega (rad/s), ball_mass (kg),
     ball_radius (m), k1 (N m^-a), dt, window (s); e0, a, mode_tolerance, accuracy, tolerance are ratios.
+    accuracy (> 0) chooses the step itself: it excludes dt.
     Returns: an xarray.Dataset whose attributes record the resolved scene (scene_*, with
     scene_units), the bat (bat, bat_slices, bat_toml where known), program_version, git_commit and
     Conventions: impacts_like(ds) computes it again bit for bit, after ds.to_netcdf() and
@@ -240,16 +346,18 @@ def impacts(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=N
     import xarray as xr
 
     args = _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, pivot, modes,
-                  mode_tolerance, accuracy, integrator, dt, tolerance, window, theory, n2000, ball)
-    arrays = {k: np.asarray(v, dtype=float) for k, v in args.items()
-              if k in _POINT and v is not None and np.ndim(v) > 0}
+                  mode_tolerance, accuracy, integrator, dt, tolerance, window, theory, n2000, ball, arrays=True)
+    _check_bat(bat)
+    threads = 0 if threads is None else _whole("threads", threads, 1, _max_threads(),
+                                                      " (4 per processor; more only contend for the same cores)")  # 0: OpenMP's default
+    arrays = {k: v for k, v in args.items() if k in _POINT and isinstance(v, np.ndarray)}
     scalars = {k: v for k, v in args.items() if k not in arrays}
     try:
         shape = np.broadcast_shapes(*(v.shape for v in arrays.values())) if arrays else ()
     except ValueError as e:
         raise ValueError(f"impacts: arguments that do not broadcast together: {e}") from None
     flat = {k: np.ascontiguousarray(np.broadcast_to(v, shape)).ravel() for k, v in arrays.items()}
-    out = _impacts(bat, scalars, flat, 0 if threads is None else int(threads))
+    out = _impacts(bat, scalars, flat, threads)
 
     dims = _dims(arrays, shape)
     if dims is not None:
@@ -302,6 +410,12 @@ def scene_of(result):
             kwargs[key] = bool(value)  # the swing's flag; the rig's pivot is a point (m)
         else:
             kwargs[key] = float(value)
+    # scene_accuracy 0 records a step as given (scene_dt); a stated accuracy chose the step itself,
+    # and accuracy= excludes dt= (an accuracy of 0 is no argument).
+    if kwargs.get("accuracy") == 0:
+        del kwargs["accuracy"]
+    elif "accuracy" in kwargs:
+        kwargs.pop("dt", None)
     if hasattr(result, "dims") and "status" in result:  # a dataset: its per-point arguments
         dims = result["status"].dims
         for key in _POINT:
