@@ -10,6 +10,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -154,22 +156,72 @@ void check_total(const std::string& file, ImpactScene scene, const std::vector<d
   ImpactScene reference_scene = scene;
   reference_scene.vibrational_modes = all_modes;
   reference_scene.integrator.dt = 5e-6;
-  const ModalBasis b4 = compute_modes(bat_with_slices(design, 4 * n), BeamTheory::timoshenko);
+  const Bat b4_bat = bat_with_slices(design, 4 * n);
+  const ModalBasis b4 = compute_modes(b4_bat, BeamTheory::timoshenko);
   const ModalBasis b8 = compute_modes(bat_with_slices(design, 8 * n), BeamTheory::timoshenko);
   const ModalBasis coarse = solve(bat, scene);
-  const ModalBasis finer = solve(bat_with_slices(design, 2 * n), scene);
+  const ModalBasis twice = solve(bat_with_slices(design, 2 * n), scene), four_times = solve(b4_bat, scene);
   for (const double z : zs) {
     scene.z = reference_scene.z = z;
     const ImpactResult r4 = simulate_impact(b4, reference_scene), r8 = simulate_impact(b8, reference_scene);
     REQUIRE(r4.status == CollisionStatus::ok);
     REQUIRE(r8.status == CollisionStatus::ok);
     const double reference = r8.vf + (r8.vf - r4.vf) / 3;
-    const ImpactResult r = simulate_impact_with_errors(coarse, finer, scene);
+    const ImpactResult r = simulate_impact_with_errors(coarse, {&twice, &four_times}, scene);
     REQUIRE(r.status == CollisionStatus::ok);
     const double actual = std::abs(r.vf - reference) / error_scale(r.vf, scene.ball_speed);
     INFO(file << " z " << z << ": vf " << r.vf << ", reference " << reference << ", error " << actual
               << ", estimated " << r.total_error << " (slicing " << r.slicing_error << ", modes " << r.modes_error
               << ", step " << r.step_error << "), contacts " << r.contacts);
+    CHECK(r.total_error >= actual);
+    CHECK(r.total_error <= 5 * std::max(actual, 1e-7));
+    h.low = std::min(h.low, r.total_error / actual);
+    if (actual > 1e-7) h.high = std::max(h.high, r.total_error / actual);
+    ++h.points;
+  }
+}
+
+// A stated accuracy's result (simulate_within_accuracy) against the continuum: Richardson over
+// `fine` and 2 `fine` slices, modes auto at 1e-8, exact at 2.5 us. Its total estimate must bound
+// the actual error, within 5x where that is above 1e-7, and meet the accuracy.
+void check_accuracy(const std::string& file, ImpactScene scene, double accuracy, int fine,
+                    const std::vector<double>& zs, Honesty& h) {
+  BatSource source;
+  const BatDesign design = load_bat_design(source_path(file), source);
+  const int n = build_bat(design).slices();
+  ImpactScene reference_scene = scene;
+  reference_scene.mode_tolerance = 1e-8;
+  reference_scene.integrator.dt = 2.5e-6;
+  scene.accuracy = accuracy;
+  scene.error_estimates = true;
+  std::map<std::pair<int, bool>, ModalBasis> bases;  // per slice count, for the scene or the reference
+  const auto basis_for = [&](int slices, const ImpactScene& s, bool reference) -> const ModalBasis& {
+    auto found = bases.find({slices, reference});
+    if (found == bases.end()) {
+      const Bat bat = bat_with_slices(design, slices);
+      const ModeRequest request =
+          impact_mode_request(s, compute_modes(bat, BeamTheory::timoshenko, ModeRequest::rigid_only()));
+      found = bases.emplace(std::pair{slices, reference}, compute_modes(bat, BeamTheory::timoshenko, request)).first;
+    }
+    return found->second;
+  };
+  for (const double z : zs) {
+    scene.z = reference_scene.z = z;
+    const ImpactResult coarse = simulate_impact(basis_for(fine, reference_scene, true), reference_scene);
+    const ImpactResult finest = simulate_impact(basis_for(2 * fine, reference_scene, true), reference_scene);
+    REQUIRE(coarse.status == CollisionStatus::ok);
+    REQUIRE(finest.status == CollisionStatus::ok);
+    const double reference = finest.vf + (finest.vf - coarse.vf) / 3;
+    const ImpactResult r = simulate_within_accuracy(
+        [&](int slices) -> const ModalBasis& { return basis_for(slices, scene, false); }, n, BeamTheory::timoshenko,
+        scene);
+    REQUIRE(r.status == CollisionStatus::ok);
+    const double actual = std::abs(r.vf - reference) / error_scale(r.vf, scene.ball_speed);
+    INFO(file << " z " << z << ", accuracy " << accuracy << ": vf " << r.vf << " at " << r.slices_used
+              << " slices, reference " << reference << ", error " << actual << ", estimated " << r.total_error
+              << " (slicing " << r.slicing_error << ", modes " << r.modes_error << ", step " << r.step_error << ")");
+    CHECK(r.slices_used < fine);  // the reference is finer than what was chosen
+    CHECK(r.total_error <= accuracy);
     CHECK(r.total_error >= actual);
     CHECK(r.total_error <= 5 * std::max(actual, 1e-7));
     h.low = std::min(h.low, r.total_error / actual);
@@ -230,6 +282,27 @@ TEST_CASE("The total error estimate's honesty over the shipped bats and scenes",
       check_total(std::string("studies/bats/") + bat + ".toml", scene, zs, h);
       report((std::string(bat) + ", " + name).c_str(), h);
     }
+}
+
+TEST_CASE("A stated accuracy is met on R161's high-impact scene, its estimate bounding the error",
+          "[error_estimates]") {
+  Honesty h;
+  check_accuracy("studies/bats/r161.toml", high_impact(), 1e-3, 672, {0.505, 0.605, 0.755}, h);
+  report("R161, high impact, accuracy 1e-3", h);
+}
+
+TEST_CASE("A stated accuracy's honesty over the shipped bats and scenes", "[.honesty]") {
+  const std::vector<double> zs = {0.255, 0.455, 0.555, 0.655, 0.755};
+  for (const double accuracy : {1e-3, 1e-4})
+    for (const char* bat : {"r161", "torpedo", "aluminium", "maple_271", "alloy_bbcor", "composite_bbcor"})
+      for (const auto& [name, scene] : {std::pair{"high impact", high_impact()}, std::pair{"low impact", low_impact()},
+                                        std::pair{"rig", rig()}}) {
+        Honesty h;
+        check_accuracy(std::string("studies/bats/") + bat + ".toml", scene, accuracy, 672, zs, h);
+        char what[120];
+        std::snprintf(what, sizeof what, "%s, %s, accuracy %g", bat, name, accuracy);
+        report(what, h);
+      }
 }
 
 TEST_CASE("The program's impact reports every error estimate", "[error_estimates]") {

@@ -168,13 +168,13 @@ namespace {
 // at the step its accuracy asks.
 Collision collide_scene(const ImpactScene& scene, const SceneGeometry& g) {
   CollisionOptions options = scene.integrator;
-  if (scene.accuracy > 0)
-    options = options_for_accuracy(options, scene.accuracy, scene.ball, scene.ball_speed + g.bat_speed, g.recoil,
+  if (scene.step_accuracy > 0)
+    options = options_for_accuracy(options, scene.step_accuracy, scene.ball, scene.ball_speed + g.bat_speed, g.recoil,
                                    g.contact.count() ? g.contact.omega.maxCoeff() : 0.0);
   // Van Zandt and the force analyses drive the modes with the force profile.
   options.record_force |= scene.van_zandt_comparison || scene.histories || scene.force_response || scene.mode_response;
   options.find_collision_time |= scene.force_response;  // its omega grid is in units of 1/tau
-  return scene.accuracy > 0 ? collide_within(g.contact, scene.ball, scene.ball_speed, options, scene.accuracy)
+  return scene.step_accuracy > 0 ? collide_within(g.contact, scene.ball, scene.ball_speed, options, scene.step_accuracy)
                             : collide(g.contact, scene.ball, scene.ball_speed, options);
 }
 
@@ -232,13 +232,13 @@ Collision collide_with_patch(const ImpactScene& scene, const ModalBasis& basis, 
 // leaves RK4 and exact stepping at fine steps), or |v(2h) - v(4h)| / (2^p (2^p - 1)) if larger:
 // two runs can agree by chance where the error changes sign between their steps (measured on the
 // rigid bat: exact at 40 us agreed with 80 us to 7e-8 while erring 8e-6). Where a coarser step is
-// refused (RK4's stability), the runs at h / 2 and h / 4 instead. Where `accuracy` chose the
-// step, the accuracy. Infinite where no second run succeeds: no estimate.
+// refused (RK4's stability), the runs at h / 2 and h / 4 instead. Where a step accuracy chose
+// the step, that accuracy. Infinite where no second run succeeds: no estimate.
 double step_error_estimate(const ImpactScene& scene, const ModalBasis& basis, const SceneGeometry& g,
                            const Collision& fine) {
-  if (scene.accuracy > 0) return scene.accuracy;
   const Method method = scene.integrator.method;
   const bool dopri = method == Method::dopri;
+  if (scene.step_accuracy > 0) return scene.step_accuracy;
   const double order = dopri ? 1 : std::min(scene.ball.a + 1, 4.0);
   const double factor = dopri ? 32 : 2, ratio = dopri ? 32 : std::pow(2.0, order);
   const auto run = [&](double multiple) {
@@ -279,8 +279,13 @@ std::unique_ptr<ImpactScene> clamped_onto_bat(const ImpactScene& scene, double l
 
 }  // namespace
 
-ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& given) {
-  validate(given, basis);
+ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& stated) {
+  validate(stated, basis);
+  // A stated accuracy sets the modes' tolerance and the step (error_estimates.hpp); the slicing
+  // is the caller's, who holds the bat's design (simulate_within_accuracy).
+  const std::unique_ptr<ImpactScene> budgeted =
+      stated.accuracy > 0 ? std::make_unique<ImpactScene>(scene_for_accuracy(stated)) : nullptr;
+  const ImpactScene& given = budgeted ? *budgeted : stated;
   std::unique_ptr<ImpactScene> adjusted = clamped_onto_bat(given, basis.length());
   // The ball as it meets this section (struck_ball): the collision and the closed forms take it.
   if (given.ball.curved_contact || given.ball.speed_dependent()) {
@@ -317,7 +322,12 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& given) 
   }
   r.modes_kept = g.modes_kept;
   r.modes_error = g.modes_error;
-  if (scene.error_estimates && c.status == CollisionStatus::ok) r.step_error = step_error_estimate(scene, basis, g, c);
+  r.slices_used = basis.slices();
+  r.step_used = c.step;
+  if (scene.error_estimates && c.status == CollisionStatus::ok) {
+    r.step_error = step_error_estimate(scene, basis, g, c);
+    r.total_error = r.modes_error + r.step_error + r.slicing_error;  // NaN until the caller adds the slicing's
+  }
   if (c.status == CollisionStatus::refused_step) return r;
   if (c.status == CollisionStatus::no_contact) {  // nothing happened: no result
     r.e_eff = std::nan("");

@@ -54,7 +54,10 @@ const std::map<std::string, Description>& descriptions() {
       {"step_error", {"1", "estimated relative vf error of the time stepping (step doubling)"}},
       {"total_error", {"1", "estimated total relative vf error: slicing + modes + step"}},
       {"mode_tolerance", {"1", "relative vf error allowed the dropped modes (modes = auto)"}},
-      {"accuracy", {"1", "relative vf error the integration may add (sets the step)"}},
+      {"accuracy", {"1", "total relative vf error allowed (sets slices, modes and step)"}},
+      {"step_accuracy", {"1", "relative vf error the integration may add (sets the step)"}},
+      {"slices_used", {"1", "slices the bat was cut into for the impact"}},
+      {"step_used", {"s", "fixed time step the impact took (0: adaptive)"}},
       {"status", {"", "outcome of the impact"}},  // a flag, not a quantity: no units
       {"energy_initial", {"J", "initial kinetic energy of ball and bat"}},
       {"energy_ball", {"J", "final kinetic energy of the ball"}},
@@ -187,6 +190,8 @@ double scalar_value(const ImpactResult& r, const std::string& name) {
   if (name == "slicing_error") return r.slicing_error;
   if (name == "step_error") return r.step_error;
   if (name == "total_error") return r.total_error;
+  if (name == "slices_used") return r.slices_used;
+  if (name == "step_used") return r.step_used;
   return energy_value(r.energy, name);
 }
 
@@ -240,7 +245,7 @@ Variable output_variable(const std::string& name, std::vector<std::string> dims,
   if (name == "status") {  // every CollisionStatus, by its value and name
     std::vector<std::int32_t> flags;
     std::string meanings;
-    for (int k = 0; k <= static_cast<int>(CollisionStatus::failed); ++k) {
+    for (int k = 0; k <= static_cast<int>(last_collision_status); ++k) {
       flags.push_back(k);
       if (k) meanings += ' ';
       meanings += to_string(static_cast<CollisionStatus>(k));

@@ -81,6 +81,11 @@ struct ImpactResult {
   double slicing_error = std::numeric_limits<double>::quiet_NaN();
   double total_error = std::numeric_limits<double>::quiet_NaN();
   int contacts = 0;
+  // The slicing, and the step, the impact was computed at: the bat's own slices unless a stated
+  // accuracy chose finer ones (error_estimates.hpp); the fixed step (s; 0 for Dormand-Prince,
+  // whose steps adapt).
+  int slices_used = 0;
+  double step_used = 0;
   std::vector<ForceSample> force;   // only when the scene records the force
   // Only when the scene asks for them (ImpactScene::histories, force_response, mode_response)
   // and the collision ends ok.
