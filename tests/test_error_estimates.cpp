@@ -136,10 +136,23 @@ TEST_CASE("Step doubling bounds the stepper's error on the rigid bat's closed fo
 
 namespace {
 
+// The estimate against the actual error over a set of points. `strict`: each point must lie
+// within 5x; otherwise (the report over every shipped bat) the points past 5x are counted: where
+// the slicing's error crosses zero between slicings, a coarse result can lie by chance far closer
+// to the continuum than any estimate from its finer neighbours can tell.
 struct Honesty {
+  bool strict = true;
   double low = std::numeric_limits<double>::infinity();  // least estimate / actual
   double high = 0;                                         // largest, where actual is above round-off
-  int points = 0;
+  int points = 0, past_5x = 0;
+  void add(double estimate, double actual) {
+    CHECK(estimate >= actual);
+    if (strict) CHECK(estimate <= 5 * std::max(actual, 1e-7));
+    if (estimate > 5 * std::max(actual, 1e-7)) ++past_5x;
+    low = std::min(low, estimate / actual);
+    if (actual > 1e-7) high = std::max(high, estimate / actual);
+    ++points;
+  }
 };
 
 // The total estimate of the default impact (auto modes, exact at 10 us) at the bat's own slices
@@ -173,11 +186,7 @@ void check_total(const std::string& file, ImpactScene scene, const std::vector<d
     INFO(file << " z " << z << ": vf " << r.vf << ", reference " << reference << ", error " << actual
               << ", estimated " << r.total_error << " (slicing " << r.slicing_error << ", modes " << r.modes_error
               << ", step " << r.step_error << "), contacts " << r.contacts);
-    CHECK(r.total_error >= actual);
-    CHECK(r.total_error <= 5 * std::max(actual, 1e-7));
-    h.low = std::min(h.low, r.total_error / actual);
-    if (actual > 1e-7) h.high = std::max(h.high, r.total_error / actual);
-    ++h.points;
+    h.add(r.total_error, actual);
   }
 }
 
@@ -222,11 +231,7 @@ void check_accuracy(const std::string& file, ImpactScene scene, double accuracy,
               << " (slicing " << r.slicing_error << ", modes " << r.modes_error << ", step " << r.step_error << ")");
     CHECK(r.slices_used < fine);  // the reference is finer than what was chosen
     CHECK(r.total_error <= accuracy);
-    CHECK(r.total_error >= actual);
-    CHECK(r.total_error <= 5 * std::max(actual, 1e-7));
-    h.low = std::min(h.low, r.total_error / actual);
-    if (actual > 1e-7) h.high = std::max(h.high, r.total_error / actual);
-    ++h.points;
+    h.add(r.total_error, actual);
   }
 }
 
@@ -255,7 +260,8 @@ ImpactScene rig() {
 }
 
 void report(const char* what, const Honesty& h) {
-  std::printf("%s: %d points, total estimate / actual error in [%.3g, %.3g]\n", what, h.points, h.low, h.high);
+  std::printf("%s: %d points, total estimate / actual error in [%.3g, %.3g], %d past 5x\n", what, h.points, h.low,
+              h.high, h.past_5x);
 }
 
 }  // namespace
@@ -278,7 +284,7 @@ TEST_CASE("The total error estimate's honesty over the shipped bats and scenes",
   for (const char* bat : {"r161", "torpedo", "aluminium", "maple_271", "alloy_bbcor", "composite_bbcor"})
     for (const auto& [name, scene] : {std::pair{"high impact", high_impact()}, std::pair{"low impact", low_impact()},
                                       std::pair{"rig", rig()}}) {
-      Honesty h;
+      Honesty h{false};
       check_total(std::string("studies/bats/") + bat + ".toml", scene, zs, h);
       report((std::string(bat) + ", " + name).c_str(), h);
     }
@@ -297,7 +303,7 @@ TEST_CASE("A stated accuracy's honesty over the shipped bats and scenes", "[.hon
     for (const char* bat : {"r161", "torpedo", "aluminium", "maple_271", "alloy_bbcor", "composite_bbcor"})
       for (const auto& [name, scene] : {std::pair{"high impact", high_impact()}, std::pair{"low impact", low_impact()},
                                         std::pair{"rig", rig()}}) {
-        Honesty h;
+        Honesty h{false};
         check_accuracy(std::string("studies/bats/") + bat + ".toml", scene, accuracy, 672, zs, h);
         char what[120];
         std::snprintf(what, sizeof what, "%s, %s, accuracy %g", bat, name, accuracy);
