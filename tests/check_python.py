@@ -138,9 +138,17 @@ for call, fragments in [
         (lambda: sweetspot.impacts(bat, **swing, threads="4"), ["threads", "'4'"]),
         (lambda: sweetspot.impact(bat, **swing, dt=1e-5, accuracy=1e-4), ["dt", "accuracy"]),
         (lambda: sweetspot.impacts(bat, **swing, dt=1e-5, accuracy=1e-4), ["dt", "accuracy"]),
-        (lambda: sweetspot.impact(bat, **swing, accuracy=0), ["accuracy", "0", "> 0"]),
-        (lambda: sweetspot.impact(bat, **swing, accuracy=-1e-4), ["accuracy", "-0.0001", "> 0"]),
-        (lambda: sweetspot.impact(bat, **swing, accuracy=math.nan), ["accuracy", "nan", "> 0"]),
+        (lambda: sweetspot.impact(bat, **swing, step_accuracy=0), ["step_accuracy", "0", "> 0"]),
+        (lambda: sweetspot.impact(bat, **swing, step_accuracy=-1e-4), ["step_accuracy", "-0.0001", "> 0"]),
+        (lambda: sweetspot.impact(bat, **swing, step_accuracy=math.nan), ["step_accuracy", "nan", "> 0"]),
+        (lambda: sweetspot.impact(bat, **swing, dt=1e-5, step_accuracy=1e-4), ["dt", "step_accuracy"]),
+        (lambda: sweetspot.impact(bat, **swing, accuracy=0), ["accuracy", "0", "from 1e-7 to 0.1"]),
+        (lambda: sweetspot.impact(bat, **swing, accuracy=1e-9), ["accuracy", "1e-09", "from 1e-7 to 0.1"]),
+        (lambda: sweetspot.impact(bat, **swing, accuracy=math.nan), ["accuracy", "nan", "from 1e-7 to 0.1"]),
+        (lambda: sweetspot.impact(bat, **swing, accuracy=1e-4, mode_tolerance=1e-5), ["mode_tolerance", "accuracy"]),
+        (lambda: sweetspot.impact(bat, **swing, accuracy=1e-4, step_accuracy=1e-5), ["step_accuracy", "accuracy"]),
+        (lambda: sweetspot.impact(bat, **swing, accuracy=1e-4, tolerance=1e-8), ["tolerance", "accuracy"]),
+        (lambda: sweetspot.impact(bat, **swing, accuracy=1e-4, modes=10), ["modes", "accuracy"]),
         (lambda: sweetspot.impact(bat, **swing, pivot="yes"), ["pivot", "'yes'", "True or False"]),
         (lambda: sweetspot.impact(bat, **swing, n2000="no"), ["n2000", "'no'"]),
         (lambda: sweetspot.impact(bat, **swing, modes=10 ** 20), ["modes", "100000000000000000000"]),
@@ -190,8 +198,16 @@ for call, fragments in [
 one = sweetspot.impact(bat, z="27.56 in", ball_speed=np.float32(40), cm_speed=np.int64(10), pivot=0)
 check(one["status"] == "ok", "units and numpy numbers")
 check(sweetspot.impacts(bat, **swing, threads=1).vf.values[()] == sweetspot.impact(bat, **swing)["vf"], "threads=1")
-accurate = sweetspot.impact(bat, **swing, accuracy=1e-4)
-check(sweetspot.impact(bat, **sweetspot.scene_of(accurate))["vf"] == accurate["vf"], "replay with an accuracy")
+for name in ("accuracy", "step_accuracy"):
+    accurate = sweetspot.impact(bat, **swing, **{name: 1e-4})
+    check(sweetspot.impact(bat, **sweetspot.scene_of(accurate))["vf"] == accurate["vf"], f"replay with {name}")
+# A stated total accuracy is met, and impacts() computes what impact() does at it.
+accurate = sweetspot.impact(bat, **swing, accuracy=1e-3)
+check(accurate["status"] == "ok" and accurate["total_error"] <= 1e-3 and accurate["slices_used"] >= 2 * bat.slices,
+      f"accuracy=1e-3 met: {accurate['total_error']} at {accurate['slices_used']} slices")
+many = sweetspot.impacts(bat, z=[0.6, 0.7], ball_speed=40, cm_speed=10, accuracy=1e-3)
+check(many.vf.values[1] == accurate["vf"] and many.slices_used.values[1] == accurate["slices_used"],
+      "impacts at an accuracy as impact")
 check(sweetspot.Bat.from_knots(*rod_args, density=np.float64(700), slices=np.int64(40)).slices == 40, "numpy args")
 
 # 4. The GIL released: two Python threads each run impacts; both finish with the same numbers.
@@ -231,6 +247,23 @@ with xr.open_dataset(f"{work}/program.h5", engine="h5netcdf") as reference:
         check(np.array_equal(ds[name].values, reference[name].values, equal_nan=True), f"run_study {name}")
 points = sweetspot.impacts(bat, z=ds.z.values, ball_speed=40, center=0.09, omega=51, e0=0.5, modes=18)
 check(np.array_equal(points.vf.values, ds.vf.sel(modes=18).squeeze().values), "impacts == the study's points")
+# A study at a stated accuracy: each point climbs its own slicings, so the study (on any threads)
+# equals impacts() point for point, and meets the accuracy.
+accuracy_study = f"{work}/accuracy.toml"
+with open(accuracy_study, "w") as f:
+    f.write(f'[scene]\nbat = "{BAT}"\ncenter = 0.09\nomega = 51\nball_speed = 40\naccuracy = 1e-3\n'
+            '[axes]\nz = [0.3, 0.6, 0.75]\n[output]\nvariables = ["vf", "total_error", "slices_used", "status"]\n')
+for threads in ("1", "2"):
+    run = subprocess.run([program, "run", accuracy_study, "-o", f"{work}/accuracy_{threads}.h5", "--quiet"],
+                         env=os.environ | {"OMP_NUM_THREADS": threads}, capture_output=True, text=True)
+    check(run.returncode == 0, f"accuracy study on {threads} thread(s): {run.stderr}")
+with xr.open_dataset(f"{work}/accuracy_1.h5", engine="h5netcdf") as one, \
+        xr.open_dataset(f"{work}/accuracy_2.h5", engine="h5netcdf") as two:
+    check(np.array_equal(one.vf.values, two.vf.values), "accuracy study: the same on 1 and 2 threads")
+    check(bool((one.total_error.values <= 1e-3).all()), f"accuracy study meets 1e-3: {one.total_error.values}")
+    points = sweetspot.impacts(bat, z=one.z.values, ball_speed=40, center=0.09, omega=51, accuracy=1e-3)
+    check(np.array_equal(points.vf.values, one.vf.values), "accuracy study == impacts(accuracy=1e-3)")
+    check(np.array_equal(points.slices_used.values, one.slices_used.values), "the same slices chosen")
 try:
     sweetspot.run_study(f"{source}/studies/no_such_study.toml")
     check(False, "run_study of a missing file")

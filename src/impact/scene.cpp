@@ -5,6 +5,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "sweetspot/impact/error_estimates.hpp"
 #include "sweetspot/input_error.hpp"
 #include "sweetspot/impact/mode_selection.hpp"
 #include "toml_values.hpp"
@@ -218,7 +219,9 @@ void validate(const ImpactScene& scene, const ModalBasis& basis) {
   require_positive("dt", scene.integrator.dt);
   require_positive("tolerance", scene.integrator.tolerance);
   require_positive("mode_tolerance", scene.mode_tolerance);
-  if (scene.accuracy != 0) require_positive("accuracy", scene.accuracy);
+  if (scene.step_accuracy != 0) require_positive("step_accuracy", scene.step_accuracy);
+  if (scene.accuracy != 0 && !(scene.accuracy >= min_accuracy && scene.accuracy <= max_accuracy))
+    reject("accuracy", scene.accuracy, std::string("must be ") + accuracy_expected);
   require_positive("window", scene.integrator.window);
   if (scene.histories) validate_history(scene.history, length);
   if (scene.pivoted && !scene.swing.about_center)
@@ -261,7 +264,9 @@ Ball struck_ball(const ImpactScene& scene, const ModalBasis& basis) {
 ModeRequest auto_mode_request(const ImpactScene& scene, const ModalBasis& basis) {
   const SceneGeometry g = rigid_geometry(scene, basis);
   const double pulse = pulse_duration(struck_ball(scene, basis), scene.ball_speed + g.bat_speed, g.recoil);
-  const double omega = auto_solve_factor(scene.mode_tolerance) * 4 * std::numbers::pi / pulse;
+  // A stated accuracy's share for the modes is their tolerance (scene_for_accuracy).
+  const double tolerance = scene.accuracy > 0 ? accuracy_budget(scene.accuracy).modes : scene.mode_tolerance;
+  const double omega = auto_solve_factor(tolerance) * 4 * std::numbers::pi / pulse;
   if (!std::isfinite(omega) || !(omega > 0)) return ModeRequest::all();  // a scene validation will refuse
   // Half-octaves of 1000 rad/s: nearby pulses share one basis.
   return ModeRequest::below(1000 * std::exp2(std::ceil(2 * std::log2(std::max(omega, 1000.0) / 1000)) / 2));

@@ -55,14 +55,32 @@ void check_swing(const Settings& s, const Where& top) {
     reject(pivot->where, "true", "a pivoted bat is held at its rotation centre: give center, not cm_speed");
 }
 
-// A stated accuracy chooses the step (or dopri's tolerance) from the scene's pulse: a dt given
-// beside it would be silently overridden, so the two are refused together.
+// A stated accuracy chooses the step (or dopri's tolerance) from the scene's pulse, and the total
+// one also the modes' tolerance and the slices: what it chooses, given beside it, would be
+// silently overridden, so each such pair is refused.
 void check_step_or_accuracy(const Settings& s) {
-  const Setting *accuracy = s["accuracy"], *dt = s["dt"];
-  if (accuracy && dt)
-    reject(dt->where, dt->values.size() == 1 ? format_number(dt->values[0]) : "[...]",
-           "expected dt or accuracy, not both: key '" + accuracy->where.key +
-               "' is also given, and chooses the step itself");
+  const auto refuse_pair = [&](const char* given_key, const char* accuracy_key, const char* what) {
+    const Setting *accuracy = s[accuracy_key], *given = s[given_key];
+    if (!accuracy || !given) return;
+    reject(given->where, given->values.size() == 1 ? format_number(given->values[0]) : "[...]",
+           std::string("expected ") + given_key + " or " + accuracy_key + ", not both: key '" + accuracy->where.key +
+               "' is also given, and chooses " + what + " itself");
+  };
+  for (const char* accuracy : {"accuracy", "step_accuracy"}) {
+    refuse_pair("dt", accuracy, "the step");
+    refuse_pair("tolerance", accuracy, "dopri's tolerance");
+  }
+  refuse_pair("step_accuracy", "accuracy", "the step");
+  refuse_pair("mode_tolerance", "accuracy", "the modes' tolerance");
+  refuse_pair("slices", "accuracy", "the slices");
+  // A fixed mode count has no estimate of what its dropped modes cost: it cannot be held to one.
+  const Setting *accuracy = s["accuracy"], *modes = s["modes"];
+  if (accuracy && modes)
+    for (const double count : modes->values)
+      if (count >= 0)
+        reject(modes->where, format_number(count),
+               "a fixed number of modes cannot be held to key '" + accuracy->where.key +
+                   "': expected \"auto\" (the default) or \"all\"");
 }
 
 // The bat files, each read once into its design.
@@ -264,7 +282,8 @@ double fastest_kept_mode(const ModalBasis& basis, double modes, const double* pi
 void check_rk4_stability(const Settings& s, const Where& top, const std::vector<Bat>& bats,
                          const std::vector<std::string>& labels) {
   const Setting* integrator = s["integrator"];
-  if (!integrator || static_cast<Method>(integrator->values[0]) != Method::rk4 || s["accuracy"]) return;
+  if (!integrator || static_cast<Method>(integrator->values[0]) != Method::rk4 || s["accuracy"] || s["step_accuracy"])
+    return;
   const std::vector<double> steps = s.values("dt", default_step(Method::rk4));
   const double dt = *std::ranges::max_element(steps);
   const std::vector<double> pivots = s.values("pivot", 0), centers = s.values("center", 0);

@@ -7,6 +7,7 @@
 #include "sweetspot/ball/ball_tests.hpp"
 #include "sweetspot/bat/bat_design.hpp"
 #include "sweetspot/impact/equal_effort.hpp"
+#include "sweetspot/impact/error_estimates.hpp"
 #include "sweetspot/impact/histories.hpp"
 #include "toml_values.hpp"
 
@@ -32,6 +33,7 @@ bool ball_k1(double x) { return in_range(ball_k1_range, x); }
 bool ball_exponent(double x) { return in_range(ball_exponent_range, x); }
 bool swing_exponent(double x) { return valid_swing_exponent(x); }
 bool mode_count(double x) { return x >= 0 && x <= 1e6; }    // "all" and "auto" are not checked
+bool total_accuracy(double x) { return x >= min_accuracy && x <= max_accuracy; }
 
 constexpr KeySpec keys[] = {
     {"bat", Type::bat, "a bat file path (relative to the study file)", any,
@@ -98,8 +100,10 @@ constexpr KeySpec keys[] = {
      [](GridPoint& p, double x) { p.scene.vibrational_modes = static_cast<int>(x); }, bat_kinds},
     {"mode_tolerance", Type::number, "a finite number > 0 (relative vf error allowed the dropped modes)", positive,
      [](GridPoint& p, double x) { p.scene.mode_tolerance = x; }},
-    {"accuracy", Type::number, "a finite number > 0 (relative vf error the integration may add)", positive,
-     [](GridPoint& p, double x) { p.scene.accuracy = x; }},
+    {"accuracy", Type::number, accuracy_expected, total_accuracy,
+     [](GridPoint& p, double x) { p.scene.accuracy = x; }, impact},
+    {"step_accuracy", Type::number, step_accuracy_expected, positive,
+     [](GridPoint& p, double x) { p.scene.step_accuracy = x; }},
     // N2000's settings (RK4 at 5 us, 18 modes) under the keys the study leaves out: load_study.
     {"preset", Type::preset, "\"n2000\" (RK4 at 5 us with 18 vibrational modes)", any, [](GridPoint&, double) {},
      ball_kinds, 0, false},
@@ -169,6 +173,11 @@ constexpr OutputSpec outputs[] = {
     {"mode_response", impact, 0},
     {"modes_kept", impact, 0},
     {"modes_error", impact, 0},
+    {"slicing_error", impact, 0},
+    {"step_error", impact, 0},
+    {"total_error", impact, 0},
+    {"slices_used", impact, 0},
+    {"step_used", impact, 0},
     {"status", every_kind, every_kind},
 };
 
