@@ -207,8 +207,8 @@ class ModalCache {
   }
 
   ModalBasis solve(const GridPoint& p, ModeRequest request) const {
-    // A finer point (finer_point): the design cut anew, so that knots and dimensions are sampled
-    // from their shape.
+    // A point at other slices (with_design_slices): the design cut anew, so that knots and
+    // dimensions are sampled from their shape.
     if (p.slices < 0) return compute_modes(bat_with_slices(study_.design_specs[p.design], -p.slices), p.theory, request);
     Bat bat = study_.designs[p.design];
     if (p.slices > 0) bat = resample(bat, p.slices);
@@ -348,27 +348,38 @@ std::vector<double> compute_chunk(const Study& study, const OutputLayout& layout
     for (const GridPoint& f : finer[i]) finer_bases[i].push_back(cache.get(f, ignored));
   }
   std::vector<ImpactResult> results(points.size());
+  std::vector<char> lost(points.size(), 0);  // char, not bool: each thread writes its own
   const auto start = Clock::now();
 #pragma omp parallel for schedule(dynamic)
   for (std::size_t i = 0; i < points.size(); ++i) {
-    results[i] = guarded_point(grid[i], bases[i], reasons[i]);
-    if (finer[i].empty()) continue;
-    std::vector<double> vf{results[i].vf};
-    bool finer_ok = true;
-    for (std::size_t k = 0; k < finer[i].size() && finer_ok; ++k) {
-      finer_ok = finer_bases[i][k] != nullptr;
-      if (!finer_ok) break;
-      const ImpactResult f = guarded_point(finer[i][k], finer_bases[i][k], {});
-      finer_ok = f.status == CollisionStatus::ok;
-      vf.push_back(f.vf);
+    try {
+      results[i] = guarded_point(grid[i], bases[i], reasons[i]);
+      if (finer[i].empty()) continue;
+      std::vector<double> vf{results[i].vf};
+      bool finer_ok = true;
+      for (std::size_t k = 0; k < finer[i].size() && finer_ok; ++k) {
+        finer_ok = finer_bases[i][k] != nullptr;
+        if (!finer_ok) break;
+        const ImpactResult f = guarded_point(finer[i][k], finer_bases[i][k], {});
+        finer_ok = f.status == CollisionStatus::ok;
+        vf.push_back(f.vf);
+      }
+      add_slicing_error(results[i], vf, 0, finer_ok, grid[i].scene.ball_speed);
+    } catch (...) {  // no memory left even to record the point: all NaN (status -1 in the dataset)
+      lost[i] = 1;
+      results[i].status = CollisionStatus::failed;  // and no further slicings
     }
-    add_slicing_error(results[i], vf, 0, finer_ok, grid[i].scene.ball_speed);
   }
   refine_to_accuracy(study, cache, grid, results);
   std::vector<double> rows(points.size() * layout.width);
   std::vector<char> failed(points.size(), 0);
   std::size_t past_radius = 0;
   for (std::size_t i = 0; i < points.size(); ++i) {
+    if (lost[i]) {
+      std::fill_n(rows.data() + i * layout.width, layout.width, std::nan(""));
+      failed[i] = 1;
+      continue;
+    }
     const ImpactResult& r = results[i];
     // The toy model's ball is dimensionless: no radius to pass.
     if (grid[i].kind != StudyKind::toy && grid[i].kind != StudyKind::certification &&
