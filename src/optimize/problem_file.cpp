@@ -186,17 +186,26 @@ void check_model(const Where& top, const toml::table& doc, const OptimizationPro
   const Where at{top.file, "model", doc.get("model") ? doc.get("model")->source().begin.line : 0};
   BatDesign shortest = problem.base;
   set_design_parameter(shortest, "length", length);
-  int modes = 0;
+  int modes = 0, slices = 0;
   try {
     Bat bat = build_bat(shortest);
     if (problem.model.slices > 0) bat = resample(bat, problem.model.slices);
     modes = static_cast<int>(compute_modes(bat, problem.model.theory, ModeRequest::rigid_only()).vectors.rows()) - 2;
+    slices = bat.slices();
   } catch (const InputError& e) {
     reject(at, "{...}", std::string("cannot model the shortest design: ") + e.what());
   }
-  if (problem.model.vibrational_modes > modes)
-    reject(at.child("modes", *doc["model"]["modes"].node()), std::to_string(problem.model.vibrational_modes),
+  const int asked = problem.model.vibrational_modes;
+  const auto modes_at = [&] { return at.child("modes", *doc["model"]["modes"].node()); };
+  if (asked > modes)
+    reject(modes_at(), std::to_string(asked),
            "expected at most the " + std::to_string(modes) + " vibrational modes of the shortest design, \"all\" or \"auto\"");
+  // A solve that would take longer than is practical at the model's slices (every design's).
+  if (asked != auto_modes && asked != 0)
+    if (const auto why = impractical_solve(slices, problem.model.theory,
+                                           asked == all_modes ? ModeRequest::all() : ModeRequest::lowest(asked)))
+      reject(modes_at(), asked == all_modes ? "\"all\"" : std::to_string(asked),
+             "at " + std::to_string(slices) + " slices: " + *why);
 }
 
 // ---- [optimizer] ---------------------------------------------------------------------------

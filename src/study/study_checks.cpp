@@ -203,11 +203,19 @@ void check_mode_counts(const Settings& s, const Where& top, const std::vector<Ba
       for (const double theory : s.values("theory", 0))
         for (const double m : s.values("modes", default_mode_count(s))) {
           const int available = vibrational_mode_count(static_cast<int>(slices), static_cast<BeamTheory>(theory));
-          if (m == all_modes || m == auto_modes || m <= available) continue;
-          reject(where, format_number(m) + (modes ? "" : s["preset"] ? " (the n2000 preset)" : " (the default)"),
-                 labels[b] + " in " + format_number(slices) + " slices has " + std::to_string(available) +
-                     " vibrational modes (" + to_string(static_cast<BeamTheory>(theory)) +
-                     "); expected at most that, or \"all\"");
+          const std::string value =
+              (m == all_modes ? "\"all\"" : format_number(m)) +
+              (modes ? "" : s["preset"] ? " (the n2000 preset)" : " (the default)");
+          if (m != all_modes && m != auto_modes && m > available)
+            reject(where, value,
+                   labels[b] + " in " + format_number(slices) + " slices has " + std::to_string(available) +
+                       " vibrational modes (" + to_string(static_cast<BeamTheory>(theory)) +
+                       "); expected at most that, or \"all\"");
+          // A solve that would take longer than is practical (the full solve past 1024 slices).
+          const ModeRequest request = m == all_modes ? ModeRequest::all() : ModeRequest::lowest(static_cast<int>(m));
+          if (m != auto_modes && m != 0)
+            if (const auto why = impractical_solve(static_cast<int>(slices), static_cast<BeamTheory>(theory), request))
+              reject(where, value, labels[b] + " in " + format_number(slices) + " slices: " + *why);
         }
 }
 
@@ -275,9 +283,15 @@ void check_rk4_stability(const Settings& s, const Where& top, const std::vector<
     for (const double slices : s.values("slices", bats[b].slices()))
       for (const double theory : s.values("theory", 0)) {
         std::optional<ModalBasis> basis;  // solved only when some point keeps a vibrational mode
-        for (const double m : s.values("modes", default_modes)) {
+        const std::vector<double> counts = s.values("modes", default_modes);
+        // The modes the points keep, and no more: every one, or the lowest of the largest count.
+        const ModeRequest request = std::ranges::count(counts, all_modes)
+                                        ? ModeRequest::all()
+                                        : ModeRequest::lowest(static_cast<int>(std::ranges::max(counts)));
+        for (const double m : counts) {
           if (m == 0 || m == auto_modes) continue;
-          if (!basis) basis = compute_modes(resample(bats[b], static_cast<int>(slices)), static_cast<BeamTheory>(theory));
+          if (!basis)
+            basis = compute_modes(resample(bats[b], static_cast<int>(slices)), static_cast<BeamTheory>(theory), request);
           double omega = fastest_kept_mode(*basis, m, nullptr), center = 0;
           if (omega * dt <= rk4_stability_limit) continue;
           if (all_pivoted) {  // held, the fastest mode may be slow enough
