@@ -87,7 +87,7 @@ TEST_CASE("A study that cannot fit in the machine's memory is refused, naming it
   TempDir dir;
   require_refused(run_study(dir, "modes = 18\n",
                             "[axes]\nz = { start = 0.0, stop = 0.84, count = 1000 }\n"
-                            "ball_speed = { start = 1, stop = 100, count = 1000 }\ne0 = { start = 0.001, stop = 1, count = 1000 }\n"
+                            "ball_speed = { start = 1, stop = 100, count = 1000 }\ne0 = { start = 0.05, stop = 1, count = 1000 }\n"
                             "[output]\nvariables = [\"vf\", \"status\", \"mode_energy\"]\n"),
                   {"study.toml: the study needs about ", "GB of memory, more than the ",
                    "1000000000 points = z (1000) x ball_speed (1000) x e0 (1000), 20 values each"});

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "sweetspot/ball/ball_tests.hpp"
 #include "sweetspot/impact/impact.hpp"
 #include "sweetspot/impact/scan_maximum.hpp"
 #include "sweetspot/input_error.hpp"
@@ -84,7 +85,7 @@ RigSettings certification_rig(const Standard& standard, const CertifyOptions& op
   rig.pivot = options.pivot.value_or(standard.pivot);
   rig.vibrational_modes = options.vibrational_modes;
   rig.integrator.damping_loss = false;  // the measures need no energy balance
-  if (!(rig.ball.e0 > 0 && rig.ball.e0 <= 1)) reject("e0", rig.ball.e0, "a number in (0, 1]");
+  if (!in_range(ball_cor_range, rig.ball.e0)) reject("e0", rig.ball.e0, range_text(ball_cor_range));
   if (!(rig.ball_speed > 0) || !std::isfinite(rig.ball_speed))
     reject("ball speed", rig.ball_speed, "a finite speed > 0 (m/s) toward the bat at rest");
   const double start = scan_start(options.scan, length);

@@ -7,6 +7,7 @@
 #include "ball/ball_table.hpp"
 #include "sweetspot/impact/equal_effort.hpp"
 #include "problem_values.hpp"
+#include "sweetspot/ball/ball_tests.hpp"
 #include "sweetspot/input_error.hpp"
 
 namespace sweetspot {
@@ -129,7 +130,8 @@ Player read_player(const Where& top, const toml::table& doc, OptimizationProblem
     if (!ball->is_table()) reject(top.child("ball", *ball), describe(*ball), "expected a table [ball]");
     p.ball = detail::read_ball_table(*ball->as_table(), top.file->string() + ": [ball]").ball;
   }
-  p.ball.e0 = number_key(at, t, "e0", p.ball.e0, [](double v) { return v > 0 && v <= 1; }, "a COR in (0, 1]");
+  p.ball.e0 = number_key(at, t, "e0", p.ball.e0, [](double v) { return in_range(ball_cor_range, v); },
+                         range_text(ball_cor_range));
   if (!p.equal_effort) {
     for (const char* key : {"reference_bat", "swing_exponent"})
       if (const toml::node* node = t.get(key))

@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 
 #include "sweetspot/ball/ball_file.hpp"
+#include "sweetspot/ball/ball_tests.hpp"
 #include "sweetspot/impact/n2000_settings.hpp"
 #include "sweetspot/input_error.hpp"
 
@@ -57,6 +58,14 @@ Dimension dimension_named(const std::string& name) {
 }
 
 }  // namespace
+
+void check_ball_ranges(const Ball& ball, const std::set<std::string>& per_point) {
+  if (const auto outside = ball_out_of_range(ball); outside && !per_point.contains(outside->key)) {
+    char value[32];
+    std::snprintf(value, sizeof value, "%.10g", outside->value);
+    throw InputError(outside->key + " " + value + ": " + outside->expected());
+  }
+}
 
 std::optional<double> real_number(const py::handle& value) {
   // A complex number would lose its imaginary part, a bool read as 0 or 1: neither is a value.
@@ -155,6 +164,7 @@ SceneArgs scene_args(const py::dict& args, const std::set<std::string>& per_poin
   for (std::size_t k = 0; k < names.size(); ++k)
     if (has(names[k].c_str()))
       set_point_argument(s, static_cast<int>(k), point_number(names[k], get(names[k].c_str())));
+  check_ball_ranges(s.ball, per_point);
   if (!given.contains("z")) throw InputError("impact: z is required");
   if (!given.contains("ball_speed")) throw InputError("impact: ball_speed is required");
   const bool cm = given.contains("cm_speed"), center = given.contains("center");
