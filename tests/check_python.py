@@ -311,8 +311,9 @@ try:
 except ValueError as e:
     check("'r16'" in str(e) and "r161 torpedo" in str(e) and "\n" not in str(e), f"Bat.load('r16'): {e}")
 
-# 6c. A ball's ranges (ball_tests.hpp, docs/balls.md), as the program and studies have them: a tiny
-# but positive value is a ValueError naming the argument and its range, before any impact runs.
+# 6c. A ball's ranges (ball_tests.hpp, docs/balls.md) and omega >= 0, as the program and studies
+# have them: a tiny but positive value is a ValueError naming the argument and its range, before
+# any impact runs.
 os.makedirs(work, exist_ok=True)
 tiny_mass = f"{work}/tiny_mass.toml"
 with open(tiny_mass, "w") as f:
@@ -327,7 +328,10 @@ for call, fragments in (
         (lambda: sweetspot.impact(bat, **swing, omega=40, e0=1e-300), ["e0", "[0.05, 1]"]),
         (lambda: sweetspot.impacts(bat, **swing, omega=40, ball_mass=[0.145, 1e-300]), ["ball_mass", "1e-300"]),
         (lambda: sweetspot.impact(bat, **swing, omega=40, ball=tiny_mass), ["mass = 1e-300", "[0.001, 10] kg"]),
-        (lambda: sweetspot.ball(tiny_squeeze), ["compression_displacement = 1e-300", "[0.0001, 1] m"])):
+        (lambda: sweetspot.ball(tiny_squeeze), ["compression_displacement = 1e-300", "[0.0001, 1] m"]),
+        # A negative omega swings the barrel away from the ball: refused as the program does (issue 24).
+        (lambda: sweetspot.impact(bat, **swing, omega=-40), ["omega -40", ">= 0"]),
+        (lambda: sweetspot.impacts(bat, **swing, omega=[40, -40]), ["omega -40", ">= 0"])):
     try:
         call()
         check(False, f"{fragments}: no ValueError")

@@ -165,3 +165,20 @@ TEST_CASE("Usage errors: one line in the program's style, exit status 2", "[boun
   CHECK(help.exit_code == 0);
   CHECK_THAT(help.output, Catch::Contains("--ball-speed"));
 }
+
+// Issue 24: a negative omega was taken by impact and studies, refused by the optimiser's [player].
+// v_bat(z) = V_cm + omega (z - z_cm), +y toward the ball (physics.md §1): a swing turns the barrel
+// toward the ball at omega >= 0; a negative one swings it backwards. Refused the same everywhere;
+// 0 (a bat at rest, a push) stays.
+TEST_CASE("A negative omega is refused wherever a swing is given, 0 taken", "[bounds]") {
+  require_refused(run_program("impact --bat " + r161 + " --z 0.7 --ball-speed 40 --cm-speed 10 --omega -40"),
+                  {"impact: --omega -40", ">= 0", "backwards"});
+  require_refused(run_program("impact --bat " + r161 + " --z 0.7 --ball-speed 40 --center 0.15 --pivot --omega "
+                              "-480rpm"),
+                  {"--omega -50.26", ">= 0"});
+  CHECK(run_program("impact --bat " + r161 + " --z 0.7 --ball-speed 40 --cm-speed 10 --omega 0").exit_code == 0);
+  TempDir dir;
+  require_refused(run_study(dir, "ball_speed = 40\n", "[axes]\nz = [0.6, 0.7]\nomega = [51, \"-480 rpm\"]\n"),
+                  {"key 'axes.omega[1]' = \"-480 rpm\"", ">= 0"});
+  require_untouched(dir);
+}

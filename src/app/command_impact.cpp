@@ -280,6 +280,11 @@ void add_impact_command(CLI::App& app) {
   cmd->callback([o, cmd] {
     o->units.check_text_output("impact", o->json);
     check_accuracy(*cmd, o->scene.accuracy);
+    if (!valid_omega(o->scene.swing.omega)) {
+      char value[32];
+      std::snprintf(value, sizeof value, "%.10g", o->scene.swing.omega);
+      throw InputError(std::string("impact: --omega ") + value + ": expected " + omega_expected);
+    }
     resolve_integrator(*cmd, o->scene.integrator);
     resolve_ball(*cmd, o->named_ball, o->scene.ball);
     if (cmd->count("--n2000") && cmd->count("--modes") == 0) o->modes = std::to_string(n2000_modes);

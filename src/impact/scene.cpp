@@ -199,7 +199,7 @@ void validate(const ImpactScene& scene, const ModalBasis& basis) {
   const double length = basis.length();
   if (!lies_on_bat(scene.z, length)) reject_off_bat("z", scene.z, length);
   require_finite("ball_speed", scene.ball_speed);
-  require_finite("omega", scene.swing.omega);
+  if (!valid_omega(scene.swing.omega)) reject("omega", scene.swing.omega, std::string("expected ") + omega_expected);
   require_finite(scene.swing.about_center ? "center" : "cm_speed",
                  scene.swing.about_center ? scene.swing.center : scene.swing.cm_speed);
   // The ball's ranges, as a [ball] table and a study's keys take them (ball_tests.hpp).

@@ -120,9 +120,7 @@ Player read_player(const Where& top, const toml::table& doc, OptimizationProblem
   if (cm) p.swing.cm_speed = number_key(at, t, "cm_speed", 0, finite, "a finite speed", Dimension::speed);
   // The swing turns the barrel toward the ball: v(z) = V_cm + omega (z - z_cm), + toward the ball
   // (scene.hpp), so a batter's omega is >= 0; a negative one would swing the barrel away from the pitch.
-  p.swing.omega = required_number(at, t, "omega", [](double v) { return v >= 0; },
-                                  "the swing's angular speed, finite and >= 0 (the barrel turning toward the ball)",
-                                  Dimension::angular_speed);
+  p.swing.omega = required_number(at, t, "omega", valid_omega, omega_expected, Dimension::angular_speed);
   p.ball_speed = required_number(at, t, "ball_speed", [](double v) { return v >= 0; },
                                  "the pitch's speed toward the bat, finite and >= 0", Dimension::speed);
   // The pitched ball: the file's [ball] table (README "Balls"), N2000's without one; e0 sets its COR.

@@ -165,7 +165,7 @@ py::dict run_impacts(BatHandle& bat, const py::dict& scalars, const py::dict& ar
   for (py::ssize_t i = 0; i < n; ++i) {  // every point's ball in its ranges before any point runs
     ImpactScene scene = base.scene;
     for (const auto& [which, values] : data) set_point_argument(scene, which, values[i]);
-    check_ball_ranges(scene.ball);
+    check_point_ranges(scene);
   }
   const std::size_t width = impacts_outputs.size();
   std::vector<double> rows(static_cast<std::size_t>(n) * width);

@@ -82,7 +82,7 @@ constexpr KeySpec keys[] = {
        p.scene.swing.about_center = false;
      },
      impact, 0, true, Dimension::speed},
-    {"omega", Type::number, "a finite angular speed", finite, [](GridPoint& p, double x) { p.scene.swing.omega = x; },
+    {"omega", Type::number, omega_expected, valid_omega, [](GridPoint& p, double x) { p.scene.swing.omega = x; },
      impact, 0, true, Dimension::angular_speed},
     {"pivot", Type::boolean, "true or false", any, [](GridPoint& p, double x) { p.scene.pivoted = x != 0; }},
     // Equal effort scales each bat's swing from the reference bat's by their MOIs (grid_point).
