@@ -331,7 +331,10 @@ for call, fragments in (
         (lambda: sweetspot.ball(tiny_squeeze), ["compression_displacement = 1e-300", "[0.0001, 1] m"]),
         # A negative omega swings the barrel away from the ball: refused as the program does (issue 24).
         (lambda: sweetspot.impact(bat, **swing, omega=-40), ["omega -40", ">= 0"]),
-        (lambda: sweetspot.impacts(bat, **swing, omega=[40, -40]), ["omega -40", ">= 0"])):
+        (lambda: sweetspot.impacts(bat, **swing, omega=[40, -40]), ["omega -40", ">= 0"]),
+        # A stated accuracy chooses dopri's tolerance: one given beside it is refused, as dt is.
+        (lambda: sweetspot.impact(bat, **swing, omega=40, integrator="dopri", accuracy=1e-5, tolerance=1e-12),
+         ["tolerance excludes accuracy"])):
     try:
         call()
         check(False, f"{fragments}: no ValueError")

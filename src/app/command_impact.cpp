@@ -211,8 +211,8 @@ void resolve_integrator(const CLI::App& cmd, CollisionOptions& options) {
 
 void check_accuracy(const CLI::App& cmd, double accuracy) {
   if (cmd.count("--accuracy") == 0) return;
-  // As a study's key: a stated accuracy is a finite number > 0; it chooses the step, so a step
-  // given beside it would be silently overridden.
+  // As a study's key: a stated accuracy is a finite number > 0; it chooses the step (or dopri's
+  // tolerance), so a step or tolerance given beside it would be silently overridden.
   if (!(std::isfinite(accuracy) && accuracy > 0)) {
     char value[32];
     std::snprintf(value, sizeof value, "%g", accuracy);
@@ -220,6 +220,10 @@ void check_accuracy(const CLI::App& cmd, double accuracy) {
   }
   if (cmd.count("--dt"))
     throw InputError(cmd.get_name() + ": --dt excludes --accuracy (which chooses the step): give one of them");
+  // Under dopri the accuracy chooses the tolerance too; under the fixed-step methods it has none.
+  if (cmd.count("--tolerance"))
+    throw InputError(cmd.get_name() + ": --tolerance excludes --accuracy (which chooses dopri's tolerance, or the "
+                                      "step): give one of them");
 }
 
 void add_integrator_options(CLI::App& cmd, CollisionOptions& options) {

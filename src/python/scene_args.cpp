@@ -184,6 +184,9 @@ SceneArgs scene_args(const py::dict& args, const std::set<std::string>& per_poin
     if (!(std::isfinite(s.accuracy) && s.accuracy > 0))
       throw InputError("accuracy " + py::repr(get("accuracy")).cast<std::string>() + ": expected " + accuracy_expected);
     if (has("dt")) throw InputError("impact: dt excludes accuracy (which chooses the step): give one of them");
+    if (has("tolerance"))
+      throw InputError("impact: tolerance excludes accuracy (which chooses dopri's tolerance, or the step): give one "
+                       "of them");
   }
   if (has("tolerance")) s.integrator.tolerance = number("tolerance", get("tolerance"));
   if (has("window")) s.integrator.window = number("window", get("window"));

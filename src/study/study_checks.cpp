@@ -55,14 +55,16 @@ void check_swing(const Settings& s, const Where& top) {
     reject(pivot->where, "true", "a pivoted bat is held at its rotation centre: give center, not cm_speed");
 }
 
-// A stated accuracy chooses the step (or dopri's tolerance) from the scene's pulse: a dt given
-// beside it would be silently overridden, so the two are refused together.
+// A stated accuracy chooses the step (or dopri's tolerance) from the scene's pulse: a dt or a
+// tolerance given beside it would be silently overridden, so each is refused with it.
 void check_step_or_accuracy(const Settings& s) {
-  const Setting *accuracy = s["accuracy"], *dt = s["dt"];
-  if (accuracy && dt)
-    reject(dt->where, dt->values.size() == 1 ? dt->value_text(0) : "[...]",
-           "expected dt or accuracy, not both: key '" + accuracy->where.key +
-               "' is also given, and chooses the step itself");
+  const Setting* accuracy = s["accuracy"];
+  if (!accuracy) return;
+  for (const char* key : {"dt", "tolerance"})
+    if (const Setting* chosen = s[key])
+      reject(chosen->where, chosen->values.size() == 1 ? chosen->value_text(0) : "[...]",
+             "expected " + std::string(key) + " or accuracy, not both: key '" + accuracy->where.key +
+                 "' is also given, and chooses the " + (key == std::string("dt") ? "step" : "tolerance") + " itself");
 }
 
 // The bat files, each read once into its design.

@@ -407,12 +407,14 @@ def scene_of(result):
             kwargs[key] = bool(value)  # the swing's flag; the rig's pivot is a point (m)
         else:
             kwargs[key] = float(value)
-    # scene_accuracy 0 records a step as given (scene_dt); a stated accuracy chose the step itself,
-    # and accuracy= excludes dt= (an accuracy of 0 is no argument).
+    # scene_accuracy 0 records a step as given (scene_dt); a stated accuracy chose the step (or
+    # dopri's tolerance) itself, and accuracy= excludes dt= and tolerance= (an accuracy of 0 is no
+    # argument).
     if kwargs.get("accuracy") == 0:
         del kwargs["accuracy"]
     elif "accuracy" in kwargs:
         kwargs.pop("dt", None)
+        kwargs.pop("tolerance", None)
     if hasattr(result, "dims") and "status" in result:  # a dataset: its per-point arguments
         dims = result["status"].dims
         for key in _POINT:
