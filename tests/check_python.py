@@ -344,6 +344,36 @@ try:
 except ValueError as e:
     check("'r16'" in str(e) and "r161 torpedo" in str(e) and "\n" not in str(e), f"Bat.load('r16'): {e}")
 
+# 6c. A ball's ranges (ball_tests.hpp, docs/balls.md) and omega >= 0, as the program and studies
+# have them: a tiny but positive value is a ValueError naming the argument and its range, before
+# any impact runs.
+os.makedirs(work, exist_ok=True)
+tiny_mass = f"{work}/tiny_mass.toml"
+with open(tiny_mass, "w") as f:
+    f.write('[ball]\npreset = "mlb"\nmass = 1e-300\n')
+tiny_squeeze = f"{work}/tiny_squeeze.toml"
+with open(tiny_squeeze, "w") as f:
+    f.write("[ball]\nmass = 0.145\nradius = 0.0366\ncor = 0.5\ncompression = 1500\ncompression_displacement = 1e-300\n")
+for call, fragments in (
+        (lambda: sweetspot.impact(bat, **swing, omega=40, ball_mass=1e-300), ["ball_mass", "[0.001, 10] kg"]),
+        (lambda: sweetspot.impact(bat, **swing, omega=40, ball_radius=1e-300), ["ball_radius", "[0.001, 1] m"]),
+        (lambda: sweetspot.impact(bat, **swing, omega=40, k1=1e-300), ["k1", "[1000, 1e12]"]),
+        (lambda: sweetspot.impact(bat, **swing, omega=40, e0=1e-300), ["e0", "[0.05, 1]"]),
+        (lambda: sweetspot.impacts(bat, **swing, omega=40, ball_mass=[0.145, 1e-300]), ["ball_mass", "1e-300"]),
+        (lambda: sweetspot.impact(bat, **swing, omega=40, ball=tiny_mass), ["mass = 1e-300", "[0.001, 10] kg"]),
+        (lambda: sweetspot.ball(tiny_squeeze), ["compression_displacement = 1e-300", "[0.0001, 1] m"]),
+        # A negative omega swings the barrel away from the ball: refused as the program does (issue 24).
+        (lambda: sweetspot.impact(bat, **swing, omega=-40), ["omega -40", ">= 0"]),
+        (lambda: sweetspot.impacts(bat, **swing, omega=[40, -40]), ["omega -40", ">= 0"]),
+        # A stated accuracy chooses dopri's tolerance: one given beside it is refused, as dt is.
+        (lambda: sweetspot.impact(bat, **swing, omega=40, integrator="dopri", accuracy=1e-5, tolerance=1e-12),
+         ["tolerance excludes accuracy"])):
+    try:
+        call()
+        check(False, f"{fragments}: no ValueError")
+    except ValueError as e:
+        check(all(f in str(e) for f in fragments) and "\n" not in str(e), f"{fragments}: {e}")
+
 # 7. cmake --install puts the package under the prefix, where the interpreter imports it.
 prefix = f"{work}/prefix"
 subprocess.run(["cmake", "--install", build, "--prefix", prefix], check=True, capture_output=True)

@@ -119,3 +119,20 @@ TEST_CASE("A study refuses accuracy beside what it chooses, naming both keys", "
   }
   require_refused(run_study(dir, "accuracy = 1e-3\n"), {"key 'scene.modes' = 0", "accuracy"});
 }
+
+// Issue 24: under dopri a stated accuracy chooses the tolerance (step_selection.cpp), so a
+// tolerance given beside it was silently overridden; refused with it as dt is, whatever the
+// integrator (the fixed-step methods take no tolerance at all).
+TEST_CASE("A tolerance beside a stated accuracy is refused, by impact and by a study", "[cli][study][accuracy]") {
+  require_refused(run_program(impact + " --integrator dopri --accuracy 1e-5 --tolerance 1e-12"),
+                  {"impact: --tolerance excludes --accuracy"});
+  require_refused(run_program(impact + " --tolerance 1e-12 --accuracy 1e-5"), {"--tolerance", "--accuracy"});
+  CHECK(run_program(impact + " --integrator dopri --tolerance 1e-10").exit_code == 0);
+  TempDir dir;
+  require_refused(run_study(dir, "integrator = \"dopri\"\ntolerance = 1e-12\naccuracy = 1e-5\n"),
+                  {"key 'scene.tolerance' = 1e-12: expected tolerance or accuracy, not both: key 'scene.accuracy'"});
+  require_refused(run_study(dir, "accuracy = 1e-5\n", "tolerance = [1e-10, 1e-12]\n"),
+                  {"key 'axes.tolerance' = [...]", "'scene.accuracy'"});
+  CHECK(text_of(dir / "out.h5") == "an earlier result");
+  CHECK_FALSE(std::filesystem::exists(dir / "out.h5.journal"));
+}

@@ -111,7 +111,12 @@ void run(const ConvergenceCommandOptions& o) {
                  describe_point(study, point));
   Bat bat = study.designs[point.design];  // as the study read and checked it
   if (point.slices > 0) bat = resample(bat, point.slices);
-  const ModalBasis basis = compute_modes(bat, point.theory);
+  // Every mode while the full solve is practical; past that, what an impact of the scene asks.
+  const ModalBasis basis =
+      compute_modes(bat, point.theory,
+                    bat.slices() <= max_full_solve_slices
+                        ? ModeRequest::all()
+                        : impact_mode_request(point.scene, compute_modes(bat, point.theory, ModeRequest::rigid_only())));
 
   const ConvergenceTable table = run_convergence(basis, point.scene, o.quick);
   spdlog::info("{}: z = {:g} m, {} modes kept (rigid included), largest stable RK4 step {:.4g} us{}", bat.name,

@@ -12,6 +12,7 @@
 #include "json.hpp"
 #include "quantity_option.hpp"
 #include "sweetspot/ball/ball_file.hpp"
+#include "sweetspot/ball/ball_tests.hpp"
 #include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/bat/bat_design.hpp"
 #include "sweetspot/impact/error_estimates.hpp"
@@ -219,14 +220,24 @@ void add_ball_options(CLI::App& cmd, Ball& ball, std::string& named_ball) {
 }
 
 void resolve_ball(const CLI::App& cmd, const std::string& named_ball, Ball& ball) {
-  if (named_ball.empty()) return;
-  Ball named = load_ball(named_ball).ball;
-  if (cmd.count("--e0")) named.e0 = ball.e0;
-  if (cmd.count("--ball-mass")) named.mass = ball.mass;
-  if (cmd.count("--ball-radius")) named.radius = ball.radius;
-  if (cmd.count("--k1")) named.k1 = ball.k1;
-  if (cmd.count("--a")) named.a = ball.a;
-  ball = named;
+  if (!named_ball.empty()) {
+    Ball named = load_ball(named_ball).ball;
+    if (cmd.count("--e0")) named.e0 = ball.e0;
+    if (cmd.count("--ball-mass")) named.mass = ball.mass;
+    if (cmd.count("--ball-radius")) named.radius = ball.radius;
+    if (cmd.count("--k1")) named.k1 = ball.k1;
+    if (cmd.count("--a")) named.a = ball.a;
+    ball = named;
+  }
+  // The ball's ranges, as a [ball] table and a study take them (ball_tests.hpp), before any work.
+  // A named ball is in range (load_ball): what is not came from an option.
+  if (const auto outside = ball_out_of_range(ball)) {
+    const std::map<std::string, std::string> options = {
+        {"ball_mass", "--ball-mass"}, {"ball_radius", "--ball-radius"}, {"k1", "--k1"}, {"a", "--a"}, {"e0", "--e0"}};
+    char value[32];
+    std::snprintf(value, sizeof value, "%.10g", outside->value);
+    throw InputError(cmd.get_name() + ": " + options.at(outside->key) + " " + value + ": " + outside->expected());
+  }
 }
 
 void resolve_integrator(const CLI::App& cmd, CollisionOptions& options) {
@@ -329,6 +340,11 @@ void add_impact_command(CLI::App& app) {
   cmd->callback([o, cmd] {
     o->units.check_text_output("impact", o->json);
     check_accuracy(*cmd, o->scene);
+    if (!valid_omega(o->scene.swing.omega)) {
+      char value[32];
+      std::snprintf(value, sizeof value, "%.10g", o->scene.swing.omega);
+      throw InputError(std::string("impact: --omega ") + value + ": expected " + omega_expected);
+    }
     resolve_integrator(*cmd, o->scene.integrator);
     resolve_ball(*cmd, o->named_ball, o->scene.ball);
     if (cmd->count("--n2000") && cmd->count("--modes") == 0) o->modes = std::to_string(n2000_modes);

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "sweetspot/ball/ball_tests.hpp"
 #include "sweetspot/impact/error_estimates.hpp"
 #include "sweetspot/input_error.hpp"
 #include "sweetspot/impact/mode_selection.hpp"
@@ -199,22 +200,20 @@ void validate(const ImpactScene& scene, const ModalBasis& basis) {
   const double length = basis.length();
   if (!lies_on_bat(scene.z, length)) reject_off_bat("z", scene.z, length);
   require_finite("ball_speed", scene.ball_speed);
-  require_finite("omega", scene.swing.omega);
+  if (!valid_omega(scene.swing.omega)) reject("omega", scene.swing.omega, std::string("expected ") + omega_expected);
   require_finite(scene.swing.about_center ? "center" : "cm_speed",
                  scene.swing.about_center ? scene.swing.center : scene.swing.cm_speed);
-  require_positive("ball.mass", scene.ball.mass);
-  require_positive("ball.radius", scene.ball.radius);
-  require_positive("k1", scene.ball.k1);
-  require_positive("a", scene.ball.a);
-  if (!(scene.ball.e0 > 0 && scene.ball.e0 <= 1)) reject("e0", scene.ball.e0, "must lie in (0, 1]");
+  // The ball's ranges, as a [ball] table and a study's keys take them (ball_tests.hpp).
+  if (const auto outside = ball_out_of_range(scene.ball)) reject(outside->key, outside->value, outside->expected());
   if (scene.ball.speed_dependent()) {
     require_finite("cor_slope", scene.ball.cor_slope);
     if (!(scene.ball.cor_speed >= 0 && scene.ball.cor_speed <= max_cor_law_speed))
       reject("cor_speed", scene.ball.cor_speed, "must lie in [0, 100] m/s");
     for (const double v : {0.0, max_cor_law_speed})
-      if (!(scene.ball.cor_at(v) > 0 && scene.ball.cor_at(v) <= 1))
+      if (!in_range(ball_cor_range, scene.ball.cor_at(v)))
         reject("cor_slope", scene.ball.cor_slope,
-               "gives a COR outside (0, 1] at " + std::to_string(v) + " m/s: not a physical ball");
+               "gives a COR of " + detail::format_number(scene.ball.cor_at(v)) + " at " + detail::format_number(v) +
+                   " m/s: not a physical ball (expected " + range_text(ball_cor_range) + ")");
   }
   require_positive("dt", scene.integrator.dt);
   require_positive("tolerance", scene.integrator.tolerance);

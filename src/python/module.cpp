@@ -201,6 +201,11 @@ py::dict run_impacts(BatHandle& bat, const py::dict& scalars, const py::dict& ar
   std::vector<std::pair<int, const double*>> data;
   for (const auto& [which, column] : columns) data.emplace_back(which, column.data());
 
+  for (py::ssize_t i = 0; i < n; ++i) {  // every point's ball in its ranges before any point runs
+    ImpactScene scene = base.scene;
+    for (const auto& [which, values] : data) set_point_argument(scene, which, values[i]);
+    check_point_ranges(scene);
+  }
   const std::size_t width = impacts_outputs.size();
   std::vector<double> rows(static_cast<std::size_t>(n) * width);
   std::vector<int> status(n), contacts(n), kept(n);

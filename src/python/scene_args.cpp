@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 
 #include "sweetspot/ball/ball_file.hpp"
+#include "sweetspot/ball/ball_tests.hpp"
 #include "sweetspot/impact/error_estimates.hpp"
 #include "sweetspot/impact/n2000_settings.hpp"
 #include "sweetspot/input_error.hpp"
@@ -58,6 +59,18 @@ Dimension dimension_named(const std::string& name) {
 }
 
 }  // namespace
+
+void check_point_ranges(const ImpactScene& scene, const std::set<std::string>& per_point) {
+  char value[32];
+  if (const auto outside = ball_out_of_range(scene.ball); outside && !per_point.contains(outside->key)) {
+    std::snprintf(value, sizeof value, "%.10g", outside->value);
+    throw InputError(outside->key + " " + value + ": " + outside->expected());
+  }
+  if (!valid_omega(scene.swing.omega) && !per_point.contains("omega")) {
+    std::snprintf(value, sizeof value, "%.10g", scene.swing.omega);
+    throw InputError(std::string("omega ") + value + ": expected " + omega_expected);
+  }
+}
 
 std::optional<double> real_number(const py::handle& value) {
   // A complex number would lose its imaginary part, a bool read as 0 or 1: neither is a value.
@@ -156,6 +169,7 @@ SceneArgs scene_args(const py::dict& args, const std::set<std::string>& per_poin
   for (std::size_t k = 0; k < names.size(); ++k)
     if (has(names[k].c_str()))
       set_point_argument(s, static_cast<int>(k), point_number(names[k], get(names[k].c_str())));
+  check_point_ranges(s, per_point);
   if (!given.contains("z")) throw InputError("impact: z is required");
   if (!given.contains("ball_speed")) throw InputError("impact: ball_speed is required");
   const bool cm = given.contains("cm_speed"), center = given.contains("center");

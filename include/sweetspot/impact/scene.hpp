@@ -29,6 +29,14 @@ inline constexpr const char* step_accuracy_expected =
 inline constexpr const char* accuracy_expected =
     "a number from 1e-7 to 0.1 (total relative vf error: slicing, modes and step)";
 
+// What a swing's omega must be, wherever it is given (--omega, a study's omega, omega=, an
+// optimisation's [player]): v_bat(z) = V_cm + Omega (z - z_cm) with +y toward the ball, so a swing
+// turns the barrel toward the ball at Omega >= 0 (N2000's 51 and 56 rad/s; 0 for a bat at rest or
+// a push). A negative Omega swings it backwards, away from the pitch: no scene of a bat.
+inline constexpr const char* omega_expected =
+    "a finite angular speed >= 0 (the swing turns the barrel toward the ball; a negative omega swings it backwards)";
+inline bool valid_omega(double omega) { return std::isfinite(omega) && omega >= 0; }
+
 inline constexpr int all_modes = -1;
 // Keep the modes the collision can excite (see mode_selection.hpp), within mode_tolerance.
 inline constexpr int auto_modes = -2;
