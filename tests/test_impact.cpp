@@ -282,9 +282,9 @@ TEST_CASE("The impact command rejects bad input with exit status 2", "[impact][i
   const Case cases[] = {
       {bat + " --z 0.95 --ball-speed 40" + swing, "z = 0.95"},
       {bat + " --z 0.7 --ball-speed nan" + swing, "ball_speed = nan"},
-      {bat + " --z 0.7 --ball-speed 40 --e0 1.5" + swing, "e0 = 1.5"},
-      {bat + " --z 0.7 --ball-speed 40 --a -1" + swing, "a = -1"},
-      {bat + " --z 0.7 --ball-speed 40 --k1 0" + swing, "k1 = 0"},
+      {bat + " --z 0.7 --ball-speed 40 --e0 1.5" + swing, "--e0 1.5: expected a COR in [0.05, 1]"},
+      {bat + " --z 0.7 --ball-speed 40 --a -1" + swing, "--a -1: expected an exponent a in [0.5, 3]"},
+      {bat + " --z 0.7 --ball-speed 40 --k1 0" + swing, "--k1 0: expected a stiffness k1"},
       {bat + " --z 0.7 --ball-speed 40 --dt 0" + swing, "--dt 0: expected a step >= 5e-09 s"},
       {bat + " --z 0.7 --ball-speed 40 --modes lots" + swing, "--modes lots"},
       {bat + " --z 0.7 --ball-speed 40 --omega 51", "--cm-speed or as --center"},

@@ -90,3 +90,13 @@ TEST_CASE("The commands refuse an impractical solve with one line naming the opt
   study.dir.write("study.toml", text);
   require_refused(run_program("run " + study.study.string()), {"key 'scene.modes' = \"all\"", "2048 slices", "1024"});
 }
+
+// Issue 24: "a length typed in mm (length = 838.2) is silently cut into 4096 slices". The bounds
+// table (parameter_bounds.cpp) refuses it before any slice is cut.
+TEST_CASE("A bat length typed in millimetres is refused, not cut into slices", "[large_slices][bounds]") {
+  TempDir dir;
+  std::string text = file_text(alloy_file);
+  text.replace(text.find("length = 0.8382"), 15, "length = 838.2");
+  require_refused(run_program("modes " + dir.write("mm.toml", text).string()),
+                  {"mm.toml: key 'length': value 838.2", "0.001 to 2 m"});
+}

@@ -228,7 +228,7 @@ TEST_CASE("A study refuses a quantity of the wrong dimension, an unknown unit, g
       {"z = \"nan in\"", "key 'scene.z' = \"nan in\": expected a length"},
       {"z = \"twenty-eight inches\"", "key 'scene.z' = \"twenty-eight inches\": expected a length"},
       {"ball_mass = \"5 in\"", "key 'scene.ball_mass' = \"5 in\": expected a mass in [0.001, 10] kg, as a [ball] table takes it (a number in kg"},
-      {"e0 = \"0.5 m\"", "key 'scene.e0' = \"0.5 m\" (string): expected a COR in [0.05, 1]"},
+      {"e0 = \"0.5 m\"", "key 'scene.e0' = \"0.5 m\" (string): expected a COR, a number in [0.05, 1]"},
       {"e_a_speed = \"40 rad/s\"", "key 'scene.e_a_speed' = \"40 rad/s\": expected a speed > 0 (the speed e_A is "
                                    "taken at for bbs_linear) (a number in m/s"},
   };

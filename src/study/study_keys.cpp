@@ -45,7 +45,7 @@ constexpr KeySpec keys[] = {
     // The rig of a certification study: the standard, and its ball where the study overrides it.
     {"standard", Type::standard, "\"bbcor\", \"besr\" or \"bpf\"", any,
      [](GridPoint& p, double x) { p.standard = static_cast<std::size_t>(x); }, certification, 0, false},
-    {"rig_e0", Type::number, "a COR in [0.05, 1] (the rig ball's; default the standard's)", ball_cor,
+    {"rig_e0", Type::number, "a COR, a number in [0.05, 1] (the rig ball's; default the standard's)", ball_cor,
      [](GridPoint& p, double x) { p.rig_e0 = x; }, certification},
     {"rig_ball_speed", Type::number, "a finite speed > 0 (default the standard's)", positive,
      [](GridPoint& p, double x) { p.rig_ball_speed = x; }, certification, 0, true, Dimension::speed},
@@ -54,7 +54,7 @@ constexpr KeySpec keys[] = {
     // The wall takes only speeds > 0: check_wall_speeds.
     {"ball_speed", Type::number, "a finite speed", finite,
      [](GridPoint& p, double x) { p.scene.ball_speed = x; }, ball_kinds, ball_kinds, true, Dimension::speed},
-    {"e0", Type::number, "a COR in [0.05, 1], as a [ball] table takes it", ball_cor,
+    {"e0", Type::number, "a COR, a number in [0.05, 1], as a [ball] table takes it", ball_cor,
      [](GridPoint& p, double x) { p.scene.ball.e0 = x; },
      ball_kinds},
     {"ball_mass", Type::number, "a mass in [0.001, 10] kg, as a [ball] table takes it", ball_mass,
