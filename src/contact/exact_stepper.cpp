@@ -191,30 +191,10 @@ DampedQuadrature damped_quadrature(int mode, double w, double zeta, double h, co
   return d;
 }
 
-// Steps of the lengths a run reuses (nominal, split) meet the same frequencies again and again
-// even when the kept modes differ from impact to impact (modes = auto), so each thread remembers
-// every mode's coefficients by (omega, h, past ratio).
-const ModeCoefficients& memoized_coefficients(double w, double h, double past_ratio, const Basis& b) {
-  struct Key {
-    double w, h, past_ratio;
-    bool operator==(const Key&) const = default;
-  };
-  struct Hash {
-    std::size_t operator()(const Key& k) const {
-      return (std::hash<double>()(k.w) * 31 + std::hash<double>()(k.h)) * 31 + std::hash<double>()(k.past_ratio);
-    }
-  };
-  thread_local std::unordered_map<Key, ModeCoefficients, Hash> memo;
-  if (memo.size() > 100000) memo.clear();  // bounded: a long run over many bases
-  const auto [it, inserted] = memo.try_emplace(Key{w, h, past_ratio});
-  if (inserted) it->second = mode_coefficients(w, h, b);
-  return it->second;
-}
-
-// A damped mode's step response and dissipation quadrature, remembered as memoized_coefficients
-// remembers an undamped mode's: a damped bat (Material::loss_factor) damps every vibrational mode,
-// whose closed forms (an exponential, a sine and a cosine at the end and at 8 Gauss nodes) would
-// otherwise be computed anew for every kept set of modes a run meets.
+// A damped mode's step response and dissipation quadrature, remembered by (omega, zeta, h, past
+// ratio) for the step lengths that recur: a damped bat (Material::loss_factor) damps every
+// vibrational mode, whose closed forms (an exponential, a sine and a cosine at the end and at 8
+// Gauss nodes) would otherwise be computed anew for every kept set of modes a run meets.
 struct DampedCoefficients {
   ModeCoefficients end;
   DampedQuadrature quadrature;  // its `mode` set by the caller; empty when not asked
@@ -247,8 +227,14 @@ const DampedCoefficients& memoized_damped_coefficients(double w, double zeta, do
 }  // namespace
 
 ModeResponse::ModeResponse(const Eigen::ArrayXd& w, const Eigen::ArrayXd& zeta, double step, double ball_mass,
-                           double past, bool memoize, bool with_quadrature)
-    : h(step), past_ratio(past), omega(w), damping(zeta), quadrature(with_quadrature) {
+                           double past, bool with_quadrature, bool remember_damped) {
+  fill(w, zeta, step, ball_mass, past, with_quadrature, remember_damped);
+}
+
+void ModeResponse::fill(const Eigen::ArrayXd& w, const Eigen::ArrayXd& zeta, double step, double ball_mass,
+                        double past, bool with_quadrature, bool remember_damped) {
+  h = step, past_ratio = past, omega = w, damping = zeta, quadrature = with_quadrature;
+  damped.clear();
   const int n = static_cast<int>(omega.size());
   c.resize(n), sn.resize(n), w2sn.resize(n), cv.resize(n), d.resize(n, data_count), q.resize(n, data_count);
   const Basis b = interpolant_basis(past_ratio, h);
@@ -260,15 +246,14 @@ ModeResponse::ModeResponse(const Eigen::ArrayXd& w, const Eigen::ArrayXd& zeta, 
     const bool damped_mode = damping.size() && damping(i) != 0;
     if (damped_mode) {
       const DampedCoefficients computed =
-          memoize ? DampedCoefficients{} : damped_coefficients(omega(i), damping(i), h, b, quadrature);
+          remember_damped ? DampedCoefficients{} : damped_coefficients(omega(i), damping(i), h, b, quadrature);
       const DampedCoefficients& m =
-          memoize ? memoized_damped_coefficients(omega(i), damping(i), h, past_ratio, b, quadrature) : computed;
+          remember_damped ? memoized_damped_coefficients(omega(i), damping(i), h, past_ratio, b, quadrature) : computed;
       set_mode(i, m.end);
       if (quadrature) damped.push_back(m.quadrature), damped.back().mode = i;
       continue;
     }
-    const ModeCoefficients computed = memoize ? ModeCoefficients{} : mode_coefficients(omega(i), h, b);
-    set_mode(i, memoize ? memoized_coefficients(omega(i), h, past_ratio, b) : computed);
+    set_mode(i, mode_coefficients(omega(i), h, b));
   }
   const ModeCoefficients ball = mode_coefficients(0, h, b);
   for (int j = 0; j < data_count; ++j) {
@@ -294,8 +279,8 @@ namespace {
 // The responses at the nominal step and at its split parts are the same for every impact
 // that keeps the same modes (only the mode shapes at the contact differ), so each thread keeps
 // them, keyed by step, past ratio, ball mass and frequencies. With modes = auto the kept set
-// varies from impact to impact, and event steps vary too; the cache starts over when it grows
-// large.
+// varies from impact to impact; the cache starts over when it grows large. Event steps, whose
+// lengths never recur, are not kept (ExactStepper::event_coefficients).
 std::shared_ptr<const ModeResponse> cached_response(const Eigen::ArrayXd& omega, const Eigen::ArrayXd& damping,
                                                     std::size_t omega_key, double h, double ball_mass,
                                                     double past_ratio, bool quadrature) {
@@ -314,7 +299,7 @@ std::shared_ptr<const ModeResponse> cached_response(const Eigen::ArrayXd& omega,
   thread_local std::size_t stored = 0;  // doubles held: at most about 32 MB per thread
   if (stored > 4'000'000) cache.clear(), stored = 0;
   stored += (free_count + 2 * data_count) * omega.size();
-  auto response = std::make_shared<const ModeResponse>(omega, damping, h, ball_mass, past_ratio, true, quadrature);
+  auto response = std::make_shared<const ModeResponse>(omega, damping, h, ball_mass, past_ratio, quadrature, true);
   cache.emplace(key, std::make_pair(ball_mass, response));
   return response;
 }
@@ -346,6 +331,13 @@ const StepCoefficients& ExactStepper::coefficients(double h, double past_ratio) 
       psi2_,
       state_.compliance());
   return kept_.back();
+}
+
+StepCoefficients ExactStepper::event_coefficients(double h) {
+  // One per thread: an event step's response is made and used within one call of locate().
+  thread_local const std::shared_ptr<ModeResponse> scratch = std::make_shared<ModeResponse>();
+  scratch->fill(state_.body().omega.array(), damping_, h, state_.ball_mass(), 0, options_.damping_loss, false);
+  return StepCoefficients(scratch, psi2_, state_.compliance());
 }
 
 double ExactStepper::past_ratio(const Eigen::VectorXd& y, double h, const ContactForce& law) const {
@@ -394,8 +386,7 @@ double ExactStepper::locate(const Eigen::VectorXd& y, double h, const ContactFor
     }
   }
   if (hi >= 1) return h;  // `out` already is the state at the end of the step
-  // The event step ends on a 1/4096 grid of the step just past the root, so its response recurs
-  // from impact to impact and is kept. Where it lands (within h/4096, ~2 ns at 10 us) changes
+  // The event step ends on a 1/4096 grid of the step just past the root. Where it lands (within h/4096, ~2 ns at 10 us) changes
   // nothing that matters: the force is stationary there (F' = 0 at maximum compression, F = 0
   // at separation) and the loop's energy is exact anyway. Separation keeps the root's own time,
   // for the contact time; free flight from there is exact.
@@ -403,7 +394,7 @@ double ExactStepper::locate(const Eigen::VectorXd& y, double h, const ContactFor
   if (fraction >= 1) return h;
   // Its length is new at every impact, so its response is computed afresh: the cubic's, in one
   // piece (the quintic's would need its own basis, and a split step three responses).
-  advance(coefficients(fraction * h, 0), y, law, out);
+  advance(event_coefficients(fraction * h), y, law, out);
   return event == ContactEvent::separation ? hi * h : fraction * h;
 }
 
