@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "contact/damped_mode.hpp"
+#include "contact/mode_kernels.hpp"
 
 namespace sweetspot::detail {
 
@@ -242,18 +243,22 @@ void ModeResponse::fill(const Eigen::ArrayXd& w, const Eigen::ArrayXd& zeta, dou
     c(i) = m[0], sn(i) = m[1], w2sn(i) = m[2], cv(i) = m[3];
     for (int j = 0; j < data_count; ++j) d(i, j) = m[free_count + j], q(i, j) = m[free_count + data_count + j];
   };
-  for (int i = 0; i < n; ++i) {
-    const bool damped_mode = damping.size() && damping(i) != 0;
-    if (damped_mode) {
+  // Every mode as if undamped, all at once; the damped ones are then made over.
+  InterpolantBasis basis;
+  for (int j = 0; j < data_count; ++j)
+    for (int k = 0; k < powers; ++k) basis[j][k] = b(j, k);
+  ResponseColumns columns{c.data(), sn.data(), w2sn.data(), cv.data(), {}, {}};
+  for (int j = 0; j < data_count; ++j) columns.d[j] = d.col(j).data(), columns.q[j] = q.col(j).data();
+  undamped_responses(omega.data(), n, h, basis, columns);
+  for (int i = 0; damping.size() && i < n; ++i) {
+    if (damping(i) != 0) {
       const DampedCoefficients computed =
           remember_damped ? DampedCoefficients{} : damped_coefficients(omega(i), damping(i), h, b, quadrature);
       const DampedCoefficients& m =
           remember_damped ? memoized_damped_coefficients(omega(i), damping(i), h, past_ratio, b, quadrature) : computed;
       set_mode(i, m.end);
       if (quadrature) damped.push_back(m.quadrature), damped.back().mode = i;
-      continue;
     }
-    set_mode(i, mode_coefficients(omega(i), h, b));
   }
   const ModeCoefficients ball = mode_coefficients(0, h, b);
   for (int j = 0; j < data_count; ++j) {
