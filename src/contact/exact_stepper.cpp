@@ -420,8 +420,21 @@ double end_compression(const StepCoefficients& k, const ContactForce& law, doubl
                        double guess) {
   if (u_known <= 0) return u_known;  // no force can arise: the ball is clear all step
   const double e = law.exponent();
+  // The force at the first iterate from the law (a pow), at the others, close to it, from its
+  // binomial series: F(u) = F(u_ref) (1 + x)^e, x = u / u_ref - 1, which to the 6th power in x
+  // is exact to round-off while |e x| <= 1e-3 (the rest is below (e x)^7 / 7!). Newton's steps
+  // from a good guess are that small: one pow a step instead of one an iteration.
+  double u_ref = -1, f_ref = 0;
+  const auto force = [&](double u) {
+    const double x = (u - u_ref) / u_ref;
+    if (u_ref > 0 && std::abs(e * x) <= 1e-3)
+      return f_ref * (1 + e * x * (1 + (e - 1) / 2 * x * (1 + (e - 2) / 3 * x * (1 + (e - 3) / 4 * x *
+                                   (1 + (e - 4) / 5 * x * (1 + (e - 5) / 6 * x))))));
+    u_ref = u, f_ref = law(u);
+    return f_ref;
+  };
   const auto g = [&](double u, double& slope) {
-    const double f = law(u), inverse_u = 1 / u, stiffness = e * f * inverse_u;
+    const double f = force(u), inverse_u = 1 / u, stiffness = e * f * inverse_u;
     const double stiffness_rate = (e - 1) * stiffness * inverse_u;
     const double inverse_denominator = 1 / (1 + k.hD * stiffness), numerator = du_known - k.hC * f;
     const double rate = stiffness * numerator * inverse_denominator;
@@ -439,11 +452,8 @@ double end_compression(const StepCoefficients& k, const ContactForce& law, doubl
     const double value = g(u, slope);
     (value > 0 ? hi : lo) = u;
     double next = u - value / slope;
-    // The force at `next` is F(u) (1 + x)^e, x = (next - u) / u, to second order: exact to
-    // round-off at such small x.
     if (std::abs(next - u) <= converged * u) {
-      const double x = (next - u) / u;
-      law.remember(next, law(u) * (1 + e * x * (1 + (e - 1) / 2 * x)));
+      law.remember(next, force(next));
       return next;
     }
     if (hi - lo <= 1e-15 * hi) return next;
