@@ -6,7 +6,11 @@
 #include <vector>
 
 #include "contact/mode_kernels.hpp"
+#include "program.hpp"
+#include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/impact/impact.hpp"
 
+using namespace sweetspot;
 using namespace sweetspot::detail;
 
 namespace {
@@ -46,8 +50,8 @@ TEST_CASE("The modes' responses to t^k agree with their integrals within 1e-13 a
   for (double xi : x) omega.push_back(xi / h);
   const int n = static_cast<int>(omega.size());
   // Each datum weights one power alone: d_j = P_j, q_j = Q_j.
-  InterpolantBasis identity{};
-  for (int j = 0; j < 6; ++j) identity[j][j] = 1;
+  double identity[36] = {};  // row-major
+  for (int j = 0; j < 6; ++j) identity[j * 6 + j] = 1;
   std::vector<double> c(n), sn(n), w2sn(n), cv(n), d(6 * n), q(6 * n);
   ResponseColumns out{c.data(), sn.data(), w2sn.data(), cv.data(), {}, {}};
   for (int j = 0; j < 6; ++j) out.d[j] = d.data() + j * n, out.q[j] = q.data() + j * n;
@@ -68,5 +72,79 @@ TEST_CASE("The modes' responses to t^k agree with their integrals within 1e-13 a
       CHECK(std::abs(d[k * n + i] - static_cast<double>(p_ref[k] * std::pow(h, k + 2))) <= 1e-13 * p_scale);
       CHECK(std::abs(q[k * n + i] - static_cast<double>(q_ref[k] * std::pow(h, k + 1))) <= 1e-13 * q_scale);
     }
+  }
+}
+
+namespace {
+
+// What every path the processor has gives for the same work, compared with what SSE2 gives.
+template <class Work>
+void compare_paths(Work work) {
+  const VectorPath chosen = vector_path();
+  REQUIRE(use_vector_path(VectorPath::sse2));
+  const auto reference = work();
+  int compared = 0;
+  for (VectorPath path : {VectorPath::avx2, VectorPath::avx512}) {
+    if (!use_vector_path(path)) continue;
+    INFO("path " << to_string(path));
+    CHECK(work() == reference);
+    ++compared;
+  }
+  use_vector_path(chosen);
+  WARN(compared << " wider path(s) compared with SSE2 on this processor");
+}
+
+std::vector<double> ramp(int n, double first, double step) {
+  std::vector<double> v(n);
+  for (int i = 0; i < n; ++i) v[i] = first + step * i + 0.3 * std::sin(7.0 * i);
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("Every vector path gives the modes' responses and steps bit for bit as SSE2 does", "[exact]") {
+  for (int n : {1, 7, 8, 9, 30, 168}) {
+    INFO(n << " modes");
+    compare_paths([n] {
+      const std::vector<double> omega = ramp(n, 0, 4e4);  // w h from 0 to past 4 at h = 1e-5
+      double basis[36];
+      for (int i = 0; i < 36; ++i) basis[i] = std::cos(1.0 + i);
+      std::vector<double> out(16 * n);
+      ResponseColumns columns{out.data(), out.data() + n, out.data() + 2 * n, out.data() + 3 * n, {}, {}};
+      for (int j = 0; j < 6; ++j) columns.d[j] = out.data() + (4 + j) * n, columns.q[j] = out.data() + (10 + j) * n;
+      undamped_responses(omega.data(), n, 1e-5, basis, columns);
+      // A step with those responses, from a state and data of every sign and size.
+      const std::vector<double> a0 = ramp(n, -1e-3, 3e-5), v0 = ramp(n, 0.2, -0.01), psi = ramp(n, 1.5, -0.02),
+                                psi_w2 = ramp(n, 10, 5);
+      std::vector<double> a(n), v(n);
+      const StepArrays s{a0.data(), v0.data(), columns.c, columns.sn, columns.w2sn, columns.cv, psi.data(),
+                         psi_w2.data(), {columns.d[0], columns.d[1], columns.d[2], columns.d[3]},
+                         {columns.q[0], columns.q[1], columns.q[2], columns.q[3]}, a.data(), v.data()};
+      const StepSums sums = step_known(n, s, {1200, -3e6, 2500, 4e7});
+      step_end(n, a.data(), v.data(), psi.data(), columns.d[4], columns.d[5], columns.q[4], columns.q[5], 3100, -2e7);
+      out.insert(out.end(), a.begin(), a.end());
+      out.insert(out.end(), v.begin(), v.end());
+      out.insert(out.end(), {sums.psi_a, sums.psi_v, sums.psi_w2a});
+      return out;
+    });
+  }
+}
+
+TEST_CASE("Every vector path gives whole impacts bit for bit as SSE2 does: modes auto and all, a damped bat",
+          "[exact]") {
+  for (const char* file : {"studies/bats/r161.toml", "studies/bats/maple_271.toml"}) {
+    INFO(file);
+    const ModalBasis basis = compute_modes(load_bat(source_path(file)), BeamTheory::timoshenko);
+    compare_paths([&basis] {
+      std::vector<double> results;
+      for (int modes : {auto_modes, all_modes})
+        for (double z : {0.45, 0.62, 0.71}) {
+          ImpactScene s;  // the defaults: exact stepping, modes auto
+          s.z = z, s.ball_speed = 40, s.swing = {51, true, 0, 0.09}, s.vibrational_modes = modes;
+          const ImpactResult r = simulate_impact(basis, s);
+          results.insert(results.end(), {r.vf, r.collision_time, r.peak_force, r.energy.vibration, r.energy.damped});
+        }
+      return results;
+    });
   }
 }

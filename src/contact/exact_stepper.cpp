@@ -244,9 +244,9 @@ void ModeResponse::fill(const Eigen::ArrayXd& w, const Eigen::ArrayXd& zeta, dou
     for (int j = 0; j < data_count; ++j) d(i, j) = m[free_count + j], q(i, j) = m[free_count + data_count + j];
   };
   // Every mode as if undamped, all at once; the damped ones are then made over.
-  InterpolantBasis basis;
+  double basis[data_count * powers];  // row-major
   for (int j = 0; j < data_count; ++j)
-    for (int k = 0; k < powers; ++k) basis[j][k] = b(j, k);
+    for (int k = 0; k < powers; ++k) basis[j * powers + k] = b(j, k);
   ResponseColumns columns{c.data(), sn.data(), w2sn.data(), cv.data(), {}, {}};
   for (int j = 0; j < data_count; ++j) columns.d[j] = d.col(j).data(), columns.q[j] = q.col(j).data();
   undamped_responses(omega.data(), n, h, basis, columns);
@@ -486,16 +486,14 @@ double ExactStepper::damped_dissipation(const ModeResponse& m, const Eigen::Vect
 
 // One pass over the modes for what is known before the end force (free rotation plus the
 // response to the past and start data), summing the contact's u and u' on the way; a second adds
-// the response to F1 and F1'. Plain loops: Eigen would make a pass per expression and one per sum.
+// the response to F1 and F1' (mode_kernels.hpp: Eigen would make a pass per expression and one
+// per sum, and its sums' order would change with the vector unit).
 void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, const ContactForce& law,
                            Eigen::VectorXd& out) {
   const ModeResponse& m = *k.response;
   const int n = state_.modes();
   out.resize(y.size());
-  const double *a = y.data() + 2, *v = a + n;
   double *out_a = out.data() + 2, *out_v = out_a + n;
-  const double *c = m.c.data(), *sn = m.sn.data(), *w2sn = m.w2sn.data(), *cv = m.cv.data(), *psi = psi_.data(),
-               *psi_w2 = psi_w2_.data();
   const auto d = [&m](Datum j) { return m.d.col(j).data(); };
   const auto q = [&m](Datum j) { return m.q.col(j).data(); };
 
@@ -506,16 +504,10 @@ void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, 
   const bool quintic = m.past_ratio > 0;
   const double fp = quintic ? past_.force : 0.0, rp = quintic ? past_.rate : 0.0;
 
-  const double *dP = d(past_force), *dQ = d(past_rate), *dA = d(start_force), *dB = d(start_rate);
-  const double *qP = q(past_force), *qQ = q(past_rate), *qA = q(start_force), *qB = q(start_rate);
-  double psi_a = 0, psi_v = 0, psi_w2a = 0;
-#pragma omp simd reduction(+ : psi_a, psi_v, psi_w2a)
-  for (int i = 0; i < n; ++i) {
-    const double a_known = c[i] * a[i] + sn[i] * v[i] - psi[i] * (fp * dP[i] + rp * dQ[i] + f0 * dA[i] + r0 * dB[i]);
-    const double v_known = cv[i] * v[i] - w2sn[i] * a[i] - psi[i] * (fp * qP[i] + rp * qQ[i] + f0 * qA[i] + r0 * qB[i]);
-    out_a[i] = a_known, out_v[i] = v_known;
-    psi_a += psi[i] * a_known, psi_v += psi[i] * v_known, psi_w2a += psi_w2[i] * a[i];
-  }
+  const StepArrays arrays{y.data() + 2, y.data() + 2 + n, m.c.data(), m.sn.data(), m.w2sn.data(), m.cv.data(),
+                          psi_.data(), psi_w2_.data(), {d(past_force), d(past_rate), d(start_force), d(start_rate)},
+                          {q(past_force), q(past_rate), q(start_force), q(start_rate)}, out_a, out_v};
+  const auto [psi_a, psi_v, psi_w2a] = step_known(n, arrays, {fp, rp, f0, r0});
   const double s_known = y(0) + y(1) * m.h + fp * m.ball_d[past_force] + rp * m.ball_d[past_rate] +
                          f0 * m.ball_d[start_force] + r0 * m.ball_d[start_rate];
   const double vb_known = y(1) + fp * m.ball_q[past_force] + rp * m.ball_q[past_rate] + f0 * m.ball_q[start_force] +
@@ -531,12 +523,7 @@ void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, 
 
   out(0) = s_known + f1 * m.ball_d[end_force] + r1 * m.ball_d[end_rate];
   out(1) = vb_known + f1 * m.ball_q[end_force] + r1 * m.ball_q[end_rate];
-  const double *dC = d(end_force), *dD = d(end_rate), *qC = q(end_force), *qD = q(end_rate);
-#pragma omp simd
-  for (int i = 0; i < n; ++i) {
-    out_a[i] -= psi[i] * (f1 * dC[i] + r1 * dD[i]);
-    out_v[i] -= psi[i] * (f1 * qC[i] + r1 * qD[i]);
-  }
+  step_end(n, out_a, out_v, psi_.data(), d(end_force), d(end_rate), q(end_force), q(end_rate), f1, r1);
   if (const int k = state_.dissipated_index(); k >= 0)
     out(k) = y(k) + damped_dissipation(m, y, {fp, rp, f0, r0, f1, r1});
   // The end's u and u' follow from the sums already made, without another pass over the modes.

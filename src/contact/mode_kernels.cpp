@@ -1,83 +1,107 @@
+// Which build of the kernels runs: the widest vector unit the processor has, chosen once (GCC's
+// and Clang's __builtin_cpu_supports), or the one a test asks for.
 #include "contact/mode_kernels.hpp"
 
-#include <cmath>
+#include <atomic>
+#include <cstdlib>
+#include <cstring>
 
 namespace sweetspot::detail {
 
+// The paths' kernels, each in its own namespace (mode_kernels.inc).
+#define SWEETSPOT_DECLARE_KERNELS(path)                                                                         \
+  namespace path {                                                                                            \
+  void undamped_responses(const double* omega, int n, double h, const double* basis, const ResponseColumns& out); \
+  StepSums step_known(int n, const StepArrays& s, const double (&data)[4]);                                   \
+  void step_end(int n, double* a, double* v, const double* psi, const double* dC, const double* dD,            \
+                const double* qC, const double* qD, double f1, double r1);                                    \
+  }
+SWEETSPOT_DECLARE_KERNELS(sse2)
+#ifdef SWEETSPOT_X86_DISPATCH
+SWEETSPOT_DECLARE_KERNELS(avx2)
+SWEETSPOT_DECLARE_KERNELS(avx512)
+#endif
+#undef SWEETSPOT_DECLARE_KERNELS
+
 namespace {
 
-constexpr int powers = interpolant_powers, data = interpolant_data;
+struct Kernels {
+  VectorPath path;
+  decltype(&sse2::undamped_responses) undamped_responses;
+  decltype(&sse2::step_known) step_known;
+  decltype(&sse2::step_end) step_end;
+};
 
-// Terms of the series of p_5 and q_5 in y = -x^2 (x = w h < 4): the last one's weight, 16^15 /
-// 37!, is 1e-23 of the first's.
-constexpr int series_terms = 16;
+constexpr Kernels sse2_kernels{VectorPath::sse2, sse2::undamped_responses, sse2::step_known, sse2::step_end};
+#ifdef SWEETSPOT_X86_DISPATCH
+constexpr Kernels avx2_kernels{VectorPath::avx2, avx2::undamped_responses, avx2::step_known, avx2::step_end};
+constexpr Kernels avx512_kernels{VectorPath::avx512, avx512::undamped_responses, avx512::step_known,
+                                 avx512::step_end};
+#endif
 
-// 5! / (2j + first)! for j = 0 .. series_terms - 1.
-constexpr std::array<double, series_terms> series_coefficients(int first) {
-  std::array<double, series_terms> c{};
-  double factorial = 1;  // (2j + first)!
-  for (int m = 2; m <= first; ++m) factorial *= m;
-  for (int j = 0; j < series_terms; ++j) {
-    c[j] = 120 / factorial;
-    factorial *= (2 * j + first + 1) * (2 * j + first + 2);
-  }
-  return c;
+const Kernels* kernels_for(VectorPath path) {
+#ifdef SWEETSPOT_X86_DISPATCH
+  // The instruction sets the paths were built for (CMakeLists.txt): x86-64-v3 and -v4.
+  __builtin_cpu_init();
+  const bool v3 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi2");
+  const bool v4 = v3 && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+                  __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512vl") &&
+                  __builtin_cpu_supports("avx512cd");
+  if (path == VectorPath::avx512) return v4 ? &avx512_kernels : nullptr;
+  if (path == VectorPath::avx2) return v3 ? &avx2_kernels : nullptr;
+#endif
+  return path == VectorPath::sse2 ? &sse2_kernels : nullptr;
 }
-// p_5(x) = 5! sum_j y^j / (2j + 7)!,  q_5(x) = 5! sum_j y^j / (2j + 6)!.
-constexpr std::array<double, series_terms> p5_series = series_coefficients(7), q5_series = series_coefficients(6);
+
+// The widest path, or the one SWEETSPOT_VECTOR_PATH names (sse2, avx2 or avx512) if the
+// processor has it: to compare their speed.
+const Kernels* chosen() {
+  if (const char* name = std::getenv("SWEETSPOT_VECTOR_PATH"))
+    for (VectorPath path : {VectorPath::sse2, VectorPath::avx2, VectorPath::avx512})
+      if (std::strcmp(name, to_string(path)) == 0)
+        if (const Kernels* k = kernels_for(path)) return k;
+  for (VectorPath path : {VectorPath::avx512, VectorPath::avx2})
+    if (const Kernels* k = kernels_for(path)) return k;
+  return &sse2_kernels;
+}
+
+std::atomic<const Kernels*>& current() {
+  static std::atomic<const Kernels*> kernels{chosen()};
+  return kernels;
+}
 
 }  // namespace
 
-void undamped_responses(const double* omega, int n, double h, const InterpolantBasis& b, const ResponseColumns& out) {
-  // The sine and cosine first, as the library computes them (the free evolution is then that of
-  // any other path), into the columns the loop below reads them from.
-  for (int i = 0; i < n; ++i) {
-    const double x = omega[i] * h;
-    out.c[i] = std::cos(x);
-    out.sn[i] = std::sin(x);
+const char* to_string(VectorPath path) {
+  switch (path) {
+    case VectorPath::sse2: return "sse2";
+    case VectorPath::avx2: return "avx2";
+    case VectorPath::avx512: return "avx512";
   }
-  double hp[powers + 2] = {1};  // h^0 .. h^7
-  for (int k = 1; k < powers + 2; ++k) hp[k] = hp[k - 1] * h;
-  const double inverse[powers] = {0, 1, 1 / 2.0, 1 / 3.0, 1 / 4.0, 1 / 5.0};
-  double *c = out.c, *sn = out.sn, *w2sn = out.w2sn, *cv = out.cv;
-#pragma omp simd
-  for (int i = 0; i < n; ++i) {
-    const double w = omega[i], x = w * h, cos_x = c[i], sin_x = sn[i];
-    // Small w h: p_5, q_5 by Horner, then down to k = 0.
-    const double x2 = x * x, y = -x2;
-    double ps[powers], qs[powers];
-    ps[5] = p5_series[series_terms - 1], qs[5] = q5_series[series_terms - 1];
-    for (int j = series_terms - 2; j >= 0; --j) ps[5] = ps[5] * y + p5_series[j], qs[5] = qs[5] * y + q5_series[j];
-    for (int k = 5; k >= 1; --k) {
-      ps[k - 1] = qs[k] * inverse[k];
-      qs[k - 1] = (1 - x2 * ps[k]) * inverse[k];
-    }
-    // Large w h: up from k = 0 by parts.
-    const double w2 = w * w;
-    double pr[powers], qr[powers];
-    pr[0] = (1 - cos_x) / w2;
-    qr[0] = sin_x / w;
-    for (int k = 1; k < powers; ++k) {
-      qr[k] = k * pr[k - 1];
-      pr[k] = (hp[k] - k * qr[k - 1]) / w2;
-    }
-    const bool large = x >= 4;
-    double p[powers], q[powers];
-    for (int k = 0; k < powers; ++k) {
-      p[k] = large ? pr[k] : hp[k + 2] * ps[k];
-      q[k] = large ? qr[k] : hp[k + 1] * qs[k];
-    }
-    for (int j = 0; j < data; ++j) {
-      double dj = 0, qj = 0;
-      for (int k = 0; k < powers; ++k) dj += b[j][k] * p[k], qj += b[j][k] * q[k];
-      out.d[j][i] = dj;
-      out.q[j][i] = qj;
-    }
-    c[i] = cos_x;
-    sn[i] = w == 0 ? h : sin_x / w;
-    w2sn[i] = w * sin_x;
-    cv[i] = cos_x;
-  }
+  return "unknown";
+}
+
+VectorPath vector_path() { return current().load(std::memory_order_relaxed)->path; }
+
+bool vector_path_supported(VectorPath path) { return kernels_for(path) != nullptr; }
+
+bool use_vector_path(VectorPath path) {
+  const Kernels* k = kernels_for(path);
+  if (k) current().store(k, std::memory_order_relaxed);
+  return k != nullptr;
+}
+
+void undamped_responses(const double* omega, int n, double h, const double* basis, const ResponseColumns& out) {
+  current().load(std::memory_order_relaxed)->undamped_responses(omega, n, h, basis, out);
+}
+
+StepSums step_known(int n, const StepArrays& s, const double (&data)[4]) {
+  return current().load(std::memory_order_relaxed)->step_known(n, s, data);
+}
+
+void step_end(int n, double* a, double* v, const double* psi, const double* dC, const double* dD, const double* qC,
+              const double* qD, double f1, double r1) {
+  current().load(std::memory_order_relaxed)->step_end(n, a, v, psi, dC, dD, qC, qD, f1, r1);
 }
 
 }  // namespace sweetspot::detail
