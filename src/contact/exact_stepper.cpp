@@ -424,13 +424,13 @@ double end_compression(const StepCoefficients& k, const ContactForce& law, doubl
   // binomial series: F(u) = F(u_ref) (1 + x)^e, x = u / u_ref - 1, which to the 6th power in x
   // is exact to round-off while |e x| <= 1e-3 (the rest is below (e x)^7 / 7!). Newton's steps
   // from a good guess are that small: one pow a step instead of one an iteration.
-  double u_ref = -1, f_ref = 0;
+  double u_ref = -1, f_ref = 0, inverse_ref = 0;
   const auto force = [&](double u) {
-    const double x = (u - u_ref) / u_ref;
+    const double x = (u - u_ref) * inverse_ref;
     if (u_ref > 0 && std::abs(e * x) <= 1e-3)
       return f_ref * (1 + e * x * (1 + (e - 1) / 2 * x * (1 + (e - 2) / 3 * x * (1 + (e - 3) / 4 * x *
                                    (1 + (e - 4) / 5 * x * (1 + (e - 5) / 6 * x))))));
-    u_ref = u, f_ref = law(u);
+    u_ref = u, f_ref = law(u), inverse_ref = 1 / u;
     return f_ref;
   };
   const auto g = [&](double u, double& slope) {
@@ -446,13 +446,14 @@ double end_compression(const StepCoefficients& k, const ContactForce& law, doubl
   double lo = 0, hi = u_known, slope = 0;
   double u = guess > 0 && guess < u_known ? guess : u_known;  // from above, Newton does not overshoot
   // Newton converges quadratically: after a step of x u the error is about K x^2 u, K = u |g''| /
-  // 2 g' at most 1 + |e - 1| / 2 for the power law. It stops once that is below 1e-13 of u.
-  const double converged = std::sqrt(1e-13 / (1 + std::abs(e - 1) / 2));
+  // 2 g' at most 1 + |e - 1| / 2 for the power law. It stops once that is below 1e-13 of u:
+  // (x u)^2 K <= 1e-13 u^2, without a square root or a division.
+  const double k_bound = 1 + std::abs(e - 1) / 2;
   for (int iteration = 0; iteration < 100; ++iteration) {
     const double value = g(u, slope);
     (value > 0 ? hi : lo) = u;
     double next = u - value / slope;
-    if (std::abs(next - u) <= converged * u) {
+    if ((next - u) * (next - u) * k_bound <= 1e-13 * u * u) {
       law.remember(next, force(next));
       return next;
     }
