@@ -133,7 +133,10 @@ Basis basis_in_s(double past_ratio) {
 }
 
 Basis interpolant_basis(double past_ratio, double h) {
-  Basis b = basis_in_s(past_ratio);
+  // The cubic's (every event step's) is made once: an LU of its conditions per step cost more
+  // than the step.
+  static const Basis cubic = basis_in_s(0);
+  Basis b = past_ratio > 0 ? basis_in_s(past_ratio) : cubic;
   for (int k = 0; k < powers; ++k) b.col(k) /= std::pow(h, k);
   for (const Datum rate : {past_rate, start_rate, end_rate}) b.row(rate) *= h;
   return b;
