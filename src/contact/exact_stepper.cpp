@@ -418,7 +418,7 @@ double touch_stiffness(const ContactForce& law, double u_end) {
 
 // Solves for the end compression u1 with F1 = F(u1) and F1' = F'(u1) u1': Newton on
 // g(u) = u - u_known + gC F(u) + gD F1'(u), kept inside [0, u_known] where g changes sign.
-// `guess` is a prediction of u1 (the Taylor step from the start of the step).
+// `guess` is a prediction of u1 (advance: extrapolated from the past step, or a Taylor step).
 double end_compression(const StepCoefficients& k, const ContactForce& law, double u_known, double du_known,
                        double guess) {
   if (u_known <= 0) return u_known;  // no force can arise: the ball is clear all step
@@ -518,8 +518,24 @@ void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, 
                           r0 * m.ball_q[start_rate];
   const double u_known = psi_a - s_known, du_known = psi_v - vb_known;
 
-  const double ddu0 = -psi_w2a - f0 * (k.psi2_sum + 1 / state_.ball_mass());
-  const double guess = u0 + m.h * du0 + 0.5 * m.h * m.h * ddu0;
+  // The geometric compression's acceleration, then the ball's own: from u_ball + c F(u_ball) = u,
+  // u_ball'' (1 + c F') = u'' - c F'' u_ball'^2 (the same without a residual compliance c).
+  const double ddu_geometric = -psi_w2a - f0 * (k.psi2_sum + 1 / state_.ball_mass());
+  const double c = state_.compliance(), e = law.exponent();
+  const double ddu0 = c == 0 || u0 <= 0 ? ddu_geometric
+                                        : (ddu_geometric - c * e * (e - 1) * f0 / (u0 * u0) * du0 * du0) / (1 + c * k0);
+  // Newton's first iterate: with a past step, the end force extrapolated (the cubic through the
+  // past and start force and rate) and the compression the step's linear relation gives for it;
+  // it is mostly within what Newton's test accepts after one evaluation (one pow a step), where the
+  // Taylor guess from the start, which the modes' ringing puts off, took two. Without, that guess.
+  double guess = u0 + m.h * du0 + 0.5 * m.h * m.h * ddu0;
+  if (quintic) {
+    const double a = past_.h, t = m.h;
+    const double r1 = fp - f0 + r0 * a, r2 = rp - r0;  // p(t) = f0 + r0 t + c2 t^2 + c3 t^3
+    const double c3 = (r2 + 2 * r1 / a) / (a * a), c2 = r1 / (a * a) + c3 * a;
+    const double f1 = f0 + t * (r0 + t * (c2 + t * c3)), df1 = r0 + t * (2 * c2 + 3 * t * c3);
+    guess = u_known - k.gC * f1 - k.gD * df1;
+  }
   const double u1 = end_compression(k, law, u_known, du_known, guess);
   const double f1 = law(u1);
   const double stiffness = u1 > 0 ? law.exponent() * f1 / u1 : 0.0;
