@@ -394,10 +394,10 @@ double ExactStepper::locate(const Eigen::VectorXd& y, double h, const ContactFor
     }
   }
   if (hi >= 1) return h;  // `out` already is the state at the end of the step
-  // The event step ends on a 1/4096 grid of the step just past the root. Where it lands (within h/4096, ~2 ns at 10 us) changes
-  // nothing that matters: the force is stationary there (F' = 0 at maximum compression, F = 0
-  // at separation) and the loop's energy is exact anyway. Separation keeps the root's own time,
-  // for the contact time; free flight from there is exact.
+  // The event step ends on a 1/4096 grid of the step just past the root. Where it lands (within
+  // h/4096, ~2 ns at 10 us) changes nothing that matters: the force is stationary there (F' = 0
+  // at maximum compression, F = 0 at separation) and the loop's energy is exact anyway.
+  // Separation keeps the root's own time, for the contact time; free flight from there is exact.
   const double fraction = std::ceil(hi * event_grid) / event_grid;
   if (fraction >= 1) return h;
   // Its length is new at every impact, so its response is computed afresh: the cubic's, in one
