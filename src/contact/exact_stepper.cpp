@@ -237,7 +237,7 @@ ModeResponse::ModeResponse(const Eigen::ArrayXd& w, const Eigen::ArrayXd& zeta, 
 
 void ModeResponse::fill(const Eigen::ArrayXd& w, const Eigen::ArrayXd& zeta, double step, double ball_mass,
                         double past, bool with_quadrature, bool remember_damped) {
-  h = step, past_ratio = past, omega = w, damping = zeta, quadrature = with_quadrature;
+  h = step, past_ratio = past, omega = w, damping = zeta, quadrature = with_quadrature, this->ball_mass = ball_mass;
   damped.clear();
   const int n = static_cast<int>(omega.size());
   c.resize(n), sn.resize(n), w2sn.resize(n), cv.resize(n), d.resize(n, data_count), q.resize(n, data_count);
@@ -342,10 +342,30 @@ const StepCoefficients& ExactStepper::coefficients(double h, double past_ratio) 
 }
 
 StepCoefficients ExactStepper::event_coefficients(double h) {
-  // One per thread: an event step's response is made and used within one call of locate().
-  thread_local const std::shared_ptr<ModeResponse> scratch = std::make_shared<ModeResponse>();
-  scratch->fill(state_.body().omega.array(), damping_, h, state_.ball_mass(), 0, options_.damping_loss, false);
-  return StepCoefficients(scratch, psi2_, state_.compliance());
+  // A small table per thread whose slots are responses filled in place: an event step met again
+  // (a scene run again) finds its response; a new one takes its slot over, with no allocation once
+  // the slot has the size. (Keeping every event step grew maps with lengths that never recur.)
+  // A response is used within one call of locate() only, so a slot can be refilled at the next.
+  struct Slot {
+    std::size_t key = 0;
+    bool filled = false;
+    std::shared_ptr<ModeResponse> response = std::make_shared<ModeResponse>();
+  };
+  constexpr std::size_t slots = 64;
+  thread_local std::array<Slot, slots> table;
+  const Eigen::ArrayXd& omega = state_.body().omega.array();
+  const double mass = state_.ball_mass();
+  const std::size_t key = omega_key_ ^ std::hash<double>()(h) ^ (std::hash<double>()(mass) << 1);
+  Slot& slot = table[key % slots];
+  ModeResponse& r = *slot.response;
+  const bool same = slot.filled && slot.key == key && r.h == h && r.ball_mass == mass &&
+                    r.quadrature == options_.damping_loss && r.omega.size() == omega.size() && (r.omega == omega).all() &&
+                    r.damping.size() == damping_.size() && (r.damping == damping_).all();
+  if (!same) {
+    r.fill(omega, damping_, h, mass, 0, options_.damping_loss, false);
+    slot.key = key, slot.filled = true;
+  }
+  return StepCoefficients(slot.response, psi2_, state_.compliance());
 }
 
 double ExactStepper::past_ratio(const Eigen::VectorXd& y, double h, const ContactForce& law) const {

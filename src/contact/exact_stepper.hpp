@@ -41,6 +41,7 @@ struct DampedQuadrature {
 struct ModeResponse {
   double h = 0;
   double past_ratio = 0;
+  double ball_mass = 0;  // kg
   Eigen::ArrayXd omega, damping;
   Eigen::ArrayXd c, sn, w2sn, cv;
   Eigen::ArrayXXd d, q;
@@ -117,9 +118,9 @@ class ExactStepper {
   // The coefficients of a step whose length recurs (the nominal step, its split parts, halved
   // steps): kept for this impact, and their responses for the thread's later impacts.
   const StepCoefficients& coefficients(double h, double past_ratio);
-  // An event step's: its length is new at every impact, so its response is made in this thread's
-  // scratch memory, never kept (keeping them filled the thread's memory with lengths that never
-  // recur, an allocation and a cache miss each).
+  // An event step's: its length is new at every impact of a study, so its response is made in
+  // one slot of a small per-thread table, filled in place (keeping every one filled the thread's
+  // memory with lengths that never recur, an allocation and a cache miss each).
   StepCoefficients event_coefficients(double h);
   // Responses are kept per thread by frequencies, damping and step; the hash is made once.
   static std::size_t frequencies_key(const Eigen::ArrayXd& omega, const Eigen::ArrayXd& damping);
