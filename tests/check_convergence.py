@@ -2,7 +2,9 @@
 """Opens the dataset of `sweetspot convergence` with xarray (engine h5netcdf) as a user would and
 checks its layout: dims (integrator x setting), the integrator labels, every variable with units
 and long_name, NaN where a setting does not apply, the reference values as global attributes,
-and that every integrator's finest setting agrees with the reference.
+and that every integrator's finest setting agrees with the reference; and the accuracy sweep
+(dim accuracy_run): each stated accuracy met, its estimate bounding the error against the
+continuum.
 
 Usage: /usr/bin/python3 tests/check_convergence.py OUT.h5 SETTINGS (the length of the setting
 dimension). Prints "convergence ok" and exits 0 when all holds.
@@ -14,12 +16,15 @@ import xarray as xr
 
 path, settings = sys.argv[1], int(sys.argv[2])
 VARIABLES = {"step", "tolerance", "vf", "vf_error", "contact_time_error", "energy_error", "time_per_impact"}
+SWEEP = {"accuracy", "accuracy_slices", "accuracy_modes", "accuracy_step", "slicing_error", "modes_error",
+         "step_error", "total_error", "actual_error", "accuracy_time_per_impact"}
 
 with xr.open_dataset(path, engine="h5netcdf") as ds:
-    assert dict(ds.sizes) == {"integrator": 3, "setting": settings}, dict(ds.sizes)
+    assert set(ds.sizes) == {"integrator", "setting", "accuracy_run"}, dict(ds.sizes)
+    assert ds.sizes["integrator"] == 3 and ds.sizes["setting"] == settings, dict(ds.sizes)
     assert list(ds.integrator.values) == ["rk4", "exact", "dopri"], ds.integrator.values
     assert list(ds.setting.values) == list(range(settings)), ds.setting.values
-    assert set(ds.data_vars) == VARIABLES, set(ds.data_vars)
+    assert set(ds.data_vars) == VARIABLES | SWEEP, set(ds.data_vars)
     for name in VARIABLES | {"setting"}:
         assert ds[name].attrs["units"] and ds[name].attrs["long_name"], name
     # strings are no quantity: CF gives them no units
@@ -43,4 +48,16 @@ with xr.open_dataset(path, engine="h5netcdf") as ds:
     assert ds.attrs["reference_disagreement"] < 1e-8, ds.attrs["reference_disagreement"]
     dopri_vf = ds.vf.sel(integrator="dopri").dropna("setting")
     assert abs(float(dopri_vf[-1]) / ds.attrs["reference_vf"] - 1) < 1e-8, (dopri_vf.values, ds.attrs["reference_vf"])
+    # The sweep: the default settings first (no accuracy stated), then every accuracy met, each
+    # estimate bounding the actual error against the continuum, within 5x of it.
+    sweep = ds[sorted(SWEEP)]
+    assert np.isnan(sweep.accuracy[0]) and (sweep.accuracy[1:] > 0).all(), sweep.accuracy.values
+    for name in SWEEP:
+        assert ds[name].dims == ("accuracy_run",) and ds[name].attrs["long_name"], name
+    stated = sweep.isel(accuracy_run=slice(1, None))
+    assert (stated.total_error <= stated.accuracy).all(), (stated.total_error.values, stated.accuracy.values)
+    assert (sweep.total_error >= sweep.actual_error).all(), (sweep.total_error.values, sweep.actual_error.values)
+    assert (sweep.total_error <= 5 * np.maximum(sweep.actual_error, 1e-7)).all(), sweep.total_error.values
+    assert (sweep.accuracy_slices[1:] >= 4 * sweep.accuracy_slices[0]).all(), sweep.accuracy_slices.values
+    assert "continuum_vf" in ds.attrs
 print("convergence ok")

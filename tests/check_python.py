@@ -138,9 +138,17 @@ for call, fragments in [
         (lambda: sweetspot.impacts(bat, **swing, threads="4"), ["threads", "'4'"]),
         (lambda: sweetspot.impact(bat, **swing, dt=1e-5, accuracy=1e-4), ["dt", "accuracy"]),
         (lambda: sweetspot.impacts(bat, **swing, dt=1e-5, accuracy=1e-4), ["dt", "accuracy"]),
-        (lambda: sweetspot.impact(bat, **swing, accuracy=0), ["accuracy", "0", "> 0"]),
-        (lambda: sweetspot.impact(bat, **swing, accuracy=-1e-4), ["accuracy", "-0.0001", "> 0"]),
-        (lambda: sweetspot.impact(bat, **swing, accuracy=math.nan), ["accuracy", "nan", "> 0"]),
+        (lambda: sweetspot.impact(bat, **swing, step_accuracy=0), ["step_accuracy", "0", "> 0"]),
+        (lambda: sweetspot.impact(bat, **swing, step_accuracy=-1e-4), ["step_accuracy", "-0.0001", "> 0"]),
+        (lambda: sweetspot.impact(bat, **swing, step_accuracy=math.nan), ["step_accuracy", "nan", "> 0"]),
+        (lambda: sweetspot.impact(bat, **swing, dt=1e-5, step_accuracy=1e-4), ["dt", "step_accuracy"]),
+        (lambda: sweetspot.impact(bat, **swing, accuracy=0), ["accuracy", "0", "from 1e-7 to 0.1"]),
+        (lambda: sweetspot.impact(bat, **swing, accuracy=1e-9), ["accuracy", "1e-09", "from 1e-7 to 0.1"]),
+        (lambda: sweetspot.impact(bat, **swing, accuracy=math.nan), ["accuracy", "nan", "from 1e-7 to 0.1"]),
+        (lambda: sweetspot.impact(bat, **swing, accuracy=1e-4, mode_tolerance=1e-5), ["mode_tolerance", "accuracy"]),
+        (lambda: sweetspot.impact(bat, **swing, accuracy=1e-4, step_accuracy=1e-5), ["step_accuracy", "accuracy"]),
+        (lambda: sweetspot.impact(bat, **swing, accuracy=1e-4, tolerance=1e-8), ["tolerance", "accuracy"]),
+        (lambda: sweetspot.impact(bat, **swing, accuracy=1e-4, modes=10), ["modes", "accuracy"]),
         (lambda: sweetspot.impact(bat, **swing, pivot="yes"), ["pivot", "'yes'", "True or False"]),
         (lambda: sweetspot.impact(bat, **swing, n2000="no"), ["n2000", "'no'"]),
         (lambda: sweetspot.impact(bat, **swing, modes=10 ** 20), ["modes", "100000000000000000000"]),
@@ -190,8 +198,16 @@ for call, fragments in [
 one = sweetspot.impact(bat, z="27.56 in", ball_speed=np.float32(40), cm_speed=np.int64(10), pivot=0)
 check(one["status"] == "ok", "units and numpy numbers")
 check(sweetspot.impacts(bat, **swing, threads=1).vf.values[()] == sweetspot.impact(bat, **swing)["vf"], "threads=1")
-accurate = sweetspot.impact(bat, **swing, accuracy=1e-4)
-check(sweetspot.impact(bat, **sweetspot.scene_of(accurate))["vf"] == accurate["vf"], "replay with an accuracy")
+for name in ("accuracy", "step_accuracy"):
+    accurate = sweetspot.impact(bat, **swing, **{name: 1e-4})
+    check(sweetspot.impact(bat, **sweetspot.scene_of(accurate))["vf"] == accurate["vf"], f"replay with {name}")
+# A stated total accuracy is met, and impacts() computes what impact() does at it.
+accurate = sweetspot.impact(bat, **swing, accuracy=1e-3)
+check(accurate["status"] == "ok" and accurate["total_error"] <= 1e-3 and accurate["slices_used"] >= 2 * bat.slices,
+      f"accuracy=1e-3 met: {accurate['total_error']} at {accurate['slices_used']} slices")
+many = sweetspot.impacts(bat, z=[0.6, 0.7], ball_speed=40, cm_speed=10, accuracy=1e-3)
+check(many.vf.values[1] == accurate["vf"] and many.slices_used.values[1] == accurate["slices_used"],
+      "impacts at an accuracy as impact")
 check(sweetspot.Bat.from_knots(*rod_args, density=np.float64(700), slices=np.int64(40)).slices == 40, "numpy args")
 
 # 4. The GIL released: two Python threads each run impacts; both finish with the same numbers.
@@ -231,6 +247,23 @@ with xr.open_dataset(f"{work}/program.h5", engine="h5netcdf") as reference:
         check(np.array_equal(ds[name].values, reference[name].values, equal_nan=True), f"run_study {name}")
 points = sweetspot.impacts(bat, z=ds.z.values, ball_speed=40, center=0.09, omega=51, e0=0.5, modes=18)
 check(np.array_equal(points.vf.values, ds.vf.sel(modes=18).squeeze().values), "impacts == the study's points")
+# A study at a stated accuracy: each point climbs its own slicings, so the study (on any threads)
+# equals impacts() point for point, and meets the accuracy.
+accuracy_study = f"{work}/accuracy.toml"
+with open(accuracy_study, "w") as f:
+    f.write(f'[scene]\nbat = "{BAT}"\ncenter = 0.09\nomega = 51\nball_speed = 40\naccuracy = 1e-3\n'
+            '[axes]\nz = [0.3, 0.6, 0.75]\n[output]\nvariables = ["vf", "total_error", "slices_used", "status"]\n')
+for threads in ("1", "2"):
+    run = subprocess.run([program, "run", accuracy_study, "-o", f"{work}/accuracy_{threads}.h5", "--quiet"],
+                         env=os.environ | {"OMP_NUM_THREADS": threads}, capture_output=True, text=True)
+    check(run.returncode == 0, f"accuracy study on {threads} thread(s): {run.stderr}")
+with xr.open_dataset(f"{work}/accuracy_1.h5", engine="h5netcdf") as one, \
+        xr.open_dataset(f"{work}/accuracy_2.h5", engine="h5netcdf") as two:
+    check(np.array_equal(one.vf.values, two.vf.values), "accuracy study: the same on 1 and 2 threads")
+    check(bool((one.total_error.values <= 1e-3).all()), f"accuracy study meets 1e-3: {one.total_error.values}")
+    points = sweetspot.impacts(bat, z=one.z.values, ball_speed=40, center=0.09, omega=51, accuracy=1e-3)
+    check(np.array_equal(points.vf.values, one.vf.values), "accuracy study == impacts(accuracy=1e-3)")
+    check(np.array_equal(points.slices_used.values, one.slices_used.values), "the same slices chosen")
 try:
     sweetspot.run_study(f"{source}/studies/no_such_study.toml")
     check(False, "run_study of a missing file")
@@ -310,6 +343,36 @@ try:
     check(False, "Bat.load('r16'): no ValueError")
 except ValueError as e:
     check("'r16'" in str(e) and "r161 torpedo" in str(e) and "\n" not in str(e), f"Bat.load('r16'): {e}")
+
+# 6c. A ball's ranges (ball_tests.hpp, docs/balls.md) and omega >= 0, as the program and studies
+# have them: a tiny but positive value is a ValueError naming the argument and its range, before
+# any impact runs.
+os.makedirs(work, exist_ok=True)
+tiny_mass = f"{work}/tiny_mass.toml"
+with open(tiny_mass, "w") as f:
+    f.write('[ball]\npreset = "mlb"\nmass = 1e-300\n')
+tiny_squeeze = f"{work}/tiny_squeeze.toml"
+with open(tiny_squeeze, "w") as f:
+    f.write("[ball]\nmass = 0.145\nradius = 0.0366\ncor = 0.5\ncompression = 1500\ncompression_displacement = 1e-300\n")
+for call, fragments in (
+        (lambda: sweetspot.impact(bat, **swing, omega=40, ball_mass=1e-300), ["ball_mass", "[0.001, 10] kg"]),
+        (lambda: sweetspot.impact(bat, **swing, omega=40, ball_radius=1e-300), ["ball_radius", "[0.001, 1] m"]),
+        (lambda: sweetspot.impact(bat, **swing, omega=40, k1=1e-300), ["k1", "[1000, 1e12]"]),
+        (lambda: sweetspot.impact(bat, **swing, omega=40, e0=1e-300), ["e0", "[0.05, 1]"]),
+        (lambda: sweetspot.impacts(bat, **swing, omega=40, ball_mass=[0.145, 1e-300]), ["ball_mass", "1e-300"]),
+        (lambda: sweetspot.impact(bat, **swing, omega=40, ball=tiny_mass), ["mass = 1e-300", "[0.001, 10] kg"]),
+        (lambda: sweetspot.ball(tiny_squeeze), ["compression_displacement = 1e-300", "[0.0001, 1] m"]),
+        # A negative omega swings the barrel away from the ball: refused as the program does (issue 24).
+        (lambda: sweetspot.impact(bat, **swing, omega=-40), ["omega -40", ">= 0"]),
+        (lambda: sweetspot.impacts(bat, **swing, omega=[40, -40]), ["omega -40", ">= 0"]),
+        # A stated accuracy chooses dopri's tolerance: one given beside it is refused, as dt is.
+        (lambda: sweetspot.impact(bat, **swing, omega=40, integrator="dopri", accuracy=1e-5, tolerance=1e-12),
+         ["tolerance excludes accuracy"])):
+    try:
+        call()
+        check(False, f"{fragments}: no ValueError")
+    except ValueError as e:
+        check(all(f in str(e) for f in fragments) and "\n" not in str(e), f"{fragments}: {e}")
 
 # 7. cmake --install puts the package under the prefix, where the interpreter imports it.
 prefix = f"{work}/prefix"

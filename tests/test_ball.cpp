@@ -199,7 +199,7 @@ TEST_CASE("sweetspot ball runs the standard tests and refuses a ball that is not
     const auto file = dir.write("b.toml", "[ball]\n" + table);
     require_refused(run_program("ball " + file.string()), fragments);
   };
-  refused("preset = \"mlb\"\ncor = 1.2\n", {"b.toml: [ball]", "cor = 1.2", "(0, 1]"});
+  refused("preset = \"mlb\"\ncor = 1.2\n", {"b.toml: [ball]", "cor = 1.2", "[0.05, 1]"});
   refused("preset = \"mlb\"\ncor = 0\n", {"cor = 0"});
   refused("preset = \"mlb\"\ncor = nan\n", {"cor = nan"});
   refused("preset = \"mlb\"\ncor_slope = 0.01\n", {"cor_slope = 0.01", "falls"});
@@ -281,4 +281,49 @@ TEST_CASE("Dynamic stiffness measured twice at one speed is a replicate: N2000's
   CHECK(b.a == 1.84);
   CHECK(b.a == a.a);
   CHECK(b.k1 == Approx(a.k1).epsilon(1e-12));
+}
+
+// Issue 24: a tiny but positive value (1e-300) passed the old ranges (0, high] and ran: `ball` exited
+// 1 after its tests, a compression over 1e-300 m gave a non-finite state, an impact with a
+// 1e-300-kg ball reported vf = 2e284 with exit 0. Each range (ball_tests.hpp) is now the same
+// wherever a ball is given, and refused before any work with one line.
+TEST_CASE("Tiny but positive ball values are refused before any work, wherever a ball is given", "[ball][bounds]") {
+  const TempDir dir;
+  const auto ball_file = [&](const std::string& table) {
+    return run_program("ball " + dir.write("b.toml", "[ball]\n" + table).string());
+  };
+  require_refused(ball_file("preset = \"mlb\"\nmass = 1e-300\n"), {"b.toml: [ball]: mass = 1e-300", "[0.001, 10] kg"});
+  require_refused(ball_file("preset = \"mlb\"\nmass = \"0.001 oz\"\n"), {"mass = \"0.001 oz\"", "[0.001, 10] kg"});
+  require_refused(ball_file("preset = \"mlb\"\nradius = 1e-300\n"), {"radius = 1e-300", "[0.001, 1] m"});
+  require_refused(ball_file("mass = 0.145\nradius = 0.0366\ncor = 0.5\ncompression = 1500\n"
+                            "compression_displacement = 1e-300\n"),
+                  {"compression_displacement = 1e-300", "[0.0001, 1] m"});
+  // In range, but a fitted k1 past its own: blamed on the displacement that gave it.
+  require_refused(ball_file("mass = 0.145\nradius = 0.0366\ncor = 0.5\ncompression = 1e5\n"
+                            "compression_displacement = 0.00011\n"),
+                  {"compression_displacement = 0.00011", "gives k1", "[1000, 1e12] N/m^a"});
+  require_refused(ball_file("preset = \"mlb\"\ncor = 0.01\n"), {"cor = 0.01", "[0.05, 1]"});
+  require_refused(ball_file("preset = \"mlb\"\nstiffness_cylinder_diameter = 1e-300\ndynamic_stiffness = 1.5e6\n"),
+                  {"stiffness_cylinder_diameter = 1e-300", "[0.01, 1] m"});
+  const std::string impact = "impact --bat " + source_path("studies/bats/r161.toml") +
+                             " --z 0.7 --ball-speed 40 --cm-speed 10 --omega 40 ";
+  require_refused(run_program(impact + "--ball-mass 1e-300"), {"--ball-mass 1e-300", "[0.001, 10] kg"});
+  require_refused(run_program(impact + "--ball-radius 1e-300"), {"--ball-radius 1e-300", "[0.001, 1] m"});
+  require_refused(run_program(impact + "--ball mlb --k1 1e-300"), {"--k1 1e-300", "[1000, 1e12]"});
+  require_refused(run_program(impact + "--e0 1e-300"), {"--e0 1e-300", "[0.05, 1]"});
+  require_refused(run_program("wall --speed 40 --ball-mass 1e-300"), {"wall: --ball-mass 1e-300"});
+  require_refused(run_program("certify " + source_path("studies/bats/r161.toml") + " --e0 0.01"), {"e0 0.01", "[0.05, 1]"});
+  // A study's keys and its [ball] table take the same ranges, and their ends.
+  StudyDir study;
+  const auto with = [&](const std::string& extra) {
+    std::string text = file_text(study.study);
+    text.insert(text.find("[axes]"), extra);
+    return study_refusal(study.dir.write("s.toml", text));
+  };
+  CHECK_THAT(with("ball_mass = 1e-300\n"), Catch::Contains("key 'scene.ball_mass' = 1e-300") &&
+                                               Catch::Contains("[0.001, 10] kg"));
+  CHECK_THAT(with("ball_radius = \"0.0001 in\"\n"), Catch::Contains("\"0.0001 in\"") && Catch::Contains("[0.001, 1] m"));
+  CHECK_THAT(with("e0 = 0.049\n"), Catch::Contains("key 'scene.e0' = 0.049") && Catch::Contains("[0.05, 1]"));
+  CHECK_THAT(with("[ball]\npreset = \"mlb\"\nradius = 1e-300\n"), Catch::Contains("[ball]: radius = 1e-300"));
+  CHECK(with("ball_mass = 0.001\nball_radius = 0.001\ne0 = 0.05\nk1 = 1000\na = 0.5\n") == "(not refused)");
 }

@@ -246,7 +246,7 @@ TEST_CASE("The energy balance closes with the wall at default settings", "[barre
 TEST_CASE("rk4, exact and dopri integrate the wall mode alike", "[barrel]") {
   const ModalBasis alloy = compute_modes(build_bat(design_of(alloy_file)), BeamTheory::timoshenko);
   ImpactScene scene = barrel_scene(0.68);
-  scene.accuracy = 1e-7;  // each method's step (or tolerance) chosen for the pulse and the wall
+  scene.step_accuracy = 1e-7;  // each method's step (or tolerance) chosen for the pulse and the wall
   double vf[3];
   int i = 0;
   for (const Method method : {Method::rk4, Method::exact, Method::dopri}) {

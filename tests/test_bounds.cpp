@@ -87,7 +87,7 @@ TEST_CASE("A study that cannot fit in the machine's memory is refused, naming it
   TempDir dir;
   require_refused(run_study(dir, "modes = 18\n",
                             "[axes]\nz = { start = 0.0, stop = 0.84, count = 1000 }\n"
-                            "ball_speed = { start = 1, stop = 100, count = 1000 }\ne0 = { start = 0.001, stop = 1, count = 1000 }\n"
+                            "ball_speed = { start = 1, stop = 100, count = 1000 }\ne0 = { start = 0.05, stop = 1, count = 1000 }\n"
                             "[output]\nvariables = [\"vf\", \"status\", \"mode_energy\"]\n"),
                   {"study.toml: the study needs about ", "GB of memory, more than the ",
                    "1000000000 points = z (1000) x ball_speed (1000) x e0 (1000), 20 values each"});
@@ -164,4 +164,21 @@ TEST_CASE("Usage errors: one line in the program's style, exit status 2", "[boun
   const ProgramRun help = run_program("impact --help");
   CHECK(help.exit_code == 0);
   CHECK_THAT(help.output, Catch::Contains("--ball-speed"));
+}
+
+// Issue 24: a negative omega was taken by impact and studies, refused by the optimiser's [player].
+// v_bat(z) = V_cm + omega (z - z_cm), +y toward the ball (physics.md §1): a swing turns the barrel
+// toward the ball at omega >= 0; a negative one swings it backwards. Refused the same everywhere;
+// 0 (a bat at rest, a push) stays.
+TEST_CASE("A negative omega is refused wherever a swing is given, 0 taken", "[bounds]") {
+  require_refused(run_program("impact --bat " + r161 + " --z 0.7 --ball-speed 40 --cm-speed 10 --omega -40"),
+                  {"impact: --omega -40", ">= 0", "backwards"});
+  require_refused(run_program("impact --bat " + r161 + " --z 0.7 --ball-speed 40 --center 0.15 --pivot --omega "
+                              "-480rpm"),
+                  {"--omega -50.26", ">= 0"});
+  CHECK(run_program("impact --bat " + r161 + " --z 0.7 --ball-speed 40 --cm-speed 10 --omega 0").exit_code == 0);
+  TempDir dir;
+  require_refused(run_study(dir, "ball_speed = 40\n", "[axes]\nz = [0.6, 0.7]\nomega = [51, \"-480 rpm\"]\n"),
+                  {"key 'axes.omega[1]' = \"-480 rpm\"", ">= 0"});
+  require_untouched(dir);
 }

@@ -194,7 +194,7 @@ TEST_CASE("certify refuses a bad standard, pivot or option with one line", "[cer
   require_refused(run_program("certify " + r161_file + " --standard asa"), {"--standard asa", "bbcor, besr or bpf"});
   require_refused(run_program("certify " + r161_file + " --pivot-point 0.9"), {"pivot point 0.9", "before the scanned"});
   require_refused(run_program("certify " + r161_file + " --pivot-point -0.1"), {"pivot point -0.1"});
-  require_refused(run_program("certify " + r161_file + " --e0 1.5"), {"e0 1.5", "(0, 1]"});
+  require_refused(run_program("certify " + r161_file + " --e0 1.5"), {"e0 1.5", "[0.05, 1]"});
   require_refused(run_program("certify " + r161_file + " --ball-speed -3"), {"ball speed -3"});
   require_refused(run_program("certify " + r161_file + " --modes many"), {"--modes many"});
   require_refused(run_program("certify " + r161_file + " --slices 3"), {"--slices"});

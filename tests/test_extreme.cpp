@@ -266,7 +266,8 @@ TEST_CASE("An unstable RK4 step with all modes is refused, never integrated", "[
 // and RK4 at N2000's 5 us with e0 = 0.01 (5.4); the passing cases above stay at or below 2.2.
 // Before the fixed-step methods halved their step to omega_c h <= 2, these runs blew up and still
 // reported ok (exit speeds of 645, 2e6 and 3.7e3 m/s). Integrating correctly or refusing
-// (refused_step) both pass; a wrong answer reported as ok does not.
+// (refused_step) both pass; a wrong answer reported as ok does not. A COR below 0.05 (b > 1100)
+// is no ball (ball_tests.hpp): e0 = 0.01 is refused as input before any step.
 TEST_CASE("A nearly dead ball's stiff expansion is integrated or refused, never silently wrong", "[extreme]") {
   std::vector<Case> cases;
   for (const Case& c : ball_cases())
@@ -276,10 +277,11 @@ TEST_CASE("A nearly dead ball's stiff expansion is integrated or refused, never 
   s.integrator.method = Method::exact;
   s.integrator.dt = 2e-5;
   cases.push_back({"e0=0.05 exact/18 dt=20us", &r161(), s, stiff_pulse});
-  s.ball.e0 = 0.01;
   s.integrator.method = Method::rk4;
   s.integrator.dt = 5e-6;
-  cases.push_back({"e0=0.01 rk4/18", &r161(), s, stiff_pulse});
+  cases.push_back({"e0=0.05 rk4/18", &r161(), s, stiff_pulse});
+  s.ball.e0 = 0.01;
+  CHECK_THROWS_WITH(simulate_impact(r161(), s), Catch::Contains("e0 = 0.01") && Catch::Contains("[0.05, 1]"));
   REQUIRE(cases.size() == 3);
   for (const Case& c : cases) {
     const Run r = run(c);

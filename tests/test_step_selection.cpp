@@ -40,7 +40,7 @@ double vf(ImpactScene s) {
 }
 
 double reference(ImpactScene s) {
-  s.accuracy = 0;
+  s.step_accuracy = 0;
   s.integrator.method = Method::dopri;
   s.integrator.dt = 1e-7;
   s.integrator.tolerance = 1e-13;
@@ -61,7 +61,7 @@ TEST_CASE("A stated accuracy bounds the exit speed's error for every method", "[
         if (method == Method::dopri && c.scene.vibrational_modes == all_modes) continue;  // explicit: slow
         ImpactScene s = c.scene;
         s.integrator.method = method;
-        s.accuracy = accuracy;
+        s.step_accuracy = accuracy;
         const double error = std::abs(vf(s) / exact - 1);
         INFO(c.name << ", " << to_string(method) << ", accuracy " << accuracy << ": error " << error);
         CHECK(error <= accuracy);
@@ -74,9 +74,9 @@ TEST_CASE("Looser accuracy takes longer steps", "[step_selection]") {
   ImpactScene s = high_impact(0.705, 18);
   s.integrator.method = Method::exact;
   s.integrator.record_force = true;
-  s.accuracy = 1e-4;
+  s.step_accuracy = 1e-4;
   const auto loose = simulate_impact(r161(), s).force.size();
-  s.accuracy = 1e-8;
+  s.step_accuracy = 1e-8;
   const auto tight = simulate_impact(r161(), s).force.size();
   CHECK(loose * 4 < tight);
 }
@@ -94,7 +94,7 @@ TEST_CASE("A stated accuracy holds for a nearly dead ball: its fast expansion sh
       const double exact = reference(scene);
       for (double accuracy : {1e-4, 1e-6}) {
         ImpactScene s = scene;
-        s.accuracy = accuracy;
+        s.step_accuracy = accuracy;
         const double error = std::abs(vf(s) / exact - 1);
         INFO("z " << z << ", modes " << modes << ", accuracy " << accuracy << ": error " << error);
         CHECK(error <= accuracy);
@@ -102,7 +102,7 @@ TEST_CASE("A stated accuracy holds for a nearly dead ball: its fast expansion sh
         const SceneGeometry g = scene_geometry(s, r161());
         s.integrator = options_for_accuracy(s.integrator, accuracy, s.ball, s.ball_speed + g.bat_speed, g.recoil, 0);
         s.integrator.contact_phase_limit = 2;
-        s.accuracy = 0;
+        s.step_accuracy = 0;
         worst_without = std::max(worst_without, std::abs(vf(s) / exact - 1) / accuracy);
       }
     }
@@ -117,15 +117,15 @@ TEST_CASE("A stated accuracy is checked against a run at twice the step, twice w
   s.ball.e0 = 0.2;
   s.integrator.method = Method::exact;
   const double exact = reference(s);
-  s.accuracy = 1e-4;
+  s.step_accuracy = 1e-4;
   const ImpactResult checked = simulate_impact(r161(), s);
   REQUIRE(checked.status == CollisionStatus::ok);
   CHECK(checked.contacts == 2);
-  CHECK(std::abs(checked.vf / exact - 1) <= s.accuracy);
+  CHECK(std::abs(checked.vf / exact - 1) <= s.step_accuracy);
   // The model's step alone.
   const SceneGeometry g = scene_geometry(s, r161());
-  s.integrator = options_for_accuracy(s.integrator, s.accuracy, s.ball, s.ball_speed + g.bat_speed, g.recoil, 0);
-  s.accuracy = 0;
+  s.integrator = options_for_accuracy(s.integrator, s.step_accuracy, s.ball, s.ball_speed + g.bat_speed, g.recoil, 0);
+  s.step_accuracy = 0;
   const ImpactResult single = simulate_impact(r161(), s);
   CHECK(single.status == CollisionStatus::unbalanced);
   CHECK(std::abs(single.vf / exact - 1) > 0.05);
@@ -146,7 +146,7 @@ TEST_CASE("Over the stated range exact stepping meets accuracy = A (README, Nume
           const double exact = reference(scene);
           for (double accuracy : {1e-3, 1e-5, 1e-8}) {
             ImpactScene s = scene;
-            s.accuracy = accuracy;
+            s.step_accuracy = accuracy;
             const double error = std::abs(vf(s) / exact - 1);
             INFO("z " << z << ", " << speed << " m/s, e0 " << e0 << ", modes " << modes << ", accuracy " << accuracy
                       << ": error " << error);

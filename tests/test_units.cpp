@@ -227,8 +227,8 @@ TEST_CASE("A study refuses a quantity of the wrong dimension, an unknown unit, g
       {"z = \"in\"", "key 'scene.z' = \"in\": expected a length"},
       {"z = \"nan in\"", "key 'scene.z' = \"nan in\": expected a length"},
       {"z = \"twenty-eight inches\"", "key 'scene.z' = \"twenty-eight inches\": expected a length"},
-      {"ball_mass = \"5 in\"", "key 'scene.ball_mass' = \"5 in\": expected a mass in (0, 10] kg, as a [ball] table takes it (a number in kg"},
-      {"e0 = \"0.5 m\"", "key 'scene.e0' = \"0.5 m\" (string): expected a number in (0, 1]"},
+      {"ball_mass = \"5 in\"", "key 'scene.ball_mass' = \"5 in\": expected a mass in [0.001, 10] kg, as a [ball] table takes it (a number in kg"},
+      {"e0 = \"0.5 m\"", "key 'scene.e0' = \"0.5 m\" (string): expected a COR in [0.05, 1]"},
       {"e_a_speed = \"40 rad/s\"", "key 'scene.e_a_speed' = \"40 rad/s\": expected a speed > 0 (the speed e_A is "
                                    "taken at for bbs_linear) (a number in m/s"},
   };
@@ -373,4 +373,30 @@ TEST_CASE("JSON is always SI: --units us with --json is refused", "[units]") {
     require_refused(run_program(args + " --units us --json"), {"--units us applies to the text output; --json is always in SI"});
   CHECK(run_program("wall --speed 40 --units si --json").exit_code == 0);
   require_refused(run_program("wall --speed 40 --units imperial"), {"--units"});
+}
+
+// Issue 24: a study's messages named the SI value a unit stood for (z = 0.7112 for "71.12 cm",
+// bat.barrel_diameter = 0.00254 for "0.1 in"), which the user cannot find in the file.
+TEST_CASE("A study's refusals show each value as written, units and all", "[units]") {
+  TempDir dir;
+  const std::string bat = source_path("studies/bats/alloy_bbcor.toml");
+  const auto refusal = [&](const std::string& scene, const std::string& axes) {
+    return study_refusal(dir.write("s.toml", "[scene]\nbat = \"" + bat + "\"\ncenter = 0.09\nomega = 51\n"
+                                             "ball_speed = 40\n" + scene + "[axes]\n" + axes));
+  };
+  CHECK_THAT(refusal("", "z = [\"28 in\", \"71.12 cm\"]\n"),
+             Catch::Contains("key 'axes.z' = \"71.12 cm\" (the same as \"28 in\"): appears twice"));
+  CHECK_THAT(refusal("z = 0.7\n", "\"bat.barrel_diameter\" = [\"0.1 in\"]\n"),
+             Catch::Contains("key 'axes.bat.barrel_diameter' = \"0.1 in\": makes an impossible bat") &&
+                 Catch::Contains("with bat.barrel_diameter = \"0.1 in\")"));
+  CHECK_THAT(refusal("z = 0.7\n", "\"bat.material\" = [\"maple\", \"maple\"]\n"),
+             Catch::Contains("key 'axes.bat.material' = \"maple\": appears twice"));
+  CHECK_THAT(refusal("z = 0.7\n", "\"bat.length\" = [\"838.2 in\"]\n"),
+             Catch::Contains("key 'axes.bat.length' = \"838.2 in\": bat parameter 'length'"));
+  CHECK_THAT(refusal("", "z = [\"28 in\", \"40 in\"]\n"), Catch::Contains("key 'axes.z' = \"40 in\" = 1.016 m: must lie"));
+  CHECK_THAT(refusal("z = 0.7\nprobes = [\"5 in\", \"12.7 cm\"]\n", "ball_speed = [30, 40]\n"),
+             Catch::Contains("key 'scene.probes' = \"12.7 cm\" (the same as \"5 in\"): appears twice in the list"));
+  // A range's values are numbers the range made: shown as numbers.
+  CHECK_THAT(refusal("", "z = { start = \"1 in\", stop = \"1 in\", count = 2 }\n"),
+             Catch::Contains("key 'axes.z' = 0.0254: appears twice"));
 }

@@ -204,7 +204,7 @@ TEST_CASE("The energy balance closes with a damped wall, free and pivoted", "[ba
 TEST_CASE("rk4, exact and dopri agree on a damped wall's exit speed and loss", "[barrel][damping]") {
   const ModalBasis alloy = compute_modes(build_bat(alloy_with_loss(1e-2)), BeamTheory::timoshenko);
   ImpactScene scene = barrel_scene(0.68);
-  scene.accuracy = 1e-7;
+  scene.step_accuracy = 1e-7;
   ImpactResult r[3];
   int i = 0;
   for (const Method method : {Method::rk4, Method::exact, Method::dopri}) {

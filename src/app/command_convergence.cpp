@@ -1,13 +1,16 @@
 // sweetspot convergence: error against run time for every integrator on a study's base scene,
-// logged as a table and written as one dataset (a work-precision diagram's data).
+// and the total error (each source estimated, and the actual one against the continuum) at every
+// stated accuracy, logged as tables and written as one dataset (a work-precision diagram's data).
 #include <spdlog/spdlog.h>
 
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <string>
 
 #include "commands.hpp"
 #include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/study/accuracy_sweep.hpp"
 #include "sweetspot/study/convergence.hpp"
 #include "sweetspot/study/dataset.hpp"
 #include "sweetspot/input_error.hpp"
@@ -71,6 +74,25 @@ void log_table(const ConvergenceTable& table) {
   }
 }
 
+std::string describe_choice(const AccuracyRun& run) {
+  const std::string step = run.step > 0 ? fmt::format("{:.3g} us", 1e6 * run.step) : "adaptive";
+  return fmt::format("{:g} slices, {:g} modes, {}", run.slices, run.modes, step);
+}
+
+void log_sweep(const AccuracySweep& sweep) {
+  spdlog::info("continuum vf = {:.10f} m/s (Richardson in the slices up to {}, every mode, exact at 2.5 us; its "
+               "last two slicings differ by {:.1e})",
+               sweep.reference_vf, sweep.reference_slices, sweep.reference_difference);
+  spdlog::info("{:<9} {:<34} {:>9} {:>9} {:>9} {:>9} {:>9} {:>7} {:>12}", "accuracy", "chosen", "slicing", "modes",
+               "step", "total", "actual", "ratio", "time/impact");
+  for (const AccuracyRun& run : sweep.runs)
+    spdlog::info("{:<9} {:<34} {:>9.2e} {:>9.2e} {:>9.2e} {:>9.2e} {:>9.2e} {:>7.2f} {:>9.1f} us{}",
+                 std::isnan(run.accuracy) ? std::string("default") : fmt::format("{:g}", run.accuracy),
+                 describe_choice(run), run.slicing_error, run.modes_error, run.step_error, run.total_error,
+                 run.actual_error, run.total_error / run.actual_error, 1e6 * run.time_per_impact,
+                 run.status == CollisionStatus::ok ? "" : std::string("  ") + to_string(run.status));
+}
+
 void run(const ConvergenceCommandOptions& o) {
   spdlog::set_pattern("[%H:%M:%S] %v");
   const Study study = load_study(o.study);
@@ -89,13 +111,24 @@ void run(const ConvergenceCommandOptions& o) {
                  describe_point(study, point));
   Bat bat = study.designs[point.design];  // as the study read and checked it
   if (point.slices > 0) bat = resample(bat, point.slices);
-  const ModalBasis basis = compute_modes(bat, point.theory);
+  // Every mode while the full solve is practical; past that, what an impact of the scene asks.
+  const ModalBasis basis =
+      compute_modes(bat, point.theory,
+                    bat.slices() <= max_full_solve_slices
+                        ? ModeRequest::all()
+                        : impact_mode_request(point.scene, compute_modes(bat, point.theory, ModeRequest::rigid_only())));
 
   const ConvergenceTable table = run_convergence(basis, point.scene, o.quick);
   spdlog::info("{}: z = {:g} m, {} modes kept (rigid included), largest stable RK4 step {:.4g} us{}", bat.name,
                point.scene.z, table.kept_modes, 1e6 * table.rk4_largest_step, o.quick ? " (quick)" : "");
   log_table(table);
-  write_dataset(out, convergence_dataset(table, study));
+  // Every source at once: the slicing too, against the continuum the bat file describes.
+  const AccuracySweep sweep = run_accuracy_sweep(study.design_specs[point.design], bat.slices(), point.theory,
+                                                 point.scene, o.quick);
+  log_sweep(sweep);
+  Dataset dataset = convergence_dataset(table, study);
+  add_accuracy_sweep(dataset, sweep);
+  write_dataset(out, dataset);
   spdlog::info("wrote {}", out.string());
 }
 

@@ -1,9 +1,9 @@
 // sweetspot impact: one ball on one bat, everything N2000 derives from a collision.
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <memory>
 #include <optional>
-#include <map>
 #include <string>
 
 #include "bat_argument.hpp"
@@ -12,7 +12,10 @@
 #include "json.hpp"
 #include "quantity_option.hpp"
 #include "sweetspot/ball/ball_file.hpp"
+#include "sweetspot/ball/ball_tests.hpp"
 #include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/bat/bat_design.hpp"
+#include "sweetspot/impact/error_estimates.hpp"
 #include "sweetspot/impact/impact.hpp"
 #include "sweetspot/input_error.hpp"
 #include "sweetspot/impact/n2000_settings.hpp"
@@ -72,6 +75,11 @@ void print_json(const ImpactResult& r, const Bat& bat) {
       .add("mode_energy", Json::numbers(r.mode_energy))
       .add("modes_kept", Json::numbers({r.modes_kept.begin(), r.modes_kept.end()}))
       .add("modes_error", r.modes_error)
+      .add("slicing_error", r.slicing_error)  // error_estimates.hpp; null where not estimated
+      .add("step_error", r.step_error)
+      .add("total_error", r.total_error)
+      .add("slices_used", Json::integer(r.slices_used))
+      .add("step_used", r.step_used)
       .add("contacts", Json::integer(r.contacts));
   if (bat.hollow()) out.add("barrel", barrel_json(bat.material.barrel));
   std::printf("%s\n", Json(out).text().c_str());
@@ -115,20 +123,56 @@ void print_text(const ImpactResult& r, const DisplayUnits& u) {
   if (r.modes_error > 0)
     std::printf("modes kept: %zu; estimated relative vf error of the dropped ones %.2g\n", r.modes_kept.size(),
                 r.modes_error);
+  std::printf("estimated error total %.2g (relative vf): slicing %.2g, modes %.2g, time step %.2g\n", r.total_error,
+              r.slicing_error, r.modes_error, r.step_error);
+  std::printf("computed at %d slices, %zu vibrational modes, ", r.slices_used, r.modes_kept.size());
+  if (r.step_used > 0) std::printf("step %.3g us\n", 1e6 * r.step_used);
+  else std::printf("adaptive steps\n");
+}
+
+// The bat's basis for the scene, as a study's point solves it (study/parallel.cpp), so that both
+// give the same result.
+ModalBasis scene_basis(const Bat& bat, BeamTheory theory, const ImpactScene& scene) {
+  return compute_modes(bat, theory, impact_mode_request(scene, compute_modes(bat, theory, ModeRequest::rigid_only())));
+}
+
+// The impact with every estimate (error_estimates.hpp): at a stated accuracy, the design cut as
+// finely as it needs; otherwise at the bat's slices, the slicing error from the design at twice
+// and four times them.
+ImpactResult impact_with_estimates(const BatDesign& design, const Bat& bat, BeamTheory theory, ImpactScene scene) {
+  scene.error_estimates = true;
+  if (scene.accuracy > 0) {
+    std::map<int, ModalBasis> bases;  // per slice count, each solved once
+    const auto basis_at = [&](int slices) -> const ModalBasis& {
+      auto found = bases.find(slices);
+      if (found == bases.end())
+        found = bases.emplace(slices, scene_basis(bat_with_slices(design, slices), theory, scene)).first;
+      return found->second;
+    };
+    return simulate_within_accuracy(basis_at, bat.slices(), theory, scene);
+  }
+  std::vector<ModalBasis> finer;  // the design at twice and four times the slices, as far as it can be cut
+  for (int times = 1, slices = bat.slices(); times <= 2 && can_refine(bat.slices(), theory, times); ++times)
+    finer.push_back(scene_basis(bat_with_slices(design, slices *= slicing_refinement), theory, scene));
+  std::vector<const ModalBasis*> finer_bases;
+  for (const ModalBasis& b : finer) finer_bases.push_back(&b);
+  return simulate_impact_with_errors(scene_basis(bat, theory, scene), finer_bases, scene);
 }
 
 void run_impact(ImpactOptions& o) {
-  Bat bat = load_bat(bat_argument(o.bat_file, "--bat"));
+  BatSource source;
+  const BatDesign design = load_bat_design(bat_argument(o.bat_file, "--bat"), source);
+  Bat bat = build_bat(design);
   if (o.slices > 0) bat = resample(bat, o.slices);
   o.scene.vibrational_modes = parse_modes(o.modes);
+  if (o.scene.accuracy > 0 && o.scene.vibrational_modes >= 0)
+    throw InputError("impact: --modes " + o.modes + " excludes --accuracy (a fixed number of modes cannot be held to "
+                     "an accuracy): give --modes auto or all, or no --modes");
   o.scene.swing.about_center = o.center.has_value();
   o.scene.swing.center = o.center.value_or(0);
   o.scene.swing.cm_speed = o.cm_speed.value_or(0);
   const BeamTheory theory = parse_beam_theory(o.theory);
-  // What a study's point solves for (study/parallel.cpp), so that both give the same result.
-  const ModeRequest request = impact_mode_request(o.scene, compute_modes(bat, theory, ModeRequest::rigid_only()));
-  const ModalBasis basis = compute_modes(bat, theory, request);
-  const ImpactResult r = simulate_impact(basis, o.scene);
+  const ImpactResult r = impact_with_estimates(design, bat, theory, o.scene);
   if (r.status == CollisionStatus::refused_step) throw InputError("--dt: " + r.message);
   if (o.json) print_json(r, bat);
   else print_text(r, o.units);
@@ -176,14 +220,24 @@ void add_ball_options(CLI::App& cmd, Ball& ball, std::string& named_ball) {
 }
 
 void resolve_ball(const CLI::App& cmd, const std::string& named_ball, Ball& ball) {
-  if (named_ball.empty()) return;
-  Ball named = load_ball(named_ball).ball;
-  if (cmd.count("--e0")) named.e0 = ball.e0;
-  if (cmd.count("--ball-mass")) named.mass = ball.mass;
-  if (cmd.count("--ball-radius")) named.radius = ball.radius;
-  if (cmd.count("--k1")) named.k1 = ball.k1;
-  if (cmd.count("--a")) named.a = ball.a;
-  ball = named;
+  if (!named_ball.empty()) {
+    Ball named = load_ball(named_ball).ball;
+    if (cmd.count("--e0")) named.e0 = ball.e0;
+    if (cmd.count("--ball-mass")) named.mass = ball.mass;
+    if (cmd.count("--ball-radius")) named.radius = ball.radius;
+    if (cmd.count("--k1")) named.k1 = ball.k1;
+    if (cmd.count("--a")) named.a = ball.a;
+    ball = named;
+  }
+  // The ball's ranges, as a [ball] table and a study take them (ball_tests.hpp), before any work.
+  // A named ball is in range (load_ball): what is not came from an option.
+  if (const auto outside = ball_out_of_range(ball)) {
+    const std::map<std::string, std::string> options = {
+        {"ball_mass", "--ball-mass"}, {"ball_radius", "--ball-radius"}, {"k1", "--k1"}, {"a", "--a"}, {"e0", "--e0"}};
+    char value[32];
+    std::snprintf(value, sizeof value, "%.10g", outside->value);
+    throw InputError(cmd.get_name() + ": " + options.at(outside->key) + " " + value + ": " + outside->expected());
+  }
 }
 
 void resolve_integrator(const CLI::App& cmd, CollisionOptions& options) {
@@ -198,17 +252,31 @@ void resolve_integrator(const CLI::App& cmd, CollisionOptions& options) {
   }
 }
 
-void check_accuracy(const CLI::App& cmd, double accuracy) {
-  if (cmd.count("--accuracy") == 0) return;
-  // As a study's key: a stated accuracy is a finite number > 0; it chooses the step, so a step
-  // given beside it would be silently overridden.
-  if (!(std::isfinite(accuracy) && accuracy > 0)) {
-    char value[32];
-    std::snprintf(value, sizeof value, "%g", accuracy);
-    throw InputError(cmd.get_name() + ": --accuracy " + value + ": expected " + accuracy_expected);
+// --accuracy (the total) and --step-accuracy, as a study's keys: each in its range, and neither
+// beside what it chooses itself (it would be silently overridden).
+void check_accuracy(const CLI::App& cmd, const ImpactScene& scene) {
+  const auto value = [](double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", x);
+    return std::string(text);
+  };
+  if (cmd.count("--accuracy") && !(scene.accuracy >= min_accuracy && scene.accuracy <= max_accuracy))
+    throw InputError(cmd.get_name() + ": --accuracy " + value(scene.accuracy) + ": expected " + accuracy_expected);
+  if (cmd.count("--step-accuracy") && !(std::isfinite(scene.step_accuracy) && scene.step_accuracy > 0))
+    throw InputError(cmd.get_name() + ": --step-accuracy " + value(scene.step_accuracy) + ": expected " +
+                     step_accuracy_expected);
+  const auto refuse_pair = [&](const char* given, const char* accuracy, const char* what) {
+    if (cmd.count(given) && cmd.count(accuracy))
+      throw InputError(cmd.get_name() + ": " + given + " excludes " + accuracy + " (which chooses " + what +
+                       "): give one of them");
+  };
+  for (const char* accuracy : {"--accuracy", "--step-accuracy"}) {
+    refuse_pair("--dt", accuracy, "the step");
+    refuse_pair("--tolerance", accuracy, "dopri's tolerance");
   }
-  if (cmd.count("--dt"))
-    throw InputError(cmd.get_name() + ": --dt excludes --accuracy (which chooses the step): give one of them");
+  refuse_pair("--step-accuracy", "--accuracy", "the step");
+  refuse_pair("--mode-tolerance", "--accuracy", "the modes' tolerance");
+  refuse_pair("--slices", "--accuracy", "the slices");
 }
 
 void add_integrator_options(CLI::App& cmd, CollisionOptions& options) {
@@ -261,6 +329,9 @@ void add_impact_command(CLI::App& app) {
                   "with --modes auto: relative vf error allowed the dropped modes")
       ->capture_default_str();
   cmd->add_option("--accuracy", o->scene.accuracy,
+                  "total relative vf error allowed (slicing, modes and step): chooses the slices, the modes and "
+                  "the step");
+  cmd->add_option("--step-accuracy", o->scene.step_accuracy,
                   "relative vf error the integration may add: chooses the step (or tolerance) instead of --dt");
   add_ball_options(*cmd, o->scene.ball, o->named_ball);
   add_integrator_options(*cmd, o->scene.integrator);
@@ -268,7 +339,12 @@ void add_impact_command(CLI::App& app) {
   o->units.add_option(*cmd);
   cmd->callback([o, cmd] {
     o->units.check_text_output("impact", o->json);
-    check_accuracy(*cmd, o->scene.accuracy);
+    check_accuracy(*cmd, o->scene);
+    if (!valid_omega(o->scene.swing.omega)) {
+      char value[32];
+      std::snprintf(value, sizeof value, "%.10g", o->scene.swing.omega);
+      throw InputError(std::string("impact: --omega ") + value + ": expected " + omega_expected);
+    }
     resolve_integrator(*cmd, o->scene.integrator);
     resolve_ball(*cmd, o->named_ball, o->scene.ball);
     if (cmd->count("--n2000") && cmd->count("--modes") == 0) o->modes = std::to_string(n2000_modes);

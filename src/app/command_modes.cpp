@@ -87,6 +87,10 @@ void run_modes(const ModesOptions& o) {
   if (o.count > available)
     throw InputError("--count " + std::to_string(o.count) + ": the bat has only " + std::to_string(available) +
                      " vibrational modes at " + std::to_string(bat.slices()) + " slices");
+  if (const int most = practical_mode_count(available + 2) - 2; o.count > most)
+    throw InputError("--count " + std::to_string(o.count) + ": more than is practical at " +
+                     std::to_string(bat.slices()) + " slices (a solve's time grows as the slices times the modes "
+                     "squared); expected at most " + std::to_string(most));
   // Only the modes printed: a partial solve, which stays fast at thousands of slices.
   const ModalBasis basis = compute_modes(bat, theory, ModeRequest::lowest(o.count));
   const MassProperties mp = mass_properties(bat);

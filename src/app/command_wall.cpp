@@ -26,9 +26,7 @@ struct WallOptions {
 void run_wall(const WallOptions& o) {
   if (!(o.speed > 0) || !std::isfinite(o.speed))
     throw InputError("wall: speed = " + std::to_string(o.speed) + ": must be a positive finite number (m/s)");
-  if (!(o.ball.e0 > 0 && o.ball.e0 <= 1)) throw InputError("wall: e0 = " + std::to_string(o.ball.e0) + ": must lie in (0, 1]");
-  if (!(o.ball.a > 0) || !(o.ball.k1 > 0) || !(o.integrator.dt > 0))
-    throw InputError("wall: a, k1 and dt must be positive");
+  if (!(o.integrator.dt > 0)) throw InputError("wall: dt must be positive");  // the ball: resolve_ball
   const ImpactResult r = hit_wall(o.ball, o.speed, o.integrator);
   if (o.json) {
     const Json out = Json::Object()

@@ -41,6 +41,16 @@ double quantity_key(const toml::table& t, std::string_view key, Dimension dimens
   return quantity_at(*t.get(key), key, dimension, where);
 }
 
+// A quantity with its range (ball_tests.hpp), refused with the value as written ("0.001 oz").
+double ranged_quantity(const toml::table& t, std::string_view key, Dimension dimension, BallRange range,
+                       const std::string& where) {
+  const double x = quantity_key(t, key, dimension, where);
+  if (!in_range(range, x))
+    throw InputError(where + ": " + std::string(key) + " = " + describe_quantity(*t.get(key)) + ": expected " +
+                     range_text(range));
+  return x;
+}
+
 // A value at one speed (`value_key` a number, at `speed_key` or 60 mph) or at several
 // (`value_key` = [[speed, value], ...]).
 std::vector<SpeedValue> speed_values(const toml::table& t, std::string_view value_key, std::string_view speed_key,
@@ -100,8 +110,9 @@ BallFit read_ball_table(const toml::table& table, const std::string& where) {
   if (stiffnesses.size() > 1)
     throw InputError(where + ": " + join(stiffnesses) + " given together: expected one stiffness (dynamic_stiffness, " +
                      "compression or k1)");
-  if (table.contains("mass")) t.mass = quantity_key(table, "mass", Dimension::mass, where);
-  if (table.contains("radius")) t.radius = quantity_key(table, "radius", Dimension::length, where);
+  if (table.contains("mass")) t.mass = ranged_quantity(table, "mass", Dimension::mass, ball_mass_range, where);
+  if (table.contains("radius"))
+    t.radius = ranged_quantity(table, "radius", Dimension::length, ball_radius_range, where);
   if (table.contains("cor")) {
     t.cor = speed_values(table, "cor", "cor_speed", where);
     t.cor_slope = 0;
@@ -114,13 +125,15 @@ BallFit read_ball_table(const toml::table& table, const std::string& where) {
     t.dynamic_stiffness = speed_values(table, "dynamic_stiffness", "stiffness_speed", where);
   }
   if (table.contains("stiffness_cylinder_diameter"))
-    t.stiffness_cylinder_diameter = quantity_key(table, "stiffness_cylinder_diameter", Dimension::length, where);
+    t.stiffness_cylinder_diameter = ranged_quantity(table, "stiffness_cylinder_diameter", Dimension::length,
+                                                    ball_cylinder_diameter_range, where);
   if (table.contains("compression")) {
     clear_stiffness(t);
     t.compression_force = positive_number(table, "compression", where);
   }
   if (table.contains("compression_displacement"))
-    t.compression_displacement = quantity_key(table, "compression_displacement", Dimension::length, where);
+    t.compression_displacement =  // at most the radius too: fit_ball
+        ranged_quantity(table, "compression_displacement", Dimension::length, ball_displacement_range, where);
   if (table.contains("k1")) {
     clear_stiffness(t);
     t.k1 = positive_number(table, "k1", where);

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
+#include <utility>
 
 #include "sweetspot/input_error.hpp"
 #include "toml_values.hpp"
@@ -18,6 +20,10 @@ namespace {
 void require_in(const std::string& where, const std::string& key, double value, double lo, double hi,
                 const std::string& expected) {
   if (!(value > lo && value <= hi)) reject(where, key, value, expected);
+}
+
+void require_in(const std::string& where, const std::string& key, double value, BallRange range) {
+  if (!in_range(range, value)) reject(where, key, value, "expected " + range_text(range));
 }
 
 // The least-squares line y = intercept + slope (x - mean x), its mean x and RMS residual.
@@ -50,7 +56,7 @@ void fit_cor(const BallTests& t, const std::string& where, BallFit& fit) {
   std::vector<double> speeds, cors;
   for (const SpeedValue& p : t.cor) {
     require_in(where, "cor_speed", p.speed, 0, max_cor_law_speed, "expected a speed in (0, 100] m/s");
-    require_in(where, "cor", p.value, 0, 1, "expected a COR in (0, 1]");
+    require_in(where, "cor", p.value, ball_cor_range);
     speeds.push_back(p.speed), cors.push_back(p.value);
   }
   if (t.cor.size() > 1 && t.cor_slope != 0)
@@ -63,10 +69,10 @@ void fit_cor(const BallTests& t, const std::string& where, BallFit& fit) {
   fit.cor_residual = line.rms;
   // The law must stay a COR over every speed a ball meets.
   for (const double v : {0.0, max_cor_law_speed})
-    if (!(b.cor_at(v) > 0 && b.cor_at(v) <= 1))
+    if (!in_range(ball_cor_range, b.cor_at(v)))
       reject(where, "cor_slope", b.cor_slope,
              "gives a COR of " + detail::format_number(b.cor_at(v)) + " at " + detail::format_number(v) +
-                 " m/s: not a physical ball (expected (0, 1] from 0 to 100 m/s)");
+                 " m/s: not a physical ball (expected " + range_text(ball_cor_range) + " from 0 to 100 m/s)");
 }
 
 // k1 of a ball of exponent a whose impact at v on a surface of curvature factor c peaks at F.
@@ -79,7 +85,7 @@ void fit_dynamic_stiffness(const BallTests& t, const std::string& where, BallFit
   std::vector<double> log_v, log_ds;
   for (const SpeedValue& p : t.dynamic_stiffness) {
     require_in(where, "stiffness_speed", p.speed, 0, max_cor_law_speed, "expected a speed in (0, 100] m/s");
-    require_in(where, "dynamic_stiffness", p.value, 1e4, 1e9, "expected a stiffness in (1e4, 1e9] N/m");
+    require_in(where, "dynamic_stiffness", p.value, ball_dynamic_stiffness_range);
     log_v.push_back(std::log(p.speed)), log_ds.push_back(std::log(p.value));
   }
   Ball& b = fit.ball;
@@ -117,30 +123,79 @@ void fit_dynamic_stiffness(const BallTests& t, const std::string& where, BallFit
   fit.stiffness_from = "dynamic stiffness";
 }
 
+// A k1 fitted from other values must lie in its range as a k1 given would: `key` names the value
+// that took it there.
+void require_fitted_k1(const std::string& where, const std::string& key, double value, const Ball& b) {
+  if (!in_range(ball_k1_range, b.k1))
+    reject(where, key, value,
+           "gives k1 = " + detail::format_number(b.k1) + " N/m^a: expected " + range_text(ball_k1_range));
+}
+
 void fit_stiffness(const BallTests& t, const std::string& where, BallFit& fit) {
   const int given = !t.dynamic_stiffness.empty() + (t.compression_force != 0) + (t.k1 != 0);
   if (given != 1)
     throw InputError(where + ": give the ball's stiffness one way: dynamic_stiffness, compression or k1 (" +
                      std::to_string(given) + " given)");
-  if (t.exponent != 0) require_in(where, "exponent", t.exponent, ball_exponent_range.low, ball_exponent_range.high, "expected an exponent a in (0.5, 3]");
+  if (t.exponent != 0) require_in(where, "a", t.exponent, ball_exponent_range);
   Ball& b = fit.ball;
-  if (!t.dynamic_stiffness.empty()) return fit_dynamic_stiffness(t, where, fit);
+  if (!t.dynamic_stiffness.empty()) {
+    fit_dynamic_stiffness(t, where, fit);
+    return require_fitted_k1(where, "dynamic_stiffness", t.dynamic_stiffness.back().value, b);
+  }
   b.a = t.exponent > 0 ? t.exponent : default_ball_exponent;
   if (t.k1 != 0) {
-    require_in(where, "k1", t.k1, ball_k1_range.low, ball_k1_range.high, "expected a stiffness k1 in (1e3, 1e12] N/m^a");
+    require_in(where, "k1", t.k1, ball_k1_range);
     b.k1 = t.k1;
     fit.stiffness_from = "k1";
     return;
   }
-  require_in(where, "compression", t.compression_force, 10, 1e5, "expected a force in (10, 1e5] N");
-  require_in(where, "compression_displacement", t.compression_displacement, 0, b.radius,
-             "expected a displacement in (0, the ball's radius] m");
+  require_in(where, "compression", t.compression_force, ball_compression_range);
+  const BallRange displacement{ball_displacement_range.low, b.radius, ball_displacement_range.what,
+                               ball_displacement_range.unit};
+  if (!in_range(displacement, t.compression_displacement))
+    reject(where, "compression_displacement", t.compression_displacement,
+           "expected " + range_text(displacement) + " (at most the ball's radius)");
   // Squeezed between two flat plates, each side takes half the displacement, quasi-statically.
   b.k1 = t.compression_force / std::pow(t.compression_displacement / 2, b.a);
   fit.stiffness_from = "compression";
+  require_fitted_k1(where, "compression_displacement", t.compression_displacement, b);
 }
 
 }  // namespace
+
+namespace {
+
+// A bound as a reader writes it: 0.001, 1000, 1e12 (not 1e+12).
+std::string bound_text(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", x);
+  std::string s = text;
+  if (const auto e = s.find("e+"); e != std::string::npos) s.erase(e + 1, 1);
+  if (const auto e = s.find('e'); e != std::string::npos)
+    while (s.size() > e + 2 && (s[e + 1] == '0' || (s[e + 1] == '-' && s[e + 2] == '0')))
+      s.erase(s[e + 1] == '0' ? e + 1 : e + 2, 1);
+  return s;
+}
+
+}  // namespace
+
+std::string range_text(BallRange r) {
+  std::string text = r.what;
+  text.append(" in [").append(bound_text(r.low)).append(", ").append(bound_text(r.high));
+  text.append("]");
+  if (*r.unit) text.append(" ").append(r.unit);
+  return text;
+}
+
+std::optional<OutOfRange> ball_out_of_range(const Ball& ball) {
+  const std::pair<const char*, std::pair<double, BallRange>> values[] = {
+      {"ball_mass", {ball.mass, ball_mass_range}}, {"ball_radius", {ball.radius, ball_radius_range}},
+      {"k1", {ball.k1, ball_k1_range}},            {"a", {ball.a, ball_exponent_range}},
+      {"e0", {ball.e0, ball_cor_range}}};
+  for (const auto& [key, value] : values)
+    if (!in_range(value.second, value.first)) return OutOfRange{key, value.first, value.second};
+  return std::nullopt;
+}
 
 double peak_force_on_rigid(const Ball& ball, double speed) {
   const double q = ball.a + 1;
@@ -155,11 +210,10 @@ double dynamic_stiffness_on_rigid(const Ball& ball, double speed) {
 
 BallFit fit_ball(const BallTests& t, const std::string& where) {
   BallFit fit;
-  require_in(where, "mass", t.mass, ball_mass_range.low, ball_mass_range.high, "expected a mass in (0, 10] kg");
-  require_in(where, "radius", t.radius, ball_radius_range.low, ball_radius_range.high, "expected a radius in (0, 1] m");
+  require_in(where, "mass", t.mass, ball_mass_range);
+  require_in(where, "radius", t.radius, ball_radius_range);
   if (t.stiffness_cylinder_diameter != 0)
-    require_in(where, "stiffness_cylinder_diameter", t.stiffness_cylinder_diameter, 0, 1,
-               "expected a diameter in (0, 1] m");
+    require_in(where, "stiffness_cylinder_diameter", t.stiffness_cylinder_diameter, ball_cylinder_diameter_range);
   fit.ball.mass = t.mass, fit.ball.radius = t.radius;
   fit_cor(t, where, fit);
   fit_stiffness(t, where, fit);

@@ -25,11 +25,11 @@ void check(lapack_int info, const char* routine) {
 
 // LAPACK's symmetric band storage, upper triangle: ab[kd + i - j + j (kd + 1)] = a(i, j) scale_i
 // scale_j.
-std::vector<double> symmetric_band(const MatrixXd& a, const VectorXd& scale) {
+std::vector<double> symmetric_band(const Eigen::SparseMatrix<double>& a, const VectorXd& scale) {
   const int n = static_cast<int>(a.rows());
   std::vector<double> ab((kd + 1) * n, 0.0);
   for (int j = 0; j < n; ++j)
-    for (int i = std::max(0, j - kd); i <= j; ++i) ab[kd + i - j + j * (kd + 1)] = a(i, j) * scale(i) * scale(j);
+    for (int i = std::max(0, j - kd); i <= j; ++i) ab[kd + i - j + j * (kd + 1)] = a.coeff(i, j) * scale(i) * scale(j);
   return ab;
 }
 
@@ -268,10 +268,10 @@ class ShiftedPencil {
   double& at(int i, int j) { return lu_[index(i, j)]; }
   const double& at(int i, int j) const { return lu_[index(i, j)]; }
   // The band of one of the beam's matrices in this storage, its padding zero.
-  std::vector<double> rows(const MatrixXd& a) const {
+  std::vector<double> rows(const Eigen::SparseMatrix<double>& a) const {
     std::vector<double> r(width * (n_ + pad), 0.0);
-    for (int i = 0; i < n_; ++i)
-      for (int j = std::max(0, i - kd); j <= std::min(n_ - 1, i + kd); ++j) r[index(i, j)] = a(i, j);
+    for (int j = 0; j < n_; ++j)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(a, j); it; ++it) r[index(static_cast<int>(it.row()), j)] = it.value();
     return r;
   }
   int n_;
@@ -360,12 +360,13 @@ void orthonormalise(const MassProduct& mass, MatrixXd& vectors) {
 }  // namespace
 
 bool solve_lowest(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass, BandedRequest request,
-                  VectorXd& omega_squared, MatrixXd& vectors) {
+                  VectorXd& omega_squared, MatrixXd& vectors, int* counted) {
   const Tridiagonal t = tridiagonal(s, request.diagonal_mass);
   const int dofs = static_cast<int>(s.mass.rows());
   // The two rigid modes always (they lie at 0 however low the frequency asked).
   const int count = std::max(2, request.count >= 0 ? request.count : count_below(t, request.upper));
-  if (count > dofs * max_banded_share) return false;
+  if (counted) *counted = count;
+  if (count > dofs * max_banded_share || count > request.most) return false;
   std::vector<Bracket> brackets;
   if (!vibrational_brackets(t, count, brackets)) return false;
   omega_squared = VectorXd::Zero(count);

@@ -5,7 +5,9 @@
 // within 1e-8 of its distance to the others; each eigenpair then comes from inverse iteration at
 // that shift on the banded K - w^2 M itself (a band LU, O(n) per step), its eigenvalue the
 // Rayleigh quotient. Both theories' matrices couple degrees of freedom at most beam_bandwidth
-// apart.
+// apart (beam_system.hpp).
+#include <limits>
+
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 
@@ -13,14 +15,13 @@
 
 namespace sweetspot {
 
-inline constexpr int beam_bandwidth = 3;
-
 // Which eigenpairs: the lowest `count` (rigid ones included), or (count < 0) every one with
 // w^2 <= upper.
 struct BandedRequest {
   int count = -1;
   double upper = 0;
   bool diagonal_mass = false;  // Timoshenko's lumped M
+  int most = std::numeric_limits<int>::max();  // more eigenpairs than this: nothing solved
 };
 
 // Beyond this share of all modes the dense solve may be the better buy. R161 (Timoshenko)
@@ -36,9 +37,11 @@ inline constexpr double max_banded_share = 0.75;
 // Ascending eigenvalues and M-normalised eigenvectors (columns) of the request. The two rigid
 // modes come out as round-off; the caller replaces them by the exact ones. False, with nothing
 // solved, when the request covers more than max_banded_share of the modes (the dense solve is
-// then the cheaper) or when the bisection cannot bracket an eigenvalue apart from the others
-// (eigenvalues equal to round-off): the dense solve then serves.
+// then the cheaper) or more than request.most, or when the bisection cannot bracket an
+// eigenvalue apart from the others (eigenvalues equal to round-off): the dense solve then serves.
+// `counted`, when given, receives how many eigenpairs the request covers (rigid ones included),
+// solved or not.
 bool solve_lowest(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass, BandedRequest request,
-                  Eigen::VectorXd& omega_squared, Eigen::MatrixXd& vectors);
+                  Eigen::VectorXd& omega_squared, Eigen::MatrixXd& vectors, int* counted = nullptr);
 
 }  // namespace sweetspot

@@ -19,9 +19,10 @@ constexpr int kd = beam_bandwidth;
 // Cholesky-factored in LAPACK's lower band storage (l[i - j + j (kd + 1)] = L(i, j)).
 class HeldBeam {
  public:
-  explicit HeldBeam(const MatrixXd& k) : n_(static_cast<int>(k.rows()) - 2), l_((kd + 1) * n_, 0.0) {
+  explicit HeldBeam(const Eigen::SparseMatrix<double>& k) : n_(static_cast<int>(k.rows()) - 2), l_((kd + 1) * n_, 0.0) {
     for (int j = 0; j < n_; ++j)
-      for (int i = j; i <= std::min(n_ - 1, j + kd); ++i) l_[i - j + j * (kd + 1)] = k(i + 2, j + 2);
+      for (Eigen::SparseMatrix<double>::InnerIterator it(k, j + 2); it; ++it)
+        if (it.row() >= j + 2) l_[it.row() - 2 - j + j * (kd + 1)] = it.value();
     if (LAPACKE_dpbtrf_work(LAPACK_COL_MAJOR, 'L', n_, kd, l_.data(), kd + 1) != 0)
       throw std::runtime_error("the beam's flexibility: its stiffness held at the knob is not positive definite");
   }

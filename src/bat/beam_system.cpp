@@ -1,9 +1,42 @@
 #include "bat/beam_system.hpp"
 
+#include <utility>
+#include <vector>
+
 namespace sweetspot {
 
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
+
+namespace {
+
+// A square matrix assembled entry by entry into its band (beam_bandwidth on either side of the
+// diagonal), each entry summed in the order the loops add to it, as a dense matrix would sum it:
+// the dense solve then sees the same numbers bit for bit.
+class SparseAssembly {
+ public:
+  explicit SparseAssembly(int n) : m_(n, n) { m_.reserve(Eigen::VectorXi::Constant(n, 2 * beam_bandwidth + 1)); }
+  double& operator()(int i, int j) { return m_.coeffRef(i, j); }
+  // The matrix compressed, entries that summed to exactly 0 dropped (as a dense matrix's zeros
+  // were when its band was copied out).
+  Eigen::SparseMatrix<double> matrix() {
+    m_.prune(0.0, 0.0);
+    m_.makeCompressed();
+    return std::move(m_);
+  }
+
+ private:
+  Eigen::SparseMatrix<double> m_;
+};
+
+Eigen::SparseMatrix<double> from_triplets(int rows, int cols, const std::vector<Eigen::Triplet<double>>& entries) {
+  Eigen::SparseMatrix<double> m(rows, cols);
+  m.setFromTriplets(entries.begin(), entries.end());
+  m.prune(0.0, 0.0);
+  return m;
+}
+
+}  // namespace
 
 BeamLayout beam_layout(const Bat& bat, BeamTheory theory) {
   BeamLayout layout;
@@ -26,34 +59,36 @@ BeamSystem timoshenko_system(const Bat& bat) {
   const int n = bat.slices();
   const double dz = bat.slice_thickness();
   const BeamLayout beam = beam_layout(bat, BeamTheory::timoshenko);
+  SparseAssembly stiffness(2 * n), mass(2 * n);
   BeamSystem s;
-  s.stiffness = MatrixXd::Zero(2 * n, 2 * n);
-  s.mass = MatrixXd::Zero(2 * n, 2 * n);
   s.translation = VectorXd::Zero(2 * n);
   s.rotation_knob = VectorXd::Zero(2 * n);
-  s.slice_displacement = MatrixXd::Zero(n, 2 * n);
+  std::vector<Eigen::Triplet<double>> slice_displacement;
   for (int i = 0; i < n; ++i) {
-    s.mass(2 * i, 2 * i) = bat.slice_mass(i);
-    s.mass(2 * i + 1, 2 * i + 1) = bat.slice_rotary_inertia(i);
+    mass(2 * i, 2 * i) = bat.slice_mass(i);
+    mass(2 * i + 1, 2 * i + 1) = bat.slice_rotary_inertia(i);
     s.translation(2 * i) = 1;
     s.rotation_knob(2 * i) = bat.slice_center(i);
     s.rotation_knob(2 * i + 1) = -1;  // shear-free rotation: dy/dz + phi = 0
-    s.slice_displacement(i, 2 * i) = 1;
+    slice_displacement.emplace_back(i, 2 * i, 1.0);
   }
   for (int j = 0; j + 1 < n; ++j) {
     const int y0 = 2 * j, p0 = 2 * j + 1, y1 = 2 * j + 2, p1 = 2 * j + 3;
     const double bending = joint_rigidity(beam.bending[j], beam.bending[j + 1]) / dz;
-    s.stiffness(p0, p0) += bending;
-    s.stiffness(p1, p1) += bending;
-    s.stiffness(p0, p1) -= bending;
-    s.stiffness(p1, p0) -= bending;
+    stiffness(p0, p0) += bending;
+    stiffness(p1, p1) += bending;
+    stiffness(p0, p1) -= bending;
+    stiffness(p1, p0) -= bending;
     // Shear strain gamma = (y1 - y0)/dz + (phi0 + phi1)/2 = g . x
     const double shear = joint_rigidity(beam.shear[j], beam.shear[j + 1]) * dz;
     const int dof[4] = {y0, p0, y1, p1};
     const double g[4] = {-1 / dz, 0.5, 1 / dz, 0.5};
     for (int a = 0; a < 4; ++a)
-      for (int b = 0; b < 4; ++b) s.stiffness(dof[a], dof[b]) += shear * g[a] * g[b];
+      for (int b = 0; b < 4; ++b) stiffness(dof[a], dof[b]) += shear * g[a] * g[b];
   }
+  s.stiffness = stiffness.matrix();
+  s.mass = mass.matrix();
+  s.slice_displacement = from_triplets(n, 2 * n, slice_displacement);
   return s;
 }
 
@@ -63,12 +98,11 @@ BeamSystem euler_bernoulli_system(const Bat& bat) {
   const int n = bat.slices();
   const int dofs = 2 * (n + 1);
   const double h = bat.slice_thickness();
+  SparseAssembly stiffness(dofs), mass(dofs);
   BeamSystem s;
-  s.stiffness = MatrixXd::Zero(dofs, dofs);
-  s.mass = MatrixXd::Zero(dofs, dofs);
   s.translation = VectorXd::Zero(dofs);
   s.rotation_knob = VectorXd::Zero(dofs);
-  s.slice_displacement = MatrixXd::Zero(n, dofs);
+  std::vector<Eigen::Triplet<double>> slice_displacement;
   Eigen::Matrix4d k_unit, m_unit;
   k_unit << 12, 6 * h, -12, 6 * h, 6 * h, 4 * h * h, -6 * h, 2 * h * h, -12, -6 * h, 12, -6 * h,
       6 * h, 2 * h * h, -6 * h, 4 * h * h;
@@ -77,19 +111,24 @@ BeamSystem euler_bernoulli_system(const Bat& bat) {
   for (int e = 0; e < n; ++e) {
     const double ei = bat.material.youngs_modulus * bat.second_moment(e);
     const double rho_a = bat.material.density * bat.area(e);
-    s.stiffness.block<4, 4>(2 * e, 2 * e) += ei / (h * h * h) * k_unit;
-    s.mass.block<4, 4>(2 * e, 2 * e) += rho_a * h / 420 * m_unit;
+    const double k_scale = ei / (h * h * h), m_scale = rho_a * h / 420;
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) {
+        stiffness(2 * e + a, 2 * e + b) += k_scale * k_unit(a, b);
+        mass(2 * e + a, 2 * e + b) += m_scale * m_unit(a, b);
+      }
     // Hermite shape functions at the element midpoint: 1/2, h/8, 1/2, -h/8.
-    s.slice_displacement(e, 2 * e) = 0.5;
-    s.slice_displacement(e, 2 * e + 1) = h / 8;
-    s.slice_displacement(e, 2 * e + 2) = 0.5;
-    s.slice_displacement(e, 2 * e + 3) = -h / 8;
+    for (const auto& [dof, weight] : {std::pair{0, 0.5}, {1, h / 8}, {2, 0.5}, {3, -h / 8}})
+      slice_displacement.emplace_back(e, 2 * e + dof, weight);
   }
   for (int j = 0; j <= n; ++j) {
     s.translation(2 * j) = 1;
     s.rotation_knob(2 * j) = j * h;
     s.rotation_knob(2 * j + 1) = 1;
   }
+  s.stiffness = stiffness.matrix();
+  s.mass = mass.matrix();
+  s.slice_displacement = from_triplets(n, dofs, slice_displacement);
   return s;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -20,17 +21,33 @@ namespace {
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
-// Solves K x = w^2 M x for mass-orthonormal x, ascending w^2.
+int degrees_of_freedom(int slices, BeamTheory theory) {
+  return theory == BeamTheory::timoshenko ? 2 * slices : 2 * (slices + 1);
+}
+
+int slices_of(int dofs, bool timoshenko) { return timoshenko ? dofs / 2 : dofs / 2 - 1; }
+
+// What may be asked instead at this count of degrees of freedom.
+std::string alternatives(int dofs) {
+  return "expected modes = \"auto\" or at most " + std::to_string(practical_mode_count(dofs) - 2) +
+         " vibrational modes at this slice count (a partial solve's time grows as the slices times the "
+         "modes squared)";
+}
+
+std::string too_many(int dofs) { return ": more than is practical; " + alternatives(dofs); }
+
+// Solves K x = w^2 M x for mass-orthonormal x, ascending w^2, densely (O(n^3)).
 void solve(const BeamSystem& s, bool diagonal_mass, VectorXd& omega_squared, MatrixXd& vectors) {
+  const MatrixXd stiffness = s.stiffness;
   if (diagonal_mass) {
     // With M diagonal the Cholesky factor of the generalized problem is M^(1/2) itself.
-    const VectorXd scale = s.mass.diagonal().cwiseSqrt().cwiseInverse();
-    const MatrixXd a = scale.asDiagonal() * s.stiffness * scale.asDiagonal();
+    const VectorXd scale = VectorXd(s.mass.diagonal()).cwiseSqrt().cwiseInverse();
+    const MatrixXd a = scale.asDiagonal() * stiffness * scale.asDiagonal();
     Eigen::SelfAdjointEigenSolver<MatrixXd> eig(a);
     omega_squared = eig.eigenvalues();
     vectors = scale.asDiagonal() * eig.eigenvectors();
   } else {
-    Eigen::GeneralizedSelfAdjointEigenSolver<MatrixXd> eig(s.stiffness, s.mass);
+    Eigen::GeneralizedSelfAdjointEigenSolver<MatrixXd> eig(stiffness, MatrixXd(s.mass));
     omega_squared = eig.eigenvalues();
     vectors = eig.eigenvectors();
   }
@@ -63,18 +80,6 @@ void set_rigid_modes(const BeamSystem& s, const Mass& mass, ModalBasis& basis, V
   basis.rotation(0) = 0;
 }
 
-// The sparse copy of a matrix whose row i holds its nonzeros in columns slope i + first to
-// slope i + last, scanning only those (sparseView() scans all the entries, O(n^2)).
-Eigen::SparseMatrix<double> sparse_band(const MatrixXd& a, int slope, int first, int last) {
-  std::vector<Eigen::Triplet<double>> entries;
-  for (int i = 0; i < a.rows(); ++i)
-    for (int j = std::max(0, slope * i + first); j <= std::min<int>(a.cols() - 1, slope * i + last); ++j)
-      if (a(i, j) != 0) entries.emplace_back(i, j, a(i, j));
-  Eigen::SparseMatrix<double> sparse(a.rows(), a.cols());
-  sparse.setFromTriplets(entries.begin(), entries.end());
-  return sparse;
-}
-
 void set_rigid_modes(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass, bool timoshenko, ModalBasis& basis,
                      VectorXd& omega_squared, MatrixXd& x) {
   if (timoshenko) set_rigid_modes(s, Eigen::DiagonalMatrix<double, Eigen::Dynamic>(mass.diagonal()), basis, omega_squared, x);
@@ -82,15 +87,44 @@ void set_rigid_modes(const BeamSystem& s, const Eigen::SparseMatrix<double>& mas
 }
 
 // The banded solve of a partial request; false, with nothing done, when the request reaches past
-// max_banded_share and the dense solve is cheaper.
+// max_banded_share and the dense solve is cheaper. Throws InputError when a request below a
+// frequency covers more modes than practical_mode_count.
 bool solve_partial(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass, bool timoshenko, ModeRequest request,
                    VectorXd& omega_squared, MatrixXd& x) {
+  const int dofs = static_cast<int>(s.mass.rows()), most = practical_mode_count(dofs);
   const BandedRequest banded{request.vibrational > 0 ? request.vibrational + 2 : -1,
-                             request.below_omega * request.below_omega, timoshenko};
-  return solve_lowest(s, mass, banded, omega_squared, x);
+                             request.below_omega * request.below_omega, timoshenko, most};
+  int counted = 0;
+  if (solve_lowest(s, mass, banded, omega_squared, x, &counted)) return true;
+  if (counted > most) {
+    char omega[32];
+    std::snprintf(omega, sizeof omega, "%.4g", request.below_omega);
+    throw InputError("slices = " + std::to_string(slices_of(dofs, timoshenko)) + ": the " +
+                     std::to_string(counted - 2) + " vibrational modes below " + omega +
+                     " rad/s that modes = \"auto\" asks at this mode_tolerance" + too_many(dofs));
+  }
+  return false;
 }
 
 }  // namespace
+
+int practical_mode_count(int dofs) {
+  constexpr double full = 2.0 * max_full_solve_slices, budget = full * full * full;
+  return dofs <= 2 * max_full_solve_slices ? dofs : static_cast<int>(std::sqrt(budget / dofs));
+}
+
+std::optional<std::string> impractical_solve(int slices, BeamTheory theory, ModeRequest request) {
+  const int dofs = degrees_of_freedom(slices, theory);
+  if (request.is_rigid_only() || (request.vibrational == -2 && request.below_omega < 1e300)) return std::nullopt;
+  const bool every = request.is_all() || request.vibrational == -2 || request.vibrational + 2 >= dofs;
+  if (every && dofs > 2 * max_full_solve_slices)
+    return "every mode (the full eigen-solve) is practical up to " + std::to_string(max_full_solve_slices) +
+           " slices (its time grows as the cube of the slices: 8.5 s at 1024, some 10 min at 4096); " +
+           alternatives(dofs);
+  if (!every && request.vibrational + 2 > practical_mode_count(dofs))
+    return std::to_string(request.vibrational) + " vibrational modes" + too_many(dofs);
+  return std::nullopt;
+}
 
 Eigen::VectorXd ModalBasis::shapes_at(double z) const {
   const PointLoad p = layout.point(z);
@@ -101,7 +135,7 @@ Eigen::VectorXd ModalBasis::shapes_at(double z) const {
 }
 
 Eigen::MatrixXd beam_mass_matrix(const Bat& bat, BeamTheory theory) {
-  return theory == BeamTheory::timoshenko ? timoshenko_system(bat).mass : euler_bernoulli_system(bat).mass;
+  return MatrixXd(theory == BeamTheory::timoshenko ? timoshenko_system(bat).mass : euler_bernoulli_system(bat).mass);
 }
 
 ModalBasis compute_modes(const Bat& bat, BeamTheory theory, ModeRequest request) {
@@ -110,6 +144,8 @@ ModalBasis compute_modes(const Bat& bat, BeamTheory theory, ModeRequest request)
     throw InputError("slices = " + std::to_string(bat.slices()) + ": at most " +
                      std::to_string(max_euler_bernoulli_slices) +
                      " for theory euler-bernoulli (its dense solve loses the lowest frequencies to round-off)");
+  if (const auto why = impractical_solve(bat.slices(), theory, request))
+    throw InputError("slices = " + std::to_string(bat.slices()) + ": " + *why);
   const BeamSystem s = timoshenko ? timoshenko_system(bat) : euler_bernoulli_system(bat);
   const int dofs = static_cast<int>(s.mass.rows());
   if (request.vibrational + 2 >= dofs || (request.vibrational == -2 && !(request.below_omega < 1e300)))
@@ -121,16 +157,17 @@ ModalBasis compute_modes(const Bat& bat, BeamTheory theory, ModeRequest request)
   for (int i = 0; i < bat.slices(); ++i) basis.z.push_back(bat.slice_center(i));
   VectorXd omega_squared = VectorXd::Zero(2);
   MatrixXd x(dofs, 2);
-  const Eigen::SparseMatrix<double> mass = sparse_band(s.mass, 1, -beam_bandwidth, beam_bandwidth);
+  const Eigen::SparseMatrix<double>& mass = s.mass;
   if (partial) partial = solve_partial(s, mass, timoshenko, request, omega_squared, x);
   if (!partial && !request.is_rigid_only()) solve(s, timoshenko, omega_squared, x);
   set_rigid_modes(s, mass, timoshenko, basis, omega_squared, x);
   basis.omega = omega_squared.cwiseMax(0.0).cwiseSqrt();
   // A fixed sign (barrel end moving +y) makes mode shapes reproducible across solvers.
+  const VectorXd barrel_end = s.slice_displacement.transpose() * VectorXd::Unit(bat.slices(), bat.slices() - 1);
   for (int n = 2; n < x.cols(); ++n)
-    if (s.slice_displacement.row(bat.slices() - 1).dot(x.col(n)) < 0) x.col(n) *= -1;
+    if (barrel_end.dot(x.col(n)) < 0) x.col(n) *= -1;
   // Row i of the map reads the degrees of freedom 2i to 2i + 3 (both theories: beam_system.cpp).
-  basis.psi = sparse_band(s.slice_displacement, 2, 0, 3) * x;
+  basis.psi = s.slice_displacement * x;
   basis.vectors = std::move(x);
   if (partial && !basis.complete())
     basis.solved_below = request.vibrational > 0 ? basis.omega(basis.count() - 1) : request.below_omega;
@@ -205,8 +242,6 @@ BeamTheory parse_beam_theory(const std::string& text) {
   throw InputError("theory '" + text + "': expected 'timoshenko' or 'euler-bernoulli'");
 }
 
-int vibrational_mode_count(int slices, BeamTheory theory) {
-  return (theory == BeamTheory::timoshenko ? 2 * slices : 2 * (slices + 1)) - 2;
-}
+int vibrational_mode_count(int slices, BeamTheory theory) { return degrees_of_freedom(slices, theory) - 2; }
 
 }  // namespace sweetspot

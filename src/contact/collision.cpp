@@ -343,6 +343,7 @@ const char* to_string(CollisionStatus status) {
     case CollisionStatus::unbalanced: return "unbalanced";
     case CollisionStatus::no_contact: return "no_contact";
     case CollisionStatus::failed: return "failed";
+    case CollisionStatus::inaccurate: return "inaccurate";
   }
   return "unknown";
 }
@@ -392,12 +393,14 @@ double impulse_time(const std::vector<ForceSample>& force, double fraction) {
 }
 
 Collision collide(const ModalContact& body, const Ball& ball, double ball_speed, const CollisionOptions& options) {
+  Collision c;
   switch (options.method) {
-    case Method::exact: return CollisionRun<detail::ExactStepper>(body, ball, ball_speed, options).run();
+    case Method::exact: c = CollisionRun<detail::ExactStepper>(body, ball, ball_speed, options).run(); break;
     case Method::dopri: return CollisionRun<detail::DopriStepper>(body, ball, ball_speed, options).run();
-    case Method::rk4: break;
+    case Method::rk4: c = CollisionRun<detail::Rk4Stepper>(body, ball, ball_speed, options).run(); break;
   }
-  return CollisionRun<detail::Rk4Stepper>(body, ball, ball_speed, options).run();
+  c.step = options.dt;
+  return c;
 }
 
 const char* to_string(Method method) {

@@ -16,7 +16,7 @@ double collision_efficiency(const ModalBasis& basis, const ImpactScene& scene, d
   rest.pivoted = scene.pivoted;
   rest.vibrational_modes = scene.vibrational_modes;
   rest.mode_tolerance = scene.mode_tolerance;
-  rest.accuracy = scene.accuracy;
+  rest.step_accuracy = scene.step_accuracy;
   rest.integrator = scene.integrator;
   rest.integrator.record_force = rest.integrator.find_collision_time = false;
   const ImpactResult r = simulate_impact(basis, rest);

@@ -5,6 +5,8 @@
 #include <numbers>
 #include <sstream>
 
+#include "sweetspot/ball/ball_tests.hpp"
+#include "sweetspot/impact/error_estimates.hpp"
 #include "sweetspot/input_error.hpp"
 #include "sweetspot/impact/mode_selection.hpp"
 #include "toml_values.hpp"
@@ -198,27 +200,27 @@ void validate(const ImpactScene& scene, const ModalBasis& basis) {
   const double length = basis.length();
   if (!lies_on_bat(scene.z, length)) reject_off_bat("z", scene.z, length);
   require_finite("ball_speed", scene.ball_speed);
-  require_finite("omega", scene.swing.omega);
+  if (!valid_omega(scene.swing.omega)) reject("omega", scene.swing.omega, std::string("expected ") + omega_expected);
   require_finite(scene.swing.about_center ? "center" : "cm_speed",
                  scene.swing.about_center ? scene.swing.center : scene.swing.cm_speed);
-  require_positive("ball.mass", scene.ball.mass);
-  require_positive("ball.radius", scene.ball.radius);
-  require_positive("k1", scene.ball.k1);
-  require_positive("a", scene.ball.a);
-  if (!(scene.ball.e0 > 0 && scene.ball.e0 <= 1)) reject("e0", scene.ball.e0, "must lie in (0, 1]");
+  // The ball's ranges, as a [ball] table and a study's keys take them (ball_tests.hpp).
+  if (const auto outside = ball_out_of_range(scene.ball)) reject(outside->key, outside->value, outside->expected());
   if (scene.ball.speed_dependent()) {
     require_finite("cor_slope", scene.ball.cor_slope);
     if (!(scene.ball.cor_speed >= 0 && scene.ball.cor_speed <= max_cor_law_speed))
       reject("cor_speed", scene.ball.cor_speed, "must lie in [0, 100] m/s");
     for (const double v : {0.0, max_cor_law_speed})
-      if (!(scene.ball.cor_at(v) > 0 && scene.ball.cor_at(v) <= 1))
+      if (!in_range(ball_cor_range, scene.ball.cor_at(v)))
         reject("cor_slope", scene.ball.cor_slope,
-               "gives a COR outside (0, 1] at " + std::to_string(v) + " m/s: not a physical ball");
+               "gives a COR of " + detail::format_number(scene.ball.cor_at(v)) + " at " + detail::format_number(v) +
+                   " m/s: not a physical ball (expected " + range_text(ball_cor_range) + ")");
   }
   require_positive("dt", scene.integrator.dt);
   require_positive("tolerance", scene.integrator.tolerance);
   require_positive("mode_tolerance", scene.mode_tolerance);
-  if (scene.accuracy != 0) require_positive("accuracy", scene.accuracy);
+  if (scene.step_accuracy != 0) require_positive("step_accuracy", scene.step_accuracy);
+  if (scene.accuracy != 0 && !(scene.accuracy >= min_accuracy && scene.accuracy <= max_accuracy))
+    reject("accuracy", scene.accuracy, std::string("must be ") + accuracy_expected);
   require_positive("window", scene.integrator.window);
   if (scene.histories) validate_history(scene.history, length);
   if (scene.pivoted && !scene.swing.about_center)
@@ -261,7 +263,9 @@ Ball struck_ball(const ImpactScene& scene, const ModalBasis& basis) {
 ModeRequest auto_mode_request(const ImpactScene& scene, const ModalBasis& basis) {
   const SceneGeometry g = rigid_geometry(scene, basis);
   const double pulse = pulse_duration(struck_ball(scene, basis), scene.ball_speed + g.bat_speed, g.recoil);
-  const double omega = auto_solve_factor(scene.mode_tolerance) * 4 * std::numbers::pi / pulse;
+  // A stated accuracy's share for the modes is their tolerance (scene_for_accuracy).
+  const double tolerance = scene.accuracy > 0 ? accuracy_budget(scene.accuracy).modes : scene.mode_tolerance;
+  const double omega = auto_solve_factor(tolerance) * 4 * std::numbers::pi / pulse;
   if (!std::isfinite(omega) || !(omega > 0)) return ModeRequest::all();  // a scene validation will refuse
   // Half-octaves of 1000 rad/s: nearby pulses share one basis.
   return ModeRequest::below(1000 * std::exp2(std::ceil(2 * std::log2(std::max(omega, 1000.0) / 1000)) / 2));

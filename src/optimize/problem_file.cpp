@@ -7,6 +7,7 @@
 #include "ball/ball_table.hpp"
 #include "sweetspot/impact/equal_effort.hpp"
 #include "problem_values.hpp"
+#include "sweetspot/ball/ball_tests.hpp"
 #include "sweetspot/input_error.hpp"
 
 namespace sweetspot {
@@ -119,9 +120,7 @@ Player read_player(const Where& top, const toml::table& doc, OptimizationProblem
   if (cm) p.swing.cm_speed = number_key(at, t, "cm_speed", 0, finite, "a finite speed", Dimension::speed);
   // The swing turns the barrel toward the ball: v(z) = V_cm + omega (z - z_cm), + toward the ball
   // (scene.hpp), so a batter's omega is >= 0; a negative one would swing the barrel away from the pitch.
-  p.swing.omega = required_number(at, t, "omega", [](double v) { return v >= 0; },
-                                  "the swing's angular speed, finite and >= 0 (the barrel turning toward the ball)",
-                                  Dimension::angular_speed);
+  p.swing.omega = required_number(at, t, "omega", valid_omega, omega_expected, Dimension::angular_speed);
   p.ball_speed = required_number(at, t, "ball_speed", [](double v) { return v >= 0; },
                                  "the pitch's speed toward the bat, finite and >= 0", Dimension::speed);
   // The pitched ball: the file's [ball] table (README "Balls"), N2000's without one; e0 sets its COR.
@@ -129,7 +128,8 @@ Player read_player(const Where& top, const toml::table& doc, OptimizationProblem
     if (!ball->is_table()) reject(top.child("ball", *ball), describe(*ball), "expected a table [ball]");
     p.ball = detail::read_ball_table(*ball->as_table(), top.file->string() + ": [ball]").ball;
   }
-  p.ball.e0 = number_key(at, t, "e0", p.ball.e0, [](double v) { return v > 0 && v <= 1; }, "a COR in (0, 1]");
+  p.ball.e0 = number_key(at, t, "e0", p.ball.e0, [](double v) { return in_range(ball_cor_range, v); },
+                         range_text(ball_cor_range));
   if (!p.equal_effort) {
     for (const char* key : {"reference_bat", "swing_exponent"})
       if (const toml::node* node = t.get(key))
@@ -186,17 +186,26 @@ void check_model(const Where& top, const toml::table& doc, const OptimizationPro
   const Where at{top.file, "model", doc.get("model") ? doc.get("model")->source().begin.line : 0};
   BatDesign shortest = problem.base;
   set_design_parameter(shortest, "length", length);
-  int modes = 0;
+  int modes = 0, slices = 0;
   try {
     Bat bat = build_bat(shortest);
     if (problem.model.slices > 0) bat = resample(bat, problem.model.slices);
     modes = static_cast<int>(compute_modes(bat, problem.model.theory, ModeRequest::rigid_only()).vectors.rows()) - 2;
+    slices = bat.slices();
   } catch (const InputError& e) {
     reject(at, "{...}", std::string("cannot model the shortest design: ") + e.what());
   }
-  if (problem.model.vibrational_modes > modes)
-    reject(at.child("modes", *doc["model"]["modes"].node()), std::to_string(problem.model.vibrational_modes),
+  const int asked = problem.model.vibrational_modes;
+  const auto modes_at = [&] { return at.child("modes", *doc["model"]["modes"].node()); };
+  if (asked > modes)
+    reject(modes_at(), std::to_string(asked),
            "expected at most the " + std::to_string(modes) + " vibrational modes of the shortest design, \"all\" or \"auto\"");
+  // A solve that would take longer than is practical at the model's slices (every design's).
+  if (asked != auto_modes && asked != 0)
+    if (const auto why = impractical_solve(slices, problem.model.theory,
+                                           asked == all_modes ? ModeRequest::all() : ModeRequest::lowest(asked)))
+      reject(modes_at(), asked == all_modes ? "\"all\"" : std::to_string(asked),
+             "at " + std::to_string(slices) + " slices: " + *why);
 }
 
 // ---- [optimizer] ---------------------------------------------------------------------------

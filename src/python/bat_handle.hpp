@@ -13,6 +13,7 @@
 #include "sweetspot/bat/bat_design.hpp"
 #include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/bat/modes.hpp"
+#include "sweetspot/impact/error_estimates.hpp"
 
 namespace sweetspot::python {
 
@@ -42,6 +43,16 @@ class BatHandle {
     return cache_.emplace(key, std::move(solved)).first->second;
   }
 
+  // The same design at slicing_refinement times the slices (error_estimates.hpp), made on first
+  // use and kept: its bases are cached as this bat's are. nullptr where it cannot be refined.
+  BatHandle* finer(BeamTheory theory) {
+    if (!can_refine(bat_.slices(), theory)) return nullptr;
+    const std::lock_guard lock(mutex_);
+    if (!finer_)
+      finer_ = std::make_unique<BatHandle>(bat_with_slices(design_, slicing_refinement * bat_.slices()), design_);
+    return finer_.get();
+  }
+
  private:
   using Key = std::tuple<int, int, double>;
   Bat bat_;
@@ -50,6 +61,7 @@ class BatHandle {
   MassProperties mass_;
   std::mutex mutex_;
   std::map<Key, std::shared_ptr<const ModalBasis>> cache_;
+  std::unique_ptr<BatHandle> finer_;
 };
 
 }  // namespace sweetspot::python

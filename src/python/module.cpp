@@ -47,14 +47,48 @@ const std::filesystem::path& shipped_bats() {
 py::array_t<double> array(const std::vector<double>& v) { return py::array_t<double>(v.size(), v.data()); }
 py::array_t<double> array(const Eigen::VectorXd& v) { return py::array_t<double>(v.size(), v.data()); }
 
-// One impact as the program's `impact` runs it: the rigid basis, the request it asks for, the
-// basis of that request (both cached on the bat), the collision.
-ImpactResult run_impact(BatHandle& bat, const SceneArgs& args) {
-  const auto rigid = bat.basis(args.theory, ModeRequest::rigid_only());
-  const auto basis = bat.basis(args.theory, impact_mode_request(args.scene, *rigid));
-  ImpactResult r = simulate_impact(*basis, args.scene);
+// The bat's basis for the scene: the rigid basis, the request it asks for, the basis of that
+// request, both cached on the bat (as the program's `impact` and a study's point solve it).
+std::shared_ptr<const ModalBasis> scene_basis(BatHandle& bat, const SceneArgs& args) {
+  return bat.basis(args.theory, impact_mode_request(args.scene, *bat.basis(args.theory, ModeRequest::rigid_only())));
+}
+
+// At a stated accuracy (error_estimates.hpp): the bat's design cut as finely as the scene needs,
+// each finer bat made once and kept on the bat (BatHandle::finer).
+ImpactResult run_within_accuracy(BatHandle& bat, const SceneArgs& args) {
+  std::vector<std::shared_ptr<const ModalBasis>> held;  // the bases simulate_within_accuracy refers to
+  const auto basis_at = [&](int slices) -> const ModalBasis& {
+    BatHandle* handle = &bat;
+    while (handle->bat().slices() < slices) handle = handle->finer(args.theory);  // judge_level stops in time
+    return *held.emplace_back(scene_basis(*handle, args));
+  };
+  return simulate_within_accuracy(basis_at, bat.bat().slices(), args.theory, args.scene);
+}
+
+ImpactResult checked(ImpactResult r) {
   if (r.status == CollisionStatus::refused_step) throw InputError("dt: " + r.message);
   return r;
+}
+
+// One impact as `impacts` runs it: its estimates only those a stated accuracy needs.
+ImpactResult run_impact(BatHandle& bat, const SceneArgs& args) {
+  if (args.scene.accuracy > 0) return checked(run_within_accuracy(bat, args));
+  return checked(simulate_impact(*scene_basis(bat, args), args.scene));
+}
+
+// One impact with every error estimate, as the program's `impact` gives it: at a stated accuracy
+// as finely cut as it needs, otherwise at the bat's slices with the slicing error from its design
+// at twice and four times them.
+ImpactResult run_impact_with_errors(BatHandle& bat, SceneArgs args) {
+  args.scene.error_estimates = true;
+  if (args.scene.accuracy > 0) return checked(run_within_accuracy(bat, args));
+  std::vector<std::shared_ptr<const ModalBasis>> finer;  // twice and four times the slices, as far as it can
+  BatHandle* handle = &bat;
+  for (int times = 0; times < 2 && (handle = handle->finer(args.theory)); ++times)
+    finer.push_back(scene_basis(*handle, args));
+  std::vector<const ModalBasis*> finer_bases;
+  for (const auto& b : finer) finer_bases.push_back(b.get());
+  return checked(simulate_impact_with_errors(*scene_basis(bat, args), finer_bases, args.scene));
 }
 
 // The result under the names of `sweetspot impact --json`, in its order; NaN where JSON has null.
@@ -88,6 +122,8 @@ py::dict result_dict(const ImpactResult& r, const Bat& bat) {
   d["mode_energy"] = array(r.mode_energy);
   d["modes_kept"] = py::array_t<int>(r.modes_kept.size(), r.modes_kept.data());
   d["modes_error"] = r.modes_error;
+  d["slicing_error"] = r.slicing_error, d["step_error"] = r.step_error, d["total_error"] = r.total_error;
+  d["slices_used"] = r.slices_used, d["step_used"] = r.step_used;
   d["contacts"] = r.contacts;
   if (bat.hollow()) d["barrel"] = barrel_dict(bat.material.barrel);
   return d;
@@ -99,7 +135,7 @@ const std::vector<std::string> impacts_outputs = {
     "bpf",    "contact_time", "collision_time", "u_max",      "peak_force", "impulse",
     "energy_initial", "energy_ball", "energy_bat_translation", "energy_bat_rotation", "energy_vibration",
     "energy_ball_dissipated", "energy_residual", "modes_error", "hoop_frequency", "energy_barrel",
-    "energy_damped", "barrel_compression"};
+    "energy_damped", "barrel_compression", "slicing_error", "total_error", "slices_used"};
 
 void fill_row(const ImpactResult& r, double* row) {
   const double values[] = {r.vf,
@@ -125,7 +161,10 @@ void fill_row(const ImpactResult& r, double* row) {
                            r.hoop_frequency,
                            r.energy.barrel,
                            r.energy.damped,
-                           r.barrel_compression};
+                           r.barrel_compression,
+                           r.slicing_error,
+                           r.total_error,
+                           static_cast<double>(r.slices_used)};
   std::copy(std::begin(values), std::end(values), row);
 }
 
@@ -162,6 +201,11 @@ py::dict run_impacts(BatHandle& bat, const py::dict& scalars, const py::dict& ar
   std::vector<std::pair<int, const double*>> data;
   for (const auto& [which, column] : columns) data.emplace_back(which, column.data());
 
+  for (py::ssize_t i = 0; i < n; ++i) {  // every point's ball in its ranges before any point runs
+    ImpactScene scene = base.scene;
+    for (const auto& [which, values] : data) set_point_argument(scene, which, values[i]);
+    check_point_ranges(scene);
+  }
   const std::size_t width = impacts_outputs.size();
   std::vector<double> rows(static_cast<std::size_t>(n) * width);
   std::vector<int> status(n), contacts(n), kept(n);
@@ -314,7 +358,7 @@ outer_diameter and inner_diameter (per slice, m).)");
     ImpactResult r;
     {
       py::gil_scoped_release release;
-      r = run_impact(bat, scene);
+      r = run_impact_with_errors(bat, scene);
     }
     return py::make_tuple(result_dict(r, bat.bat()), scene.scene.ball.radius);
   });
@@ -328,7 +372,7 @@ outer_diameter and inner_diameter (per slice, m).)");
   });
   m.def("_status_names", [] {
     py::list names;
-    for (int k = 0; k <= static_cast<int>(CollisionStatus::failed); ++k)
+    for (int k = 0; k <= static_cast<int>(last_collision_status); ++k)
       names.append(to_string(static_cast<CollisionStatus>(k)));
     return names;
   });

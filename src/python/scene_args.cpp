@@ -6,6 +6,8 @@
 #include <pybind11/stl.h>
 
 #include "sweetspot/ball/ball_file.hpp"
+#include "sweetspot/ball/ball_tests.hpp"
+#include "sweetspot/impact/error_estimates.hpp"
 #include "sweetspot/impact/n2000_settings.hpp"
 #include "sweetspot/input_error.hpp"
 
@@ -19,7 +21,7 @@ const std::set<std::string>& known_arguments() {
   static const std::set<std::string> names = {
       "z",  "ball_speed", "cm_speed",    "center", "omega",          "e0",       "ball_mass", "ball_radius",
       "k1", "a",          "pivot",       "modes",  "mode_tolerance", "accuracy", "integrator", "dt",
-      "tolerance", "window", "theory", "n2000", "ball"};
+      "tolerance", "window", "theory", "n2000", "ball", "step_accuracy"};
   return names;
 }
 
@@ -60,6 +62,18 @@ Dimension dimension_named(const std::string& name) {
 }
 
 }  // namespace
+
+void check_point_ranges(const ImpactScene& scene, const std::set<std::string>& per_point) {
+  char value[32];
+  if (const auto outside = ball_out_of_range(scene.ball); outside && !per_point.contains(outside->key)) {
+    std::snprintf(value, sizeof value, "%.10g", outside->value);
+    throw InputError(outside->key + " " + value + ": " + outside->expected());
+  }
+  if (!valid_omega(scene.swing.omega) && !per_point.contains("omega")) {
+    std::snprintf(value, sizeof value, "%.10g", scene.swing.omega);
+    throw InputError(std::string("omega ") + value + ": expected " + omega_expected);
+  }
+}
 
 std::optional<double> real_number(const py::handle& value) {
   // A complex number would lose its imaginary part, a bool read as 0 or 1: neither is a value.
@@ -158,6 +172,7 @@ SceneArgs scene_args(const py::dict& args, const std::set<std::string>& per_poin
   for (std::size_t k = 0; k < names.size(); ++k)
     if (has(names[k].c_str()))
       set_point_argument(s, static_cast<int>(k), point_number(names[k], get(names[k].c_str())));
+  check_point_ranges(s, per_point);
   if (!given.contains("z")) throw InputError("impact: z is required");
   if (!given.contains("ball_speed")) throw InputError("impact: ball_speed is required");
   const bool cm = given.contains("cm_speed"), center = given.contains("center");
@@ -168,12 +183,30 @@ SceneArgs scene_args(const py::dict& args, const std::set<std::string>& per_poin
   if (has("theory")) out.theory = parse_beam_theory(text("theory", get("theory"), "\"timoshenko\" or \"euler-bernoulli\""));
   if (has("pivot")) s.pivoted = flag("pivot", get("pivot"));
   if (has("mode_tolerance")) s.mode_tolerance = number("mode_tolerance", get("mode_tolerance"));
-  if (has("accuracy")) {  // as a study's key and --accuracy: a stated accuracy is > 0, and chooses the step
+  // As a study's keys and --accuracy, --step-accuracy: each in its range, neither beside what it
+  // chooses itself.
+  if (has("accuracy")) {
     s.accuracy = number("accuracy", get("accuracy"));
-    if (!(std::isfinite(s.accuracy) && s.accuracy > 0))
+    if (!(s.accuracy >= min_accuracy && s.accuracy <= max_accuracy))
       throw InputError("accuracy " + py::repr(get("accuracy")).cast<std::string>() + ": expected " + accuracy_expected);
-    if (has("dt")) throw InputError("impact: dt excludes accuracy (which chooses the step): give one of them");
   }
+  if (has("step_accuracy")) {
+    s.step_accuracy = number("step_accuracy", get("step_accuracy"));
+    if (!(std::isfinite(s.step_accuracy) && s.step_accuracy > 0))
+      throw InputError("step_accuracy " + py::repr(get("step_accuracy")).cast<std::string>() + ": expected " +
+                       step_accuracy_expected);
+  }
+  const auto refuse_pair = [&](const char* given_name, const char* accuracy, const char* what) {
+    if (has(given_name) && has(accuracy))
+      throw InputError(std::string("impact: ") + given_name + " excludes " + accuracy + " (which chooses " + what +
+                       "): give one of them");
+  };
+  for (const char* accuracy : {"accuracy", "step_accuracy"}) {
+    refuse_pair("dt", accuracy, "the step");
+    refuse_pair("tolerance", accuracy, "dopri's tolerance");
+  }
+  refuse_pair("step_accuracy", "accuracy", "the step");
+  refuse_pair("mode_tolerance", "accuracy", "the modes' tolerance");
   if (has("tolerance")) s.integrator.tolerance = number("tolerance", get("tolerance"));
   if (has("window")) s.integrator.window = number("window", get("window"));
   // As the program's --n2000: RK4 at 5 us and 18 modes unless integrator, dt or modes say otherwise.

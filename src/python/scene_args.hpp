@@ -43,6 +43,11 @@ double number(const std::string& name, const pybind11::handle& value);
 // called with the GIL released.
 void set_point_argument(ImpactScene& scene, int which, double value);
 
+// The ball's ranges (ball_tests.hpp) and the swing's omega (>= 0) before any work: InputError
+// "ball_mass 1e-300: expected a mass in [0.001, 10] kg" for the first value out of range, unless it
+// is given per point (those are checked point by point, before any point runs).
+void check_point_ranges(const ImpactScene& scene, const std::set<std::string>& per_point = {});
+
 // The program's --modes: a count, "all" or "auto"; throws InputError for anything else.
 int parse_modes(const pybind11::handle& value);
 

@@ -32,7 +32,8 @@ py::dict scene_record(const SceneArgs& args, const std::set<std::string>& per_po
   else if (s.vibrational_modes == auto_modes) d["scene_modes"] = "auto";
   else d["scene_modes"] = s.vibrational_modes;
   d["scene_mode_tolerance"] = s.mode_tolerance;
-  d["scene_accuracy"] = s.accuracy;  // 0: the step as given (dt)
+  d["scene_accuracy"] = s.accuracy;            // 0: none stated
+  d["scene_step_accuracy"] = s.step_accuracy;  // 0: the step as given (dt)
   d["scene_integrator"] = to_string(s.integrator.method);
   d["scene_dt"] = s.integrator.dt;
   d["scene_tolerance"] = s.integrator.tolerance;

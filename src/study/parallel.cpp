@@ -17,6 +17,7 @@
 #include <string_view>
 #include <tuple>
 
+#include "sweetspot/impact/error_estimates.hpp"
 #include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/study/output_paths.hpp"
 #include "sweetspot/study/affinity.hpp"
@@ -206,6 +207,9 @@ class ModalCache {
   }
 
   ModalBasis solve(const GridPoint& p, ModeRequest request) const {
+    // A point at other slices (with_design_slices): the design cut anew, so that knots and
+    // dimensions are sampled from their shape.
+    if (p.slices < 0) return compute_modes(bat_with_slices(study_.design_specs[p.design], -p.slices), p.theory, request);
     Bat bat = study_.designs[p.design];
     if (p.slices > 0) bat = resample(bat, p.slices);
     return compute_modes(bat, p.theory, request);
@@ -248,6 +252,78 @@ class ModalCache {
   double solve_seconds_ = 0;
 };
 
+GridPoint without_estimates_point(GridPoint p) {
+  p.scene.error_estimates = false;
+  return p;
+}
+
+// The point on its design cut into `slices` slices, which ModalCache::solve cuts from the design
+// itself (slices negative): knots and dimensions sampled from their shape, a slice profile exact
+// at any multiple of its rows.
+GridPoint with_design_slices(GridPoint p, int slices) {
+  p.slices = -slices;
+  return p;
+}
+
+int point_slices(const Study& study, const GridPoint& p) {
+  if (p.slices < 0) return -p.slices;
+  return p.slices > 0 ? p.slices : study.designs[p.design].slices();
+}
+
+// The point at twice and four times its slices (as far as it can be cut), for the slicing error of
+// a point that asks for its estimates without a stated accuracy (error_estimates.hpp); their own
+// estimates are not asked. None for a point that asks no estimate or states an accuracy.
+std::vector<GridPoint> finer_points(const Study& study, const GridPoint& p) {
+  if (p.kind != StudyKind::impact || !p.scene.error_estimates || p.scene.accuracy > 0) return {};
+  std::vector<GridPoint> finer;
+  for (int times = 1, slices = point_slices(study, p); times <= 2 && can_refine(point_slices(study, p), p.theory, times);
+       ++times)
+    finer.push_back(with_design_slices(without_estimates_point(p), slices *= slicing_refinement));
+  return finer;
+}
+
+// The chunk's points at a stated accuracy (`results` holds their first rung, at their own slices):
+// each climbs its SlicingLadder, a rung for every point at once, each rung's bases solved before
+// its impacts, as a chunk's are, so that any ranks and threads give the same results.
+void refine_to_accuracy(const Study& study, ModalCache& cache, const std::vector<GridPoint>& grid,
+                        std::vector<ImpactResult>& results) {
+  std::vector<std::size_t> pending;
+  std::vector<SlicingLadder> ladders;
+  for (std::size_t i = 0; i < grid.size(); ++i) {
+    if (grid[i].kind != StudyKind::impact || !(grid[i].scene.accuracy > 0)) continue;
+    SlicingLadder& ladder = ladders.emplace_back(point_slices(study, grid[i]), grid[i].theory, grid[i].scene);
+    if (ladder.add(std::move(results[i]))) {
+      results[i] = ladder.take_result();
+      ladders.pop_back();
+    } else {
+      pending.push_back(i);
+    }
+  }
+  while (!pending.empty()) {
+    std::vector<GridPoint> rung(pending.size());
+    for (std::size_t k = 0; k < pending.size(); ++k)
+      rung[k] = with_design_slices(grid[pending[k]], ladders[k].next_slices());
+    cache.prefetch(rung);
+    std::vector<const ModalBasis*> bases(rung.size());
+    std::vector<std::string> reasons(rung.size());
+    for (std::size_t k = 0; k < rung.size(); ++k) bases[k] = cache.get(rung[k], reasons[k]);
+    std::vector<char> done(pending.size(), 0);
+#pragma omp parallel for schedule(dynamic)
+    for (std::size_t k = 0; k < pending.size(); ++k) {
+      done[k] = ladders[k].add(guarded_point(rung[k], bases[k], reasons[k]));
+      if (done[k]) results[pending[k]] = ladders[k].take_result();
+    }
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < pending.size(); ++k)
+      if (!done[k]) {
+        if (kept != k) pending[kept] = pending[k], ladders[kept] = std::move(ladders[k]);
+        ++kept;
+      }
+    pending.resize(kept);
+    ladders.erase(ladders.begin() + static_cast<std::ptrdiff_t>(kept), ladders.end());
+  }
+}
+
 // Computes a chunk of points with the OpenMP threads; rows in the order of `points`. Adds the
 // chunk to the rank's tally.
 std::vector<double> compute_chunk(const Study& study, const OutputLayout& layout, ModalCache& cache,
@@ -257,28 +333,61 @@ std::vector<double> compute_chunk(const Study& study, const OutputLayout& layout
   std::vector<std::string> reasons(points.size());  // why a point failed: first its modes', then its own
   cache.make_room();
   for (std::size_t i = 0; i < points.size(); ++i) grid[i] = grid_point(study, points[i]);
-  cache.prefetch(grid);  // the chunk's bats solved over the threads
-  for (std::size_t i = 0; i < points.size(); ++i)  // then looked up serially: the cache is not shared
+  // The finer points of those asking for their slicing error, and their bases.
+  std::vector<std::vector<GridPoint>> finer(points.size());
+  std::vector<std::vector<const ModalBasis*>> finer_bases(points.size());
+  std::vector<GridPoint> to_solve = grid;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    finer[i] = finer_points(study, grid[i]);
+    to_solve.insert(to_solve.end(), finer[i].begin(), finer[i].end());
+  }
+  cache.prefetch(to_solve);  // the chunk's bats solved over the threads
+  for (std::size_t i = 0; i < points.size(); ++i) {  // then looked up serially: the cache is not shared
     if (needs_modal_basis(grid[i].kind)) bases[i] = cache.get(grid[i], reasons[i]);
-  std::vector<double> rows(points.size() * layout.width);
-  std::vector<char> failed(points.size(), 0);  // char, not bool: each thread writes its own
+    std::string ignored;  // a finer basis that failed: the slicing error stays NaN
+    for (const GridPoint& f : finer[i]) finer_bases[i].push_back(cache.get(f, ignored));
+  }
+  std::vector<ImpactResult> results(points.size());
+  std::vector<char> lost(points.size(), 0);  // char, not bool: each thread writes its own
   const auto start = Clock::now();
-  std::size_t past_radius = 0;
-#pragma omp parallel for schedule(dynamic) reduction(+ : past_radius)
+#pragma omp parallel for schedule(dynamic)
   for (std::size_t i = 0; i < points.size(); ++i) {
     try {
-      const ImpactResult r = guarded_point(grid[i], bases[i], reasons[i]);
-      // The toy model's ball is dimensionless: no radius to pass.
-      if (grid[i].kind != StudyKind::toy && grid[i].kind != StudyKind::certification &&
-          r.u_max > grid[i].scene.ball.radius)
-        ++past_radius;
-      layout.extract(r, rows.data() + i * layout.width);
-      failed[i] = r.status == CollisionStatus::failed;
-      if (failed[i]) reasons[i] = r.message;
+      results[i] = guarded_point(grid[i], bases[i], reasons[i]);
+      if (finer[i].empty()) continue;
+      std::vector<double> vf{results[i].vf};
+      bool finer_ok = true;
+      for (std::size_t k = 0; k < finer[i].size() && finer_ok; ++k) {
+        finer_ok = finer_bases[i][k] != nullptr;
+        if (!finer_ok) break;
+        const ImpactResult f = guarded_point(finer[i][k], finer_bases[i][k], {});
+        finer_ok = f.status == CollisionStatus::ok;
+        vf.push_back(f.vf);
+      }
+      add_slicing_error(results[i], vf, 0, finer_ok, grid[i].scene.ball_speed);
     } catch (...) {  // no memory left even to record the point: all NaN (status -1 in the dataset)
+      lost[i] = 1;
+      results[i].status = CollisionStatus::failed;  // and no further slicings
+    }
+  }
+  refine_to_accuracy(study, cache, grid, results);
+  std::vector<double> rows(points.size() * layout.width);
+  std::vector<char> failed(points.size(), 0);
+  std::size_t past_radius = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (lost[i]) {
       std::fill_n(rows.data() + i * layout.width, layout.width, std::nan(""));
       failed[i] = 1;
+      continue;
     }
+    const ImpactResult& r = results[i];
+    // The toy model's ball is dimensionless: no radius to pass.
+    if (grid[i].kind != StudyKind::toy && grid[i].kind != StudyKind::certification &&
+        r.u_max > grid[i].scene.ball.radius)
+      ++past_radius;
+    layout.extract(r, rows.data() + i * layout.width);
+    failed[i] = r.status == CollisionStatus::failed || r.status == CollisionStatus::inaccurate;
+    if (failed[i]) reasons[i] = r.message;
   }
   tally.impact_seconds += seconds_since(start);
   tally.past_radius += past_radius;

@@ -36,9 +36,9 @@ void check_required(const Settings& s, const Where& top, StudyKind kind) {
 // The wall stands still, so only a ball moving toward it (speed > 0) ever touches it.
 void check_wall_speeds(const Settings& s) {
   const Setting& speed = *s["ball_speed"];
-  for (const double v : speed.values)
-    if (!(v > 0))
-      reject(speed.where, format_number(v), "expected a speed > 0 (m/s) toward the wall, which does not move");
+  for (std::size_t i = 0; i < speed.values.size(); ++i)
+    if (!(speed.values[i] > 0))
+      reject(speed.where, speed.value_text(i), "expected a speed > 0 (m/s) toward the wall, which does not move");
 }
 
 namespace {
@@ -46,7 +46,7 @@ namespace {
 void check_swing(const Settings& s, const Where& top) {
   const Setting *center = s["center"], *cm_speed = s["cm_speed"], *pivot = s["pivot"];
   if (center && cm_speed)
-    reject(center->where, format_number(center->values[0]),
+    reject(center->where, center->value_text(0),
            "expected exactly one of center and cm_speed, but key '" + cm_speed->where.key + "' is also given");
   if (!center && !cm_speed)
     reject(Where{top.file, "scene", 0}.missing("center"), "",
@@ -55,14 +55,32 @@ void check_swing(const Settings& s, const Where& top) {
     reject(pivot->where, "true", "a pivoted bat is held at its rotation centre: give center, not cm_speed");
 }
 
-// A stated accuracy chooses the step (or dopri's tolerance) from the scene's pulse: a dt given
-// beside it would be silently overridden, so the two are refused together.
+// A stated accuracy chooses the step (or dopri's tolerance) from the scene's pulse, and the total
+// one also the modes' tolerance and the slices: what it chooses, given beside it, would be
+// silently overridden, so each such pair is refused.
 void check_step_or_accuracy(const Settings& s) {
-  const Setting *accuracy = s["accuracy"], *dt = s["dt"];
-  if (accuracy && dt)
-    reject(dt->where, dt->values.size() == 1 ? format_number(dt->values[0]) : "[...]",
-           "expected dt or accuracy, not both: key '" + accuracy->where.key +
-               "' is also given, and chooses the step itself");
+  const auto refuse_pair = [&](const char* given_key, const char* accuracy_key, const char* what) {
+    const Setting *accuracy = s[accuracy_key], *given = s[given_key];
+    if (!accuracy || !given) return;
+    reject(given->where, given->values.size() == 1 ? given->value_text(0) : "[...]",
+           std::string("expected ") + given_key + " or " + accuracy_key + ", not both: key '" + accuracy->where.key +
+               "' is also given, and chooses " + what + " itself");
+  };
+  for (const char* accuracy : {"accuracy", "step_accuracy"}) {
+    refuse_pair("dt", accuracy, "the step");
+    refuse_pair("tolerance", accuracy, "dopri's tolerance");
+  }
+  refuse_pair("step_accuracy", "accuracy", "the step");
+  refuse_pair("mode_tolerance", "accuracy", "the modes' tolerance");
+  refuse_pair("slices", "accuracy", "the slices");
+  // A fixed mode count has no estimate of what its dropped modes cost: it cannot be held to one.
+  const Setting *accuracy = s["accuracy"], *modes = s["modes"];
+  if (accuracy && modes)
+    for (const double count : modes->values)
+      if (count >= 0)
+        reject(modes->where, format_number(count),
+               "a fixed number of modes cannot be held to key '" + accuracy->where.key +
+                   "': expected \"auto\" (the default) or \"all\"");
 }
 
 // The bat files, each read once into its design.
@@ -85,10 +103,8 @@ void load_bat_files(Study& study, const Setting& bat) {
   }
 }
 
-// A bat parameter's value as written: a number, or a preset's name.
-std::string parameter_value(const Setting& setting, std::size_t i) {
-  return setting.labels.empty() ? format_number(setting.values[i]) : quote(setting.labels[i]);
-}
+// A bat parameter's value as written: a number, a quantity with its unit, or a preset's name.
+std::string parameter_value(const Setting& setting, std::size_t i) { return setting.value_text(i); }
 
 void set_parameter(BatDesign& design, const Setting& setting, std::size_t i, const std::string& bat) {
   try {
@@ -184,11 +200,13 @@ std::vector<std::string> build_designs(Study& study, const Settings& s, const Se
 
 // Points on the bat (z, probes) must be on every bat.
 void check_on_bats(const Setting& points, const std::vector<Bat>& bats, const std::vector<std::string>& labels) {
-  for (const double x : points.values)
+  for (std::size_t i = 0; i < points.values.size(); ++i)
     for (std::size_t b = 0; b < bats.size(); ++b)
-      if (!lies_on_bat(x, bats[b].length)) {
+      if (const double x = points.values[i]; !lies_on_bat(x, bats[b].length)) {
         const auto [value, end] = detail::format_apart(x, x < 0 ? 0.0 : bats[b].length);
-        reject(points.where, value,
+        // A length with its unit as written, then in metres with the digits that part it from the end.
+        const std::string written = points.value_text(i);
+        reject(points.where, written.starts_with('"') ? written + " = " + value + " m" : value,
                "must lie on every bat of the study: 0 to " + (x < 0 ? format_number(bats[b].length) : end) +
                    " m for " + labels[b]);
       }
@@ -203,11 +221,19 @@ void check_mode_counts(const Settings& s, const Where& top, const std::vector<Ba
       for (const double theory : s.values("theory", 0))
         for (const double m : s.values("modes", default_mode_count(s))) {
           const int available = vibrational_mode_count(static_cast<int>(slices), static_cast<BeamTheory>(theory));
-          if (m == all_modes || m == auto_modes || m <= available) continue;
-          reject(where, format_number(m) + (modes ? "" : s["preset"] ? " (the n2000 preset)" : " (the default)"),
-                 labels[b] + " in " + format_number(slices) + " slices has " + std::to_string(available) +
-                     " vibrational modes (" + to_string(static_cast<BeamTheory>(theory)) +
-                     "); expected at most that, or \"all\"");
+          const std::string value =
+              (m == all_modes ? "\"all\"" : format_number(m)) +
+              (modes ? "" : s["preset"] ? " (the n2000 preset)" : " (the default)");
+          if (m != all_modes && m != auto_modes && m > available)
+            reject(where, value,
+                   labels[b] + " in " + format_number(slices) + " slices has " + std::to_string(available) +
+                       " vibrational modes (" + to_string(static_cast<BeamTheory>(theory)) +
+                       "); expected at most that, or \"all\"");
+          // A solve that would take longer than is practical (the full solve past 1024 slices).
+          const ModeRequest request = m == all_modes ? ModeRequest::all() : ModeRequest::lowest(static_cast<int>(m));
+          if (m != auto_modes && m != 0)
+            if (const auto why = impractical_solve(static_cast<int>(slices), static_cast<BeamTheory>(theory), request))
+              reject(where, value, labels[b] + " in " + format_number(slices) + " slices: " + *why);
         }
 }
 
@@ -239,7 +265,7 @@ void check_history_samples(const Settings& s) {
                          s.values("history_step", HistoryRequest{}.step)[0]};
   if (h.steps() > max_history_samples) {
     const Setting* at = s["history_step"] ? s["history_step"] : s["history_window"];
-    reject(at->where, format_number(at->values[0]),
+    reject(at->where, at->value_text(0),
            "history_window / history_step = " + format_number(h.steps()) + " samples; at most 1e5");
   }
 }
@@ -264,7 +290,8 @@ double fastest_kept_mode(const ModalBasis& basis, double modes, const double* pi
 void check_rk4_stability(const Settings& s, const Where& top, const std::vector<Bat>& bats,
                          const std::vector<std::string>& labels) {
   const Setting* integrator = s["integrator"];
-  if (!integrator || static_cast<Method>(integrator->values[0]) != Method::rk4 || s["accuracy"]) return;
+  if (!integrator || static_cast<Method>(integrator->values[0]) != Method::rk4 || s["accuracy"] || s["step_accuracy"])
+    return;
   const std::vector<double> steps = s.values("dt", default_step(Method::rk4));
   const double dt = *std::ranges::max_element(steps);
   const std::vector<double> pivots = s.values("pivot", 0), centers = s.values("center", 0);
@@ -275,9 +302,15 @@ void check_rk4_stability(const Settings& s, const Where& top, const std::vector<
     for (const double slices : s.values("slices", bats[b].slices()))
       for (const double theory : s.values("theory", 0)) {
         std::optional<ModalBasis> basis;  // solved only when some point keeps a vibrational mode
-        for (const double m : s.values("modes", default_modes)) {
+        const std::vector<double> counts = s.values("modes", default_modes);
+        // The modes the points keep, and no more: every one, or the lowest of the largest count.
+        const ModeRequest request = std::ranges::count(counts, all_modes)
+                                        ? ModeRequest::all()
+                                        : ModeRequest::lowest(static_cast<int>(std::ranges::max(counts)));
+        for (const double m : counts) {
           if (m == 0 || m == auto_modes) continue;
-          if (!basis) basis = compute_modes(resample(bats[b], static_cast<int>(slices)), static_cast<BeamTheory>(theory));
+          if (!basis)
+            basis = compute_modes(resample(bats[b], static_cast<int>(slices)), static_cast<BeamTheory>(theory), request);
           double omega = fastest_kept_mode(*basis, m, nullptr), center = 0;
           if (omega * dt <= rk4_stability_limit) continue;
           if (all_pivoted) {  // held, the fastest mode may be slow enough

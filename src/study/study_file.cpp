@@ -64,6 +64,11 @@ Study load_study(const fs::path& file) {
   base.scene.histories = std::ranges::any_of(study.outputs, is_history);
   base.scene.force_response = std::ranges::count(study.outputs, "force_response") > 0;
   base.scene.mode_response = std::ranges::count(study.outputs, "mode_response") > 0;
+  // The error estimates cost half an impact (step) and an impact on the bat at twice its slices
+  // (slicing, its modes solved once per bat): only when asked (error_estimates.hpp).
+  base.scene.error_estimates = std::ranges::any_of(study.outputs, [](const std::string& name) {
+    return name == "slicing_error" || name == "step_error" || name == "total_error";
+  });
   base.scene.integrator.find_collision_time = std::ranges::count(study.outputs, "collision_time") > 0;
   // A damped bat's loss is integrated only for a study that stores energies.
   base.scene.integrator.damping_loss =

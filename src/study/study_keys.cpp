@@ -7,6 +7,7 @@
 #include "sweetspot/ball/ball_tests.hpp"
 #include "sweetspot/bat/bat_design.hpp"
 #include "sweetspot/impact/equal_effort.hpp"
+#include "sweetspot/impact/error_estimates.hpp"
 #include "sweetspot/impact/histories.hpp"
 #include "toml_values.hpp"
 
@@ -21,7 +22,6 @@ bool finite(double x) { return std::isfinite(x); }
 bool positive(double x) { return std::isfinite(x) && x > 0; }
 bool step(double x) { return positive(x) && x >= finest_step; }  // as the commands' --dt
 bool on_bat(double x) { return std::isfinite(x) && x >= 0; }  // the bats' lengths: check_on_bats
-bool unit_interval(double x) { return x > 0 && x <= 1; }
 bool non_positive(double x) { return std::isfinite(x) && x <= 0; }
 bool cor_speed(double x) { return x >= 0 && x <= max_cor_law_speed; }
 bool slice_count(double x) { return x >= min_slices && x <= max_slices; }  // as `impact --slices`
@@ -30,8 +30,10 @@ bool ball_mass(double x) { return in_range(ball_mass_range, x); }
 bool ball_radius(double x) { return in_range(ball_radius_range, x); }
 bool ball_k1(double x) { return in_range(ball_k1_range, x); }
 bool ball_exponent(double x) { return in_range(ball_exponent_range, x); }
+bool ball_cor(double x) { return in_range(ball_cor_range, x); }
 bool swing_exponent(double x) { return valid_swing_exponent(x); }
 bool mode_count(double x) { return x >= 0 && x <= 1e6; }    // "all" and "auto" are not checked
+bool total_accuracy(double x) { return x >= min_accuracy && x <= max_accuracy; }
 
 constexpr KeySpec keys[] = {
     {"bat", Type::bat, "a bat file path (relative to the study file)", any,
@@ -43,7 +45,7 @@ constexpr KeySpec keys[] = {
     // The rig of a certification study: the standard, and its ball where the study overrides it.
     {"standard", Type::standard, "\"bbcor\", \"besr\" or \"bpf\"", any,
      [](GridPoint& p, double x) { p.standard = static_cast<std::size_t>(x); }, certification, 0, false},
-    {"rig_e0", Type::number, "a number in (0, 1] (the rig ball's COR; default the standard's)", unit_interval,
+    {"rig_e0", Type::number, "a COR in [0.05, 1] (the rig ball's; default the standard's)", ball_cor,
      [](GridPoint& p, double x) { p.rig_e0 = x; }, certification},
     {"rig_ball_speed", Type::number, "a finite speed > 0 (default the standard's)", positive,
      [](GridPoint& p, double x) { p.rig_ball_speed = x; }, certification, 0, true, Dimension::speed},
@@ -52,15 +54,16 @@ constexpr KeySpec keys[] = {
     // The wall takes only speeds > 0: check_wall_speeds.
     {"ball_speed", Type::number, "a finite speed", finite,
      [](GridPoint& p, double x) { p.scene.ball_speed = x; }, ball_kinds, ball_kinds, true, Dimension::speed},
-    {"e0", Type::number, "a number in (0, 1]", unit_interval, [](GridPoint& p, double x) { p.scene.ball.e0 = x; },
+    {"e0", Type::number, "a COR in [0.05, 1], as a [ball] table takes it", ball_cor,
+     [](GridPoint& p, double x) { p.scene.ball.e0 = x; },
      ball_kinds},
-    {"ball_mass", Type::number, "a mass in (0, 10] kg, as a [ball] table takes it", ball_mass,
+    {"ball_mass", Type::number, "a mass in [0.001, 10] kg, as a [ball] table takes it", ball_mass,
      [](GridPoint& p, double x) { p.scene.ball.mass = x; }, ball_kinds, 0, true, Dimension::mass},
-    {"ball_radius", Type::number, "a radius in (0, 1] m, as a [ball] table takes it", ball_radius,
+    {"ball_radius", Type::number, "a radius in [0.001, 1] m, as a [ball] table takes it", ball_radius,
      [](GridPoint& p, double x) { p.scene.ball.radius = x; }, ball_kinds, 0, true, Dimension::length},
-    {"k1", Type::number, "a stiffness in (1e3, 1e12] N/m^a, as a [ball] table takes it", ball_k1, [](GridPoint& p, double x) { p.scene.ball.k1 = x; },
+    {"k1", Type::number, "a stiffness k1 in [1000, 1e12] N/m^a, as a [ball] table takes it", ball_k1, [](GridPoint& p, double x) { p.scene.ball.k1 = x; },
      ball_kinds},
-    {"a", Type::number, "an exponent in (0.5, 3], as a [ball] table takes it", ball_exponent, [](GridPoint& p, double x) { p.scene.ball.a = x; },
+    {"a", Type::number, "an exponent a in [0.5, 3], as a [ball] table takes it", ball_exponent, [](GridPoint& p, double x) { p.scene.ball.a = x; },
      ball_kinds},
     // The ball's COR law (contact/ball.hpp): its fall with speed and the speed where the COR is e0.
     {"cor_slope", Type::number, "a finite number <= 0 (per m/s: how the COR falls with speed)", non_positive,
@@ -81,7 +84,7 @@ constexpr KeySpec keys[] = {
        p.scene.swing.about_center = false;
      },
      impact, 0, true, Dimension::speed},
-    {"omega", Type::number, "a finite angular speed", finite, [](GridPoint& p, double x) { p.scene.swing.omega = x; },
+    {"omega", Type::number, omega_expected, valid_omega, [](GridPoint& p, double x) { p.scene.swing.omega = x; },
      impact, 0, true, Dimension::angular_speed},
     {"pivot", Type::boolean, "true or false", any, [](GridPoint& p, double x) { p.scene.pivoted = x != 0; }},
     // Equal effort scales each bat's swing from the reference bat's by their MOIs (grid_point).
@@ -98,8 +101,10 @@ constexpr KeySpec keys[] = {
      [](GridPoint& p, double x) { p.scene.vibrational_modes = static_cast<int>(x); }, bat_kinds},
     {"mode_tolerance", Type::number, "a finite number > 0 (relative vf error allowed the dropped modes)", positive,
      [](GridPoint& p, double x) { p.scene.mode_tolerance = x; }},
-    {"accuracy", Type::number, "a finite number > 0 (relative vf error the integration may add)", positive,
-     [](GridPoint& p, double x) { p.scene.accuracy = x; }},
+    {"accuracy", Type::number, accuracy_expected, total_accuracy,
+     [](GridPoint& p, double x) { p.scene.accuracy = x; }, impact},
+    {"step_accuracy", Type::number, step_accuracy_expected, positive,
+     [](GridPoint& p, double x) { p.scene.step_accuracy = x; }},
     // N2000's settings (RK4 at 5 us, 18 modes) under the keys the study leaves out: load_study.
     {"preset", Type::preset, "\"n2000\" (RK4 at 5 us with 18 vibrational modes)", any, [](GridPoint&, double) {},
      ball_kinds, 0, false},
@@ -169,6 +174,11 @@ constexpr OutputSpec outputs[] = {
     {"mode_response", impact, 0},
     {"modes_kept", impact, 0},
     {"modes_error", impact, 0},
+    {"slicing_error", impact, 0},
+    {"step_error", impact, 0},
+    {"total_error", impact, 0},
+    {"slices_used", impact, 0},
+    {"step_used", impact, 0},
     {"status", every_kind, every_kind},
 };
 

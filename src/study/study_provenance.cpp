@@ -68,7 +68,8 @@ void add_scene_key(const Study& study, const std::string& key, SceneAttributes& 
   if (key == "rig_ball_speed") return std::isnan(study.rig_ball_speed) ? void() : out.number(key, study.rig_ball_speed);
   if (key == "modes") return add_modes(out, s.vibrational_modes);
   if (key == "mode_tolerance") return out.number(key, s.mode_tolerance);
-  if (key == "accuracy") return out.number(key, s.accuracy);  // 0: the step as given (dt)
+  if (key == "accuracy") return out.number(key, s.accuracy);  // 0: none stated
+  if (key == "step_accuracy") return out.number(key, s.step_accuracy);  // 0: the step as given (dt)
   if (key == "integrator") return out.text(key, to_string(s.integrator.method));
   if (key == "tolerance") return out.number(key, s.integrator.tolerance);
   if (key == "dt") return out.number(key, s.integrator.dt);

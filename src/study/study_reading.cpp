@@ -28,6 +28,12 @@ void reject(const Where& at, const std::string& value, const std::string& expect
   throw InputError(text);
 }
 
+std::string Setting::value_text(std::size_t i) const {
+  if (i < labels.size()) return quote(labels[i]);
+  if (i < written.size()) return written[i];
+  return format_number(values[i]);
+}
+
 const Setting* find(const std::vector<Setting>& settings, std::string_view name) {
   const auto it = std::ranges::find_if(settings, [&](const Setting& s) { return s.name == name; });
   return it == settings.end() ? nullptr : &*it;
@@ -90,10 +96,12 @@ const toml::table* subtable(const Where& at, const toml::table& parent, std::str
   return node ? node->as_table() : nullptr;
 }
 
-// A scene value as a number (see Axis); `label` keeps the names of bat and theory values.
+// A scene value as a number (see Axis); `label` keeps the names of bat and theory values,
+// `written` the value as the file has it.
 struct Value {
   double number = 0;
   std::string label;
+  std::string written = {};
 };
 
 // A value the key takes, with the units it may be written in when it has a dimension.
@@ -101,7 +109,7 @@ std::string expected_value(const KeySpec& spec, std::optional<Dimension> dimensi
   return std::string(spec.expected) + (dimension ? " " + quantity_hint(*dimension) : "");
 }
 
-Value read_value(const Where& at, const KeySpec& spec, std::optional<Dimension> dimension, const toml::node& node) {
+Value read_number(const Where& at, const KeySpec& spec, std::optional<Dimension> dimension, const toml::node& node) {
   const auto bad = [&] {
     reject(at, dimension ? describe_quantity(node) : describe(node), "expected " + expected_value(spec, dimension));
   };
@@ -146,8 +154,15 @@ Value read_value(const Where& at, const KeySpec& spec, std::optional<Dimension> 
   return v;
 }
 
+Value read_value(const Where& at, const KeySpec& spec, std::optional<Dimension> dimension, const toml::node& node) {
+  Value v = read_number(at, spec, dimension, node);
+  v.written = dimension ? describe_quantity(node) : describe(node);
+  return v;
+}
+
 void add(Setting& s, Value v) {
   s.values.push_back(v.number);
+  s.written.push_back(std::move(v.written));
   if (s.spec->type == Type::bat || s.spec->type == Type::theory || s.spec->type == Type::material ||
       s.spec->type == Type::reference)
     s.labels.push_back(std::move(v.label));
@@ -249,6 +264,17 @@ std::optional<T> first_repeat(std::vector<T> items) {
   return twice == items.end() ? std::nullopt : std::optional(*twice);
 }
 
+// The second of two equal values as written, with the first where it was written otherwise
+// ("71.12 cm", the same as "28 in"), or nothing.
+std::optional<std::string> repeated_value(const Setting& s) {
+  for (std::size_t j = 1; j < s.values.size(); ++j)
+    for (std::size_t i = 0; i < j; ++i)
+      if (s.values[i] == s.values[j])
+        return s.value_text(j) +
+               (s.value_text(i) == s.value_text(j) ? "" : " (the same as " + s.value_text(i) + ")");
+  return std::nullopt;
+}
+
 // Repeated values would make the axis useless as a coordinate (which point is z = 0.5?).
 void reject_duplicates(const Setting& s, const fs::path& dir) {
   if (s.spec->type == Type::bat) {
@@ -257,8 +283,8 @@ void reject_duplicates(const Setting& s, const fs::path& dir) {
     if (const auto twice = first_repeat(paths)) reject(s.where, quote(*twice), "names the same bat file twice");
   } else if (!s.labels.empty()) {  // names (a material, a theory) stand for their index in the values
     if (const auto twice = first_repeat(s.labels)) reject(s.where, quote(*twice), "appears twice in the axis; its values must differ");
-  } else if (const auto twice = first_repeat(s.values)) {
-    reject(s.where, format_number(*twice), "appears twice in the axis; its values must differ");
+  } else if (const auto twice = repeated_value(s)) {
+    reject(s.where, *twice, "appears twice in the axis; its values must differ");
   }
 }
 
@@ -272,6 +298,7 @@ Setting read_axis(const Where& at, const KeySpec& spec, std::optional<Dimension>
       add(s, read_value(at.item(i, (*list)[i]), spec, dimension, (*list)[i]));
   } else if (numeric && node.is_table()) {
     s.values = read_range(at, spec, dimension, *node.as_table());
+    for (const double x : s.values) s.written.push_back(format_number(x));
   } else {
     reject(at, describe(node),
            "expected a list of values, each " + expected_value(spec, dimension) +
@@ -289,8 +316,7 @@ Setting read_list(const Where& at, const KeySpec& spec, const toml::node& node) 
   if (!list || list->empty()) reject(at, describe(node), "expected " + expected_value(spec, spec.dimension));
   for (std::size_t i = 0; i < list->size(); ++i)
     add(s, read_value(at.item(i, (*list)[i]), spec, spec.dimension, (*list)[i]));
-  if (const auto twice = first_repeat(s.values))
-    reject(at, format_number(*twice), "appears twice in the list; its values must differ");
+  if (const auto twice = repeated_value(s)) reject(at, *twice, "appears twice in the list; its values must differ");
   return s;
 }
 

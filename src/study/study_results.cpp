@@ -50,8 +50,14 @@ const std::map<std::string, Description>& descriptions() {
       {"contacts", {"1", "number of separate contacts"}},
       {"modes_kept", {"1", "vibrational modes kept (modes = auto)"}},
       {"modes_error", {"1", "estimated relative vf error of the dropped modes (modes = auto)"}},
+      {"slicing_error", {"1", "estimated relative vf error of the slicing against the continuous bat (Richardson, N and 2N)"}},
+      {"step_error", {"1", "estimated relative vf error of the time stepping (step doubling)"}},
+      {"total_error", {"1", "estimated total relative vf error: slicing + modes + step"}},
       {"mode_tolerance", {"1", "relative vf error allowed the dropped modes (modes = auto)"}},
-      {"accuracy", {"1", "relative vf error the integration may add (sets the step)"}},
+      {"accuracy", {"1", "total relative vf error allowed (sets slices, modes and step)"}},
+      {"step_accuracy", {"1", "relative vf error the integration may add (sets the step)"}},
+      {"slices_used", {"1", "slices the bat was cut into for the impact"}},
+      {"step_used", {"s", "fixed time step the impact took (0: adaptive)"}},
       {"status", {"", "outcome of the impact"}},  // a flag, not a quantity: no units
       {"energy_initial", {"J", "initial kinetic energy of ball and bat"}},
       {"energy_ball", {"J", "final kinetic energy of the ball"}},
@@ -181,6 +187,11 @@ double scalar_value(const ImpactResult& r, const std::string& name) {
   if (name == "contacts") return r.contacts;
   if (name == "modes_kept") return static_cast<double>(r.modes_kept.size());
   if (name == "modes_error") return r.modes_error;
+  if (name == "slicing_error") return r.slicing_error;
+  if (name == "step_error") return r.step_error;
+  if (name == "total_error") return r.total_error;
+  if (name == "slices_used") return r.slices_used;
+  if (name == "step_used") return r.step_used;
   return energy_value(r.energy, name);
 }
 
@@ -234,7 +245,7 @@ Variable output_variable(const std::string& name, std::vector<std::string> dims,
   if (name == "status") {  // every CollisionStatus, by its value and name
     std::vector<std::int32_t> flags;
     std::string meanings;
-    for (int k = 0; k <= static_cast<int>(CollisionStatus::failed); ++k) {
+    for (int k = 0; k <= static_cast<int>(last_collision_status); ++k) {
       flags.push_back(k);
       if (k) meanings += ' ';
       meanings += to_string(static_cast<CollisionStatus>(k));

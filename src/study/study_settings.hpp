@@ -47,6 +47,12 @@ struct Setting {
   std::vector<double> values;
   std::vector<std::string> labels;  // bat, theory and bat.material only
   std::string name = std::string(spec->name);  // the key as written ("z", "bat.barrel_diameter")
+  // Each value as the file wrote it ("71.12 cm" for z = 0.7112; a range's values as numbers), for
+  // messages: a user finds "71.12 cm" in the file, not the SI value it stands for.
+  std::vector<std::string> written = {};
+
+  // Value i as a message shows it: the name quoted, else as written.
+  std::string value_text(std::size_t i) const;
 };
 
 const Setting* find(const std::vector<Setting>& settings, std::string_view name);

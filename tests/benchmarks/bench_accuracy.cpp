@@ -72,7 +72,7 @@ std::vector<ImpactScene> with_step(std::vector<ImpactScene> scenes, double dt) {
 }
 
 std::vector<ImpactScene> with_accuracy(std::vector<ImpactScene> scenes, double accuracy) {
-  for (ImpactScene& s : scenes) s.accuracy = accuracy;
+  for (ImpactScene& s : scenes) s.step_accuracy = accuracy;
   return scenes;
 }
 

@@ -9,6 +9,7 @@
 // The model's law F = k1 u^a takes k1 from the stiffness (or the compression) and a from how the
 // stiffness grows with speed (or as given); its COR law e(v) = e0 + slope (v - v0) (Ball) is the
 // least-squares line through the COR data, or one COR and the slope given.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,17 +43,40 @@ struct BallTests {
 // N2000's exponent (Fig. 2), what a ball takes when its stiffness at one speed says nothing of a.
 inline constexpr double default_ball_exponent = 1.84;
 
-// The ranges of a ball's values, (low, high], wherever a ball is given: a [ball] table, a study's
-// [scene] keys and axes. A baseball weighs 0.145 kg and its k1 is about 1e8 N/m^a with a = 1.84;
-// beyond these, no ball the force law F = k1 u^a describes.
+// The ranges of a ball's values, [low, high], the same wherever a ball is given: a [ball] table
+// (ball files, a study's, a rig's, an optimisation's), a study's [scene] keys and axes, the
+// commands' options (--ball-mass, --e0, ...) and Python's arguments. A baseball weighs 0.145 kg,
+// is 0.0366 m in radius, has k1 about 1e8 N/m^a with a = 1.84 and a COR about 0.5; a table-tennis
+// ball weighs 2.7 g, a medicine ball up to 10 kg. Below a COR of 0.05 the expansion branch's
+// exponent b = (1 + a)/e0^2 - 1 passes 1100 and the force law is a wall, no ball; a compression
+// of less than 0.1 mm (F1888 squeezes 0.25 in) would give k1 beyond its range.
 struct BallRange {
   double low, high;
+  const char* what;  // "a mass", "a COR", ...
+  const char* unit;  // "kg", "" for a pure number
 };
-inline constexpr BallRange ball_mass_range{0, 10};        // kg
-inline constexpr BallRange ball_radius_range{0, 1};       // m
-inline constexpr BallRange ball_k1_range{1e3, 1e12};      // N/m^a
-inline constexpr BallRange ball_exponent_range{0.5, 3};   // a
-inline bool in_range(BallRange r, double x) { return x > r.low && x <= r.high; }
+inline constexpr BallRange ball_mass_range{1e-3, 10, "a mass", "kg"};
+inline constexpr BallRange ball_radius_range{1e-3, 1, "a radius", "m"};
+inline constexpr BallRange ball_k1_range{1e3, 1e12, "a stiffness k1", "N/m^a"};
+inline constexpr BallRange ball_exponent_range{0.5, 3, "an exponent a", ""};
+inline constexpr BallRange ball_cor_range{0.05, 1, "a COR", ""};
+inline constexpr BallRange ball_compression_range{10, 1e5, "a force", "N"};
+inline constexpr BallRange ball_dynamic_stiffness_range{1e4, 1e9, "a stiffness", "N/m"};
+inline constexpr BallRange ball_displacement_range{1e-4, 1, "a displacement", "m"};  // at most the radius
+inline constexpr BallRange ball_cylinder_diameter_range{0.01, 1, "a diameter", "m"};
+inline bool in_range(BallRange r, double x) { return x >= r.low && x <= r.high; }
+// "a mass in [0.001, 10] kg"
+std::string range_text(BallRange r);
+// A ball's value outside its range: its key as a study names it (ball_mass, ball_radius, k1, a,
+// e0), the value, and "expected ..." as text() says it.
+struct OutOfRange {
+  std::string key;
+  double value;
+  BallRange range;
+  std::string expected() const { return "expected " + range_text(range); }
+};
+// The first of the ball's values (mass, radius, k1, a, e0) outside its range, or nothing.
+std::optional<OutOfRange> ball_out_of_range(const Ball& ball);
 
 struct BallFit {
   Ball ball;

@@ -4,6 +4,8 @@
 // 1 are the exact rigid modes (translation, rotation about the centre of mass) with omega = 0.
 #include <Eigen/Dense>
 #include <limits>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "sweetspot/bat/barrel_wall.hpp"
@@ -89,7 +91,23 @@ struct ModeRequest {
   bool is_rigid_only() const { return vibrational == 0; }
 };
 
-// Throws InputError for an Euler-Bernoulli bat of more than max_euler_bernoulli_slices slices.
+// What an eigen-solve may cost. The full (dense) solve's time grows as the cube of the slices
+// (Timoshenko, one core: 0.7 s at 512 slices, 8.5 s at 1024, about 70 s at 2048 and 10 min at
+// 4096): every mode is solved up to max_full_solve_slices. A partial solve of K modes over n
+// degrees of freedom costs about n K^2 (its Gram-Schmidt pass; 8.9 s for 1000 modes at 4096
+// slices), so it may ask for as many as costs the full solve at that limit, (2 * 1024)^3 = n K^2.
+inline constexpr int max_full_solve_slices = 1024;
+// The most modes (rigid included) a solve over `dofs` degrees of freedom may ask: all of them
+// while the full solve is practical.
+int practical_mode_count(int dofs);
+// Why solving `request` over `slices` slices would take longer than is practical (a clause for an
+// error line), or nothing. A request below a frequency is known only once its modes are counted:
+// compute_modes refuses it then.
+std::optional<std::string> impractical_solve(int slices, BeamTheory theory, ModeRequest request);
+
+// Throws InputError for an Euler-Bernoulli bat of more than max_euler_bernoulli_slices slices and
+// for a request that impractical_solve refuses (or, below a frequency, that asks more modes than
+// practical_mode_count).
 ModalBasis compute_modes(const Bat& bat, BeamTheory theory, ModeRequest request = ModeRequest::all());
 
 // The discretisation's mass matrix M (diagonal for Timoshenko, consistent for Euler-Bernoulli).

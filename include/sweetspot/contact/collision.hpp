@@ -79,7 +79,10 @@ inline constexpr double finest_step = CollisionOptions{}.max_contact_time / max_
 // failed: the point could not be computed (an error, or more than max_contact_steps in a
 // contact); the message says why. A study records it and goes on.
 // Datasets list every status by value (flag_values): `failed` stays the last.
-enum class CollisionStatus { ok, no_separation, non_finite, refused_step, unbalanced, no_contact, failed };
+// inaccurate: a stated accuracy could not be met (error_estimates.hpp); the values are the
+// closest the program came, its estimates say how close.
+enum class CollisionStatus { ok, no_separation, non_finite, refused_step, unbalanced, no_contact, failed, inaccurate };
+inline constexpr CollisionStatus last_collision_status = CollisionStatus::inaccurate;  // for loops over all
 const char* to_string(CollisionStatus status);
 
 struct ForceSample {
@@ -104,6 +107,7 @@ struct Collision {
   // alongside the modes, not inferred from the balance; 0 without damping.
   double damping_dissipated = 0;
   int contacts = 0;
+  double step = 0;                 // s, the fixed step taken (0: Dormand-Prince's adaptive steps)
   std::vector<ForceSample> force;  // only with record_force
 
   // Energy of mode n: 1/2 (a_n'^2 + omega_n^2 a_n^2) (what it holds, damped or not).

@@ -72,7 +72,20 @@ struct ImpactResult {
   std::vector<double> mode_energy;  // J per kept vibrational mode (of the held bat when pivoted)
   std::vector<int> modes_kept;      // vibrational mode numbers kept (1 = the first)
   double modes_error = 0;           // modes = auto: estimated relative vf error of the dropped ones
+  // Estimated relative vf errors of the other sources (error_estimates.hpp), NaN unless asked
+  // (ImpactScene::error_estimates; the slicing error needs the bat at twice its slices, so only
+  // the callers that hold the bat's design fill it): the time stepping's (step doubling), the
+  // slicing's against the continuum the bat file describes (Richardson in N), and the total,
+  // slicing + modes + step.
+  double step_error = std::numeric_limits<double>::quiet_NaN();
+  double slicing_error = std::numeric_limits<double>::quiet_NaN();
+  double total_error = std::numeric_limits<double>::quiet_NaN();
   int contacts = 0;
+  // The slicing, and the step, the impact was computed at: the bat's own slices unless a stated
+  // accuracy chose finer ones (error_estimates.hpp); the fixed step (s; 0 for Dormand-Prince,
+  // whose steps adapt).
+  int slices_used = 0;
+  double step_used = 0;
   std::vector<ForceSample> force;   // only when the scene records the force
   // Only when the scene asks for them (ImpactScene::histories, force_response, mode_response)
   // and the collision ends ok.

@@ -24,7 +24,18 @@ struct Swing {
 
 // What a stated accuracy must be, wherever it is given (a study's key, --accuracy, accuracy=):
 // 0 or less would state no error at all, so it is refused rather than read as "not set".
-inline constexpr const char* accuracy_expected = "a finite number > 0 (relative vf error the integration may add)";
+inline constexpr const char* step_accuracy_expected =
+    "a finite number > 0 (relative vf error the integration may add)";
+inline constexpr const char* accuracy_expected =
+    "a number from 1e-7 to 0.1 (total relative vf error: slicing, modes and step)";
+
+// What a swing's omega must be, wherever it is given (--omega, a study's omega, omega=, an
+// optimisation's [player]): v_bat(z) = V_cm + Omega (z - z_cm) with +y toward the ball, so a swing
+// turns the barrel toward the ball at Omega >= 0 (N2000's 51 and 56 rad/s; 0 for a bat at rest or
+// a push). A negative Omega swings it backwards, away from the pitch: no scene of a bat.
+inline constexpr const char* omega_expected =
+    "a finite angular speed >= 0 (the swing turns the barrel toward the ball; a negative omega swings it backwards)";
+inline bool valid_omega(double omega) { return std::isfinite(omega) && omega >= 0; }
 
 inline constexpr int all_modes = -1;
 // Keep the modes the collision can excite (see mode_selection.hpp), within mode_tolerance.
@@ -70,6 +81,11 @@ struct ImpactScene {
   double mode_tolerance = 1e-5; // auto_modes: relative exit-speed error allowed the dropped modes
   // Relative exit-speed error the integration may add; > 0 chooses the step (or tolerance) from
   // the scene's pulse (step_selection.hpp) instead of integrator.dt. 0: integrator as given.
+  double step_accuracy = 0;
+  // The total relative exit-speed error allowed (error_estimates.hpp), > 0 or 0 for none: it
+  // shares itself among the sources (accuracy_budget): the modes' share is `auto`'s tolerance,
+  // the step's chooses the step, and the slicing's is met by callers that hold the bat's design
+  // (simulate_within_accuracy), which cut it finer until it is. Implies error_estimates.
   double accuracy = 0;
   CollisionOptions integrator;
   // The closed forms of physics.md §5 at the same point, computed beside the collision only when
@@ -88,6 +104,10 @@ struct ImpactScene {
   bool histories = false;
   bool force_response = false;
   bool mode_response = false;
+  // Also only when asked: the time stepping's error (ImpactResult::step_error), from a second
+  // collisions at two and four times the step (dopri: 32 and 1024 times the tolerance), about
+  // three quarters of an impact more.
+  bool error_estimates = false;
 };
 
 // Throws InputError naming the offending scene value (z outside the bat, speeds not finite,

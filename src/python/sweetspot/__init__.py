@@ -275,7 +275,7 @@ _POINT = tuple(_point_arguments())  # z, ball_speed, cm_speed, center, omega, e0
 
 
 def _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, pivot, modes,
-           mode_tolerance, accuracy, integrator, dt, tolerance, window, theory, n2000, ball=None, arrays=False):
+           mode_tolerance, accuracy, step_accuracy, integrator, dt, tolerance, window, theory, n2000, ball=None, arrays=False):
     # Each point argument a real number (impacts: or an array of them); a length, mass or speed
     # given as a string with a unit ("28 in", "136 mph") is SI from here on.
     point = {name: _real(name, value, arrays=arrays)
@@ -283,7 +283,7 @@ def _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k
                                  ("omega", omega), ("e0", e0), ("ball_mass", ball_mass), ("ball_radius", ball_radius),
                                  ("k1", k1), ("a", a))}
     numbers = {name: _real(name, value) for name, value in (("mode_tolerance", mode_tolerance), ("accuracy", accuracy),
-                                                            ("dt", dt), ("tolerance", tolerance), ("window", window))}
+                                                            ("step_accuracy", step_accuracy), ("dt", dt), ("tolerance", tolerance), ("window", window))}
     if ball is not None:
         ball = _text("ball", ball, "a ball preset's name or a TOML file with a [ball] table", path=True)
     return dict(ball=ball, **point, pivot=pivot, modes=modes, **numbers, integrator=integrator, theory=theory,
@@ -296,11 +296,17 @@ def _check_bat(bat):
 
 
 def impact(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=None, e0=None, ball_mass=None,
-           ball_radius=None, k1=None, a=None, pivot=False, modes=None, mode_tolerance=None, accuracy=None,
+           ball_radius=None, k1=None, a=None, pivot=False, modes=None, mode_tolerance=None, accuracy=None, step_accuracy=None,
            integrator=None, dt=None, tolerance=None, window=None, theory="timoshenko", n2000=False):
     """One ball on one bat, as `sweetspot impact --json`: a dict with the same keys (status, z, vf,
     e_eff, contact_time, collision_time, u_max, peak_force, impulse, bat_speed, e_a, bbcor, besr, bpf,
-    energy, mode_energy, modes_kept, modes_error, contacts), NaN where the JSON has null.
+    energy, mode_energy, modes_kept, modes_error, slicing_error, step_error, total_error, contacts),
+    NaN where the JSON has null. slicing_error, modes_error and step_error estimate each source of
+    the relative vf error against the continuous bat (its slices, the dropped modes, the time step),
+    total_error their sum; the slicing's costs the bat's modes at twice its slices. accuracy (the
+    total relative vf error, 1e-7 to 0.1) chooses the slices, the modes and the step to meet it
+    (slices_used, modes_kept, step_used say what it chose; status "inaccurate" where the bat
+    cannot be cut finely enough); step_accuracy chooses the step alone.
 
     The swing is cm_speed (m/s) or center (m from the knob, the point at rest), with omega (rad/s).
     z, ball_speed, cm_speed, center, omega, ball_mass and ball_radius may be strings with a unit
@@ -314,7 +320,7 @@ def impact(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=No
     Returns: a Result, the dict above with `attrs` (the resolved scene as scene_*, the bat, the
     program's version and commit); ``impact(bat, **scene_of(result))`` computes it again bit for bit."""
     args = _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, pivot, modes,
-                  mode_tolerance, accuracy, integrator, dt, tolerance, window, theory, n2000, ball)
+                  mode_tolerance, accuracy, step_accuracy, integrator, dt, tolerance, window, theory, n2000, ball)
     _check_bat(bat)
     result, radius = _impact(bat, args)
     if result["u_max"] > radius:
@@ -345,7 +351,7 @@ def _dims(arrays, shape):
 
 
 def impacts(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=None, e0=None, ball_mass=None,
-            ball_radius=None, k1=None, a=None, pivot=False, modes=None, mode_tolerance=None, accuracy=None,
+            ball_radius=None, k1=None, a=None, pivot=False, modes=None, mode_tolerance=None, accuracy=None, step_accuracy=None,
             integrator=None, dt=None, tolerance=None, window=None, theory="timoshenko", n2000=False, threads=None):
     """Many impacts at once: z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1
     and a may be arrays, broadcast together as numpy does. Runs in C++ over OpenMP threads with the
@@ -355,8 +361,10 @@ def impacts(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=N
     one dim `point` with the arguments as coordinates over it.
 
     Units: z, center (m from the knob), ball_speed, cm_speed (m/s), omega (rad/s), ball_mass (kg),
-    ball_radius (m), k1 (N m^-a), dt, window (s); e0, a, mode_tolerance, accuracy, tolerance are ratios.
-    accuracy (> 0) chooses the step itself: it excludes dt.
+    ball_radius (m), k1 (N m^-a), dt, window (s); e0, a, mode_tolerance, accuracy, step_accuracy,
+    tolerance are ratios. accuracy (the total relative vf error, 1e-7 to 0.1) chooses the slices,
+    the modes and the step: it excludes dt, tolerance, mode_tolerance and step_accuracy; step_accuracy
+    chooses the step alone: it excludes dt and tolerance.
     Returns: an xarray.Dataset whose attributes record the resolved scene (scene_*, with
     scene_units), the bat (bat, bat_slices, bat_toml where known), program_version, git_commit and
     Conventions: impacts_like(ds) computes it again bit for bit, after ds.to_netcdf() and
@@ -364,7 +372,7 @@ def impacts(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=N
     import xarray as xr
 
     args = _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, pivot, modes,
-                  mode_tolerance, accuracy, integrator, dt, tolerance, window, theory, n2000, ball, arrays=True)
+                  mode_tolerance, accuracy, step_accuracy, integrator, dt, tolerance, window, theory, n2000, ball, arrays=True)
     _check_bat(bat)
     threads = 0 if threads is None else _whole("threads", threads, 1, _max_threads(),
                                                       " (4 per processor; more only contend for the same cores)")  # 0: OpenMP's default
@@ -428,12 +436,16 @@ def scene_of(result):
             kwargs[key] = bool(value)  # the swing's flag; the rig's pivot is a point (m)
         else:
             kwargs[key] = float(value)
-    # scene_accuracy 0 records a step as given (scene_dt); a stated accuracy chose the step itself,
-    # and accuracy= excludes dt= (an accuracy of 0 is no argument).
-    if kwargs.get("accuracy") == 0:
-        del kwargs["accuracy"]
-    elif "accuracy" in kwargs:
+    # An accuracy of 0 records none stated. A stated one chose what it excludes: the step (scene_dt,
+    # scene_tolerance) and, the total accuracy, the modes' tolerance.
+    for key in ("accuracy", "step_accuracy"):
+        if kwargs.get(key) == 0:
+            del kwargs[key]
+    if "accuracy" in kwargs or "step_accuracy" in kwargs:
         kwargs.pop("dt", None)
+        kwargs.pop("tolerance", None)
+    if "accuracy" in kwargs:
+        kwargs.pop("mode_tolerance", None)
     if hasattr(result, "dims") and "status" in result:  # a dataset: its per-point arguments
         dims = result["status"].dims
         for key in _POINT:

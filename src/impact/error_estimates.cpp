@@ -1,0 +1,117 @@
+#include "sweetspot/impact/error_estimates.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+
+#include "sweetspot/input_error.hpp"
+
+namespace sweetspot {
+
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+// The Richardson term's denominator: 2^p - 1 for one doubling of the slices.
+double richardson_gain() { return std::pow(static_cast<double>(slicing_refinement), slicing_order) - 1; }
+
+}  // namespace
+
+double error_scale(double vf, double ball_speed) { return std::max(std::abs(vf), 0.05 * std::abs(ball_speed)); }
+
+bool can_refine(int slices, BeamTheory theory, int times) {
+  long finer = slices;
+  for (int k = 0; k < times; ++k) finer *= slicing_refinement;
+  return finer <= max_slices && (theory != BeamTheory::euler_bernoulli || finer <= max_euler_bernoulli_slices);
+}
+
+Bat bat_with_slices(BatDesign design, int slices) {
+  design.slices = slices;
+  return build_bat(design);
+}
+
+double slicing_error(const std::vector<double>& vf, std::size_t level) {
+  const std::size_t m = vf.size();
+  if (m < 2 || level >= m) return nan;
+  const double last = std::abs(vf[m - 1] - vf[m - 2]);
+  const double finest = m == 2 ? last : std::max(last / richardson_gain(), std::abs(vf[m - 2] - vf[m - 3]) /
+                                                                               ((richardson_gain() + 1) * richardson_gain()));
+  return slicing_safety * (std::abs(vf[level] - vf[m - 1]) + finest);
+}
+
+void add_slicing_error(ImpactResult& r, const std::vector<double>& vf, std::size_t level, bool finer_ok,
+                       double ball_speed) {
+  if (r.status != CollisionStatus::ok || !finer_ok) {
+    r.slicing_error = r.total_error = nan;
+    return;
+  }
+  r.slicing_error = slicing_error(vf, level) / error_scale(r.vf, ball_speed);
+  r.total_error = r.slicing_error + r.modes_error + r.step_error;
+}
+
+AccuracyBudget accuracy_budget(double accuracy) { return {accuracy / 2, accuracy / 4, accuracy / 4}; }
+
+ImpactScene scene_for_accuracy(ImpactScene scene) {
+  if (!(scene.accuracy > 0)) return scene;
+  if (scene.vibrational_modes >= 0)
+    throw InputError("accuracy: a fixed number of modes (" + std::to_string(scene.vibrational_modes) +
+                     ") cannot be held to an accuracy; expected modes = \"auto\" (the default) or \"all\"");
+  if (scene.step_accuracy > 0)
+    throw InputError("accuracy excludes step_accuracy (the accuracy chooses the step): give one of them");
+  const AccuracyBudget budget = accuracy_budget(scene.accuracy);
+  scene.mode_tolerance = budget.modes;
+  scene.step_accuracy = budget.step;
+  return scene;
+}
+
+SlicingLadder::SlicingLadder(int slices, BeamTheory theory, const ImpactScene& scene)
+    : theory_(theory), accuracy_(scene.accuracy), ball_speed_(scene.ball_speed), next_slices_(slices) {}
+
+bool SlicingLadder::add(ImpactResult r) {
+  r.slices_used = next_slices_;
+  vf_.push_back(r.vf);
+  result_ = std::move(r);
+  if (result_.status != CollisionStatus::ok) return true;
+  const bool can_double = can_refine(next_slices_, theory_);
+  next_slices_ *= slicing_refinement;
+  if (vf_.size() < 3 && can_double) return false;  // three slicings at least
+  add_slicing_error(result_, vf_, vf_.size() - 1, true, ball_speed_);
+  if (result_.slicing_error <= accuracy_budget(accuracy_).slicing) return true;
+  if (can_double) return false;
+  char why[240];
+  std::snprintf(why, sizeof why,
+                "accuracy %.3g needs the bat cut finer than %d slices (max_slices %d, or %d for Euler-Bernoulli); "
+                "the slicing's estimated error there is %.3g",
+                accuracy_, result_.slices_used, max_slices, max_euler_bernoulli_slices, result_.slicing_error);
+  result_.status = CollisionStatus::inaccurate;
+  result_.message = why;
+  return true;
+}
+
+ImpactResult simulate_within_accuracy(const BasisAtSlices& basis_at, int slices, BeamTheory theory,
+                                      const ImpactScene& scene) {
+  SlicingLadder ladder(slices, theory, scene);
+  while (!ladder.add(simulate_impact(basis_at(ladder.next_slices()), scene))) {
+  }
+  return ladder.take_result();
+}
+
+ImpactResult simulate_impact_with_errors(const ModalBasis& basis, const std::vector<const ModalBasis*>& finer,
+                                         ImpactScene scene) {
+  scene.error_estimates = true;
+  ImpactResult r = simulate_impact(basis, scene);
+  scene.error_estimates = false;  // the finer impacts' exit speeds alone are used
+  std::vector<double> vf{r.vf};
+  bool finer_ok = !finer.empty();
+  for (const ModalBasis* b : finer) {
+    const ImpactResult f = simulate_impact(*b, scene);
+    finer_ok = finer_ok && f.status == CollisionStatus::ok;
+    vf.push_back(f.vf);
+  }
+  add_slicing_error(r, vf, 0, finer_ok, scene.ball_speed);
+  return r;
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,321 @@
+// Each impact's error estimates (error_estimates.hpp) on cases with a known answer, and their
+// honesty against a converged reference: the slicing's Richardson estimate on a uniform
+// Timoshenko rod's exact frequencies, the step doubling on the rigid bat's closed form, and the
+// total on real bats against Richardson over 4N and 8N slices with every mode.
+#include <catch2/catch.hpp>
+
+#include <unsupported/Eigen/MatrixFunctions>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <utility>
+#include <string>
+#include <vector>
+
+#include "program.hpp"
+#include "sweetspot/bat/bat_design.hpp"
+#include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/impact/error_estimates.hpp"
+#include "sweetspot/impact/formulas.hpp"
+#include "sweetspot/impact/impact.hpp"
+
+using namespace sweetspot;
+
+namespace {
+
+// A uniform solid rod: 0.84 m, 5 cm across, R161's wood.
+Bat uniform_rod(int slices) {
+  Bat bat;
+  bat.name = "rod";
+  bat.length = 0.84;
+  bat.material.density = 649;
+  bat.material.youngs_modulus = 1.814e10;
+  bat.material.shear_modulus = 1.05e9;
+  bat.set_slices(std::vector<double>(slices, 0.05));
+  return bat;
+}
+
+// The continuum's free-free condition at omega: the uniform Timoshenko rod's state
+// s = (y, phi, V, M) obeys s' = B s (y' = V / kSA - phi, phi' = M / YI, V' = -rho A w^2 y,
+// M' = V - rho I w^2 phi). V and M are scaled by YI / L^2 and YI / L so that B is of order one,
+// and the two free ends (V = M = 0) are matched at the middle: exp(B L/2) from the knob's free
+// states and exp(-B L/2) from the tip's must meet, the 4 x 4 determinant zero. (Shooting over the
+// whole length instead loses the higher modes' roots to the growing solutions' cancellation.)
+double free_free_determinant(const Bat& rod, double omega) {
+  const Material& m = rod.material;
+  const double r = rod.outer_diameter[0] / 2, area = M_PI * r * r, inertia = M_PI * r * r * r * r / 4;
+  const double l = rod.length, yi = m.youngs_modulus * inertia;
+  Eigen::Matrix4d b = Eigen::Matrix4d::Zero();  // in x = z / L, V / (YI / L^2), M / (YI / L)
+  b(0, 2) = yi / (l * l) / (m.shear_coefficient * m.shear_modulus * area) * l, b(0, 1) = -l;
+  b(1, 3) = 1;
+  b(2, 0) = -m.density * area * omega * omega * l * l * l / yi;
+  b(3, 2) = 1, b(3, 1) = -m.density * inertia * omega * omega * l * l / yi;
+  const Eigen::Matrix4d left = (b * 0.5).exp(), right = (b * -0.5).exp();
+  Eigen::Matrix4d match;
+  match << left.leftCols<2>(), right.leftCols<2>();
+  return match.determinant();
+}
+
+// The exact frequency near `guess` (within 3 %), by bisection on the determinant's sign.
+double exact_omega(const Bat& rod, double guess) {
+  double lo = 0.97 * guess, hi = 1.03 * guess;
+  double f_lo = free_free_determinant(rod, lo);
+  REQUIRE(f_lo * free_free_determinant(rod, hi) < 0);
+  for (int i = 0; i < 200 && hi - lo > 1e-13 * hi; ++i) {
+    const double mid = (lo + hi) / 2, f = free_free_determinant(rod, mid);
+    if ((f < 0) == (f_lo < 0)) lo = mid, f_lo = f;
+    else hi = mid;
+  }
+  return (lo + hi) / 2;
+}
+
+double relative(double x, double reference) { return std::abs(x / reference - 1); }
+
+}  // namespace
+
+TEST_CASE("Richardson in the slices estimates a uniform Timoshenko rod's frequency errors", "[error_estimates]") {
+  const ModalBasis fine = compute_modes(uniform_rod(1024), BeamTheory::timoshenko);
+  const double ratio = std::pow(slicing_refinement, slicing_order);
+  double low = std::numeric_limits<double>::infinity(), high = 0;
+  for (int n : {21, 42, 84}) {
+    const ModalBasis coarse = compute_modes(uniform_rod(n), BeamTheory::timoshenko);
+    const ModalBasis finer = compute_modes(uniform_rod(slicing_refinement * n), BeamTheory::timoshenko);
+    for (int mode = 2; mode < 2 + 6; ++mode) {
+      const double exact = exact_omega(uniform_rod(n), fine.omega(mode));
+      const double actual = relative(coarse.omega(mode), exact);
+      const double estimate = relative(coarse.omega(mode), finer.omega(mode)) * ratio / (ratio - 1);
+      INFO(n << " slices, mode " << mode - 1 << ": exact " << exact << " rad/s, error " << actual << ", estimated "
+              << estimate);
+      CHECK(actual > 1e-8);  // the discretisation's, far above round-off and the bisection's
+      CHECK(estimate >= 0.9 * actual);
+      CHECK(estimate <= 1.5 * actual);
+      low = std::min(low, estimate / actual), high = std::max(high, estimate / actual);
+    }
+  }
+  std::printf("uniform rod, 21-84 slices, modes 1-6: estimate / actual frequency error in [%.3f, %.3f]\n", low, high);
+}
+
+TEST_CASE("Step doubling bounds the stepper's error on the rigid bat's closed form", "[error_estimates]") {
+  // A rigid bat (no vibrational mode): the ball is a nonlinear spring between two free masses,
+  // whose exit speed is the rigid formula exactly (physics.md §5).
+  const ModalBasis basis = compute_modes(uniform_rod(84), BeamTheory::timoshenko, ModeRequest::rigid_only());
+  double low = std::numeric_limits<double>::infinity(), high = 0;
+  for (const Method method : {Method::exact, Method::rk4})
+    for (const double a : {1.5, 1.84, 2.2})
+      for (const double dt : {10e-6, 20e-6, 40e-6}) {
+        ImpactScene s;
+        s.z = 0.7;
+        s.ball_speed = 40;
+        s.ball.a = a;
+        s.swing = {51, true, 0, 0.09};
+        s.vibrational_modes = 0;
+        s.integrator.method = method;
+        s.integrator.dt = dt;
+        s.error_estimates = true;
+        const ImpactResult r = simulate_impact(basis, s);
+        REQUIRE(r.status == CollisionStatus::ok);
+        const SceneGeometry g = scene_geometry(s, basis);
+        const double exact = rigid_exit_speed(s.ball.e0, g.recoil, s.ball_speed, g.bat_speed);
+        const double actual = std::abs(r.vf - exact) / error_scale(r.vf, s.ball_speed);
+        INFO((method == Method::exact ? "exact" : "rk4") << ", a " << a << ", dt " << dt << ": error " << actual
+                                                          << ", estimated " << r.step_error);
+        CHECK(r.step_error >= actual);
+        // The order's floor a + 1 is what the ball's t^a onset leaves at fine steps; on this smooth
+        // rigid pulse both converge faster (exact stepping up to order 6, RK4 4), so the estimate
+        // is an upper one by up to 94x for exact stepping and 8.1x for RK4 (measured).
+        if (actual > 1e-12) {
+          CHECK(r.step_error <= (method == Method::rk4 ? 10 : 100) * actual);
+          low = std::min(low, r.step_error / actual), high = std::max(high, r.step_error / actual);
+        }
+      }
+  std::printf("rigid bat, exact and rk4 at 10-40 us: step estimate / actual error in [%.3g, %.3g]\n", low, high);
+}
+
+namespace {
+
+// The estimate against the actual error over a set of points. `strict`: each point must lie
+// within 5x; otherwise (the report over every shipped bat) the points past 5x are counted: where
+// the slicing's error crosses zero between slicings, a coarse result can lie by chance far closer
+// to the continuum than any estimate from its finer neighbours can tell.
+struct Honesty {
+  bool strict = true;
+  double low = std::numeric_limits<double>::infinity();  // least estimate / actual
+  double high = 0;                                         // largest, where actual is above round-off
+  int points = 0, past_5x = 0;
+  void add(double estimate, double actual) {
+    CHECK(estimate >= actual);
+    if (strict) CHECK(estimate <= 5 * std::max(actual, 1e-7));
+    if (estimate > 5 * std::max(actual, 1e-7)) ++past_5x;
+    low = std::min(low, estimate / actual);
+    if (actual > 1e-7) high = std::max(high, estimate / actual);
+    ++points;
+  }
+};
+
+// The total estimate of the default impact (auto modes, exact at 10 us) at the bat's own slices
+// against the continuum: Richardson over 4N and 8N slices, every mode, exact at 5 us.
+void check_total(const std::string& file, ImpactScene scene, const std::vector<double>& zs, Honesty& h) {
+  BatSource source;
+  const BatDesign design = load_bat_design(source_path(file), source);
+  const Bat bat = build_bat(design);
+  const int n = bat.slices();
+  const auto solve = [&](const Bat& b, const ImpactScene& s) {
+    return compute_modes(b, BeamTheory::timoshenko,
+                         impact_mode_request(s, compute_modes(b, BeamTheory::timoshenko, ModeRequest::rigid_only())));
+  };
+  ImpactScene reference_scene = scene;
+  reference_scene.vibrational_modes = all_modes;
+  reference_scene.integrator.dt = 5e-6;
+  const Bat b4_bat = bat_with_slices(design, 4 * n);
+  const ModalBasis b4 = compute_modes(b4_bat, BeamTheory::timoshenko);
+  const ModalBasis b8 = compute_modes(bat_with_slices(design, 8 * n), BeamTheory::timoshenko);
+  const ModalBasis coarse = solve(bat, scene);
+  const ModalBasis twice = solve(bat_with_slices(design, 2 * n), scene), four_times = solve(b4_bat, scene);
+  for (const double z : zs) {
+    scene.z = reference_scene.z = z;
+    const ImpactResult r4 = simulate_impact(b4, reference_scene), r8 = simulate_impact(b8, reference_scene);
+    REQUIRE(r4.status == CollisionStatus::ok);
+    REQUIRE(r8.status == CollisionStatus::ok);
+    const double reference = r8.vf + (r8.vf - r4.vf) / 3;
+    const ImpactResult r = simulate_impact_with_errors(coarse, {&twice, &four_times}, scene);
+    REQUIRE(r.status == CollisionStatus::ok);
+    const double actual = std::abs(r.vf - reference) / error_scale(r.vf, scene.ball_speed);
+    INFO(file << " z " << z << ": vf " << r.vf << ", reference " << reference << ", error " << actual
+              << ", estimated " << r.total_error << " (slicing " << r.slicing_error << ", modes " << r.modes_error
+              << ", step " << r.step_error << "), contacts " << r.contacts);
+    h.add(r.total_error, actual);
+  }
+}
+
+// A stated accuracy's result (simulate_within_accuracy) against the continuum: Richardson over
+// `fine` and 2 `fine` slices, modes auto at 1e-8, exact at 2.5 us. Its total estimate must bound
+// the actual error, within 5x where that is above 1e-7, and meet the accuracy.
+void check_accuracy(const std::string& file, ImpactScene scene, double accuracy, int fine,
+                    const std::vector<double>& zs, Honesty& h) {
+  BatSource source;
+  const BatDesign design = load_bat_design(source_path(file), source);
+  const int n = build_bat(design).slices();
+  ImpactScene reference_scene = scene;
+  reference_scene.mode_tolerance = 1e-8;
+  reference_scene.integrator.dt = 2.5e-6;
+  scene.accuracy = accuracy;
+  scene.error_estimates = true;
+  std::map<std::pair<int, bool>, ModalBasis> bases;  // per slice count, for the scene or the reference
+  const auto basis_for = [&](int slices, const ImpactScene& s, bool reference) -> const ModalBasis& {
+    auto found = bases.find({slices, reference});
+    if (found == bases.end()) {
+      const Bat bat = bat_with_slices(design, slices);
+      const ModeRequest request =
+          impact_mode_request(s, compute_modes(bat, BeamTheory::timoshenko, ModeRequest::rigid_only()));
+      found = bases.emplace(std::pair{slices, reference}, compute_modes(bat, BeamTheory::timoshenko, request)).first;
+    }
+    return found->second;
+  };
+  for (const double z : zs) {
+    scene.z = reference_scene.z = z;
+    const ImpactResult coarse = simulate_impact(basis_for(fine, reference_scene, true), reference_scene);
+    const ImpactResult finest = simulate_impact(basis_for(2 * fine, reference_scene, true), reference_scene);
+    REQUIRE(coarse.status == CollisionStatus::ok);
+    REQUIRE(finest.status == CollisionStatus::ok);
+    const double reference = finest.vf + (finest.vf - coarse.vf) / 3;
+    const ImpactResult r = simulate_within_accuracy(
+        [&](int slices) -> const ModalBasis& { return basis_for(slices, scene, false); }, n, BeamTheory::timoshenko,
+        scene);
+    REQUIRE(r.status == CollisionStatus::ok);
+    const double actual = std::abs(r.vf - reference) / error_scale(r.vf, scene.ball_speed);
+    INFO(file << " z " << z << ", accuracy " << accuracy << ": vf " << r.vf << " at " << r.slices_used
+              << " slices, reference " << reference << ", error " << actual << ", estimated " << r.total_error
+              << " (slicing " << r.slicing_error << ", modes " << r.modes_error << ", step " << r.step_error << ")");
+    CHECK(r.slices_used < fine);  // the reference is finer than what was chosen
+    CHECK(r.total_error <= accuracy);
+    h.add(r.total_error, actual);
+  }
+}
+
+ImpactScene high_impact() {
+  ImpactScene s;
+  s.ball_speed = 40;
+  s.ball.e0 = 0.5;
+  s.swing = {51, true, 0, 0.09};
+  return s;
+}
+
+ImpactScene low_impact() {
+  ImpactScene s;
+  s.ball_speed = 1;
+  s.ball.e0 = 0.66;
+  return s;
+}
+
+// The bat-test rig: at rest, held at 6 in from the knob, 136 mph.
+ImpactScene rig() {
+  ImpactScene s;
+  s.ball_speed = lab_e_a_speed;
+  s.pivoted = true;
+  s.swing = {0, true, 0, 0.1524};
+  return s;
+}
+
+void report(const char* what, const Honesty& h) {
+  std::printf("%s: %d points, total estimate / actual error in [%.3g, %.3g], %d past 5x\n", what, h.points, h.low,
+              h.high, h.past_5x);
+}
+
+}  // namespace
+
+TEST_CASE("The total error estimate bounds R161's high-impact error from handle to tip", "[error_estimates]") {
+  Honesty h;
+  check_total("studies/bats/r161.toml", high_impact(), {0.305, 0.405, 0.505, 0.605, 0.705, 0.755, 0.805}, h);
+  report("R161, high impact", h);
+}
+
+TEST_CASE("The total error estimate bounds a parametric bat's error on the rig", "[error_estimates]") {
+  Honesty h;
+  check_total("studies/bats/maple_271.toml", rig(), {0.505, 0.605, 0.705, 0.755}, h);
+  report("maple 271, rig", h);
+}
+
+// Every shipped bat on the three scenes: what the report's ratios come from (minutes).
+TEST_CASE("The total error estimate's honesty over the shipped bats and scenes", "[.honesty]") {
+  const std::vector<double> zs = {0.155, 0.255, 0.355, 0.455, 0.505, 0.555, 0.605, 0.655, 0.705, 0.755, 0.805};
+  for (const char* bat : {"r161", "torpedo", "aluminium", "maple_271", "alloy_bbcor", "composite_bbcor"})
+    for (const auto& [name, scene] : {std::pair{"high impact", high_impact()}, std::pair{"low impact", low_impact()},
+                                      std::pair{"rig", rig()}}) {
+      Honesty h{false};
+      check_total(std::string("studies/bats/") + bat + ".toml", scene, zs, h);
+      report((std::string(bat) + ", " + name).c_str(), h);
+    }
+}
+
+TEST_CASE("A stated accuracy is met on R161's high-impact scene, its estimate bounding the error",
+          "[error_estimates]") {
+  Honesty h;
+  check_accuracy("studies/bats/r161.toml", high_impact(), 1e-3, 672, {0.505, 0.605, 0.755}, h);
+  report("R161, high impact, accuracy 1e-3", h);
+}
+
+TEST_CASE("A stated accuracy's honesty over the shipped bats and scenes", "[.honesty]") {
+  const std::vector<double> zs = {0.255, 0.455, 0.555, 0.655, 0.755};
+  for (const double accuracy : {1e-3, 1e-4})
+    for (const char* bat : {"r161", "torpedo", "aluminium", "maple_271", "alloy_bbcor", "composite_bbcor"})
+      for (const auto& [name, scene] : {std::pair{"high impact", high_impact()}, std::pair{"low impact", low_impact()},
+                                        std::pair{"rig", rig()}}) {
+        Honesty h{false};
+        check_accuracy(std::string("studies/bats/") + bat + ".toml", scene, accuracy, 672, zs, h);
+        char what[120];
+        std::snprintf(what, sizeof what, "%s, %s, accuracy %g", bat, name, accuracy);
+        report(what, h);
+      }
+}
+
+TEST_CASE("The program's impact reports every error estimate", "[error_estimates]") {
+  const ProgramRun run = run_program("impact --bat " + source_path("studies/bats/r161.toml") +
+                                     " --z 0.605 --ball-speed 40 --omega 51 --center 0.09 --json");
+  REQUIRE(run.exit_code == 0);
+  for (const char* name : {"\"slicing_error\": ", "\"step_error\": ", "\"total_error\": "})
+    CHECK_THAT(run.output, Catch::Contains(name));
+  CHECK_THAT(run.output, !Catch::Contains("\"total_error\": null"));
+}
