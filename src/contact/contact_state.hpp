@@ -92,11 +92,17 @@ class ContactState {
   // The frequency at which the contact itself rings: the ball's stiffness F'(u) (in series with
   // the residual compliance) against the mobility 1/m + sum psi_n^2 of ball and kept modes. On
   // the expansion branch F'(u) = b F / u with b = (1 + a)/e0^2 - 1, huge for a nearly dead ball.
+  // Asked at a step's end and again at the next one's start: the last answer is kept.
   double contact_frequency(const Eigen::VectorXd& y, const ContactForce& law) const {
     const double u = ball_compression(compression(y), law);
     if (u <= 0) return 0;
+    if (u == frequency_u_ && &law == frequency_law_ && law.expanding() == frequency_expanding_ &&
+        law.u_max() == frequency_u_max_)
+      return frequency_;
     const double stiffness = law.stiffness(u);
-    return std::sqrt(stiffness / (1 + compliance_ * stiffness) * mobility_);
+    frequency_u_ = u, frequency_law_ = &law, frequency_expanding_ = law.expanding(), frequency_u_max_ = law.u_max();
+    frequency_ = std::sqrt(stiffness / (1 + compliance_ * stiffness) * mobility_);
+    return frequency_;
   }
   // Force and its time derivative dF/dt = F'(u_ball) u_ball', u_ball' = u' / (1 + c F').
   ForceSample sample(double t, const Eigen::VectorXd& y, const ContactForce& law) const {
@@ -142,6 +148,9 @@ class ContactState {
   mutable double known_u_ = 0, known_du_ = 0;
   mutable const ContactForce* last_law_ = nullptr;
   mutable bool last_expanding_ = false;
+  mutable double frequency_u_ = -1, frequency_u_max_ = 0, frequency_ = 0;
+  mutable const ContactForce* frequency_law_ = nullptr;
+  mutable bool frequency_expanding_ = false;
 };
 
 // What a stepper says of an attempted step: adaptive ones may reject it and propose a new size.

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "contact/damped_mode.hpp"
+#include "contact/mode_kernels.hpp"
 
 namespace sweetspot::detail {
 
@@ -132,7 +133,10 @@ Basis basis_in_s(double past_ratio) {
 }
 
 Basis interpolant_basis(double past_ratio, double h) {
-  Basis b = basis_in_s(past_ratio);
+  // The cubic's (every event step's) is made once: an LU of its conditions per step cost more
+  // than the step.
+  static const Basis cubic = basis_in_s(0);
+  Basis b = past_ratio > 0 ? basis_in_s(past_ratio) : cubic;
   for (int k = 0; k < powers; ++k) b.col(k) /= std::pow(h, k);
   for (const Datum rate : {past_rate, start_rate, end_rate}) b.row(rate) *= h;
   return b;
@@ -191,30 +195,10 @@ DampedQuadrature damped_quadrature(int mode, double w, double zeta, double h, co
   return d;
 }
 
-// Steps of the lengths a run reuses (nominal, split) meet the same frequencies again and again
-// even when the kept modes differ from impact to impact (modes = auto), so each thread remembers
-// every mode's coefficients by (omega, h, past ratio).
-const ModeCoefficients& memoized_coefficients(double w, double h, double past_ratio, const Basis& b) {
-  struct Key {
-    double w, h, past_ratio;
-    bool operator==(const Key&) const = default;
-  };
-  struct Hash {
-    std::size_t operator()(const Key& k) const {
-      return (std::hash<double>()(k.w) * 31 + std::hash<double>()(k.h)) * 31 + std::hash<double>()(k.past_ratio);
-    }
-  };
-  thread_local std::unordered_map<Key, ModeCoefficients, Hash> memo;
-  if (memo.size() > 100000) memo.clear();  // bounded: a long run over many bases
-  const auto [it, inserted] = memo.try_emplace(Key{w, h, past_ratio});
-  if (inserted) it->second = mode_coefficients(w, h, b);
-  return it->second;
-}
-
-// A damped mode's step response and dissipation quadrature, remembered as memoized_coefficients
-// remembers an undamped mode's: a damped bat (Material::loss_factor) damps every vibrational mode,
-// whose closed forms (an exponential, a sine and a cosine at the end and at 8 Gauss nodes) would
-// otherwise be computed anew for every kept set of modes a run meets.
+// A damped mode's step response and dissipation quadrature, remembered by (omega, zeta, h, past
+// ratio) for the step lengths that recur: a damped bat (Material::loss_factor) damps every
+// vibrational mode, whose closed forms (an exponential, a sine and a cosine at the end and at 8
+// Gauss nodes) would otherwise be computed anew for every kept set of modes a run meets.
 struct DampedCoefficients {
   ModeCoefficients end;
   DampedQuadrature quadrature;  // its `mode` set by the caller; empty when not asked
@@ -247,8 +231,14 @@ const DampedCoefficients& memoized_damped_coefficients(double w, double zeta, do
 }  // namespace
 
 ModeResponse::ModeResponse(const Eigen::ArrayXd& w, const Eigen::ArrayXd& zeta, double step, double ball_mass,
-                           double past, bool memoize, bool with_quadrature)
-    : h(step), past_ratio(past), omega(w), damping(zeta), quadrature(with_quadrature) {
+                           double past, bool with_quadrature, bool remember_damped) {
+  fill(w, zeta, step, ball_mass, past, with_quadrature, remember_damped);
+}
+
+void ModeResponse::fill(const Eigen::ArrayXd& w, const Eigen::ArrayXd& zeta, double step, double ball_mass,
+                        double past, bool with_quadrature, bool remember_damped) {
+  h = step, past_ratio = past, omega = w, damping = zeta, quadrature = with_quadrature, this->ball_mass = ball_mass;
+  damped.clear();
   const int n = static_cast<int>(omega.size());
   c.resize(n), sn.resize(n), w2sn.resize(n), cv.resize(n), d.resize(n, data_count), q.resize(n, data_count);
   const Basis b = interpolant_basis(past_ratio, h);
@@ -256,19 +246,22 @@ ModeResponse::ModeResponse(const Eigen::ArrayXd& w, const Eigen::ArrayXd& zeta, 
     c(i) = m[0], sn(i) = m[1], w2sn(i) = m[2], cv(i) = m[3];
     for (int j = 0; j < data_count; ++j) d(i, j) = m[free_count + j], q(i, j) = m[free_count + data_count + j];
   };
-  for (int i = 0; i < n; ++i) {
-    const bool damped_mode = damping.size() && damping(i) != 0;
-    if (damped_mode) {
+  // Every mode as if undamped, all at once; the damped ones are then made over.
+  double basis[data_count * powers];  // row-major
+  for (int j = 0; j < data_count; ++j)
+    for (int k = 0; k < powers; ++k) basis[j * powers + k] = b(j, k);
+  ResponseColumns columns{c.data(), sn.data(), w2sn.data(), cv.data(), {}, {}};
+  for (int j = 0; j < data_count; ++j) columns.d[j] = d.col(j).data(), columns.q[j] = q.col(j).data();
+  undamped_responses(omega.data(), n, h, basis, columns);
+  for (int i = 0; damping.size() && i < n; ++i) {
+    if (damping(i) != 0) {
       const DampedCoefficients computed =
-          memoize ? DampedCoefficients{} : damped_coefficients(omega(i), damping(i), h, b, quadrature);
+          remember_damped ? DampedCoefficients{} : damped_coefficients(omega(i), damping(i), h, b, quadrature);
       const DampedCoefficients& m =
-          memoize ? memoized_damped_coefficients(omega(i), damping(i), h, past_ratio, b, quadrature) : computed;
+          remember_damped ? memoized_damped_coefficients(omega(i), damping(i), h, past_ratio, b, quadrature) : computed;
       set_mode(i, m.end);
       if (quadrature) damped.push_back(m.quadrature), damped.back().mode = i;
-      continue;
     }
-    const ModeCoefficients computed = memoize ? ModeCoefficients{} : mode_coefficients(omega(i), h, b);
-    set_mode(i, memoize ? memoized_coefficients(omega(i), h, past_ratio, b) : computed);
   }
   const ModeCoefficients ball = mode_coefficients(0, h, b);
   for (int j = 0; j < data_count; ++j) {
@@ -294,8 +287,8 @@ namespace {
 // The responses at the nominal step and at its split parts are the same for every impact
 // that keeps the same modes (only the mode shapes at the contact differ), so each thread keeps
 // them, keyed by step, past ratio, ball mass and frequencies. With modes = auto the kept set
-// varies from impact to impact, and event steps vary too; the cache starts over when it grows
-// large.
+// varies from impact to impact; the cache starts over when it grows large. Event steps, whose
+// lengths never recur, are not kept (ExactStepper::event_coefficients).
 std::shared_ptr<const ModeResponse> cached_response(const Eigen::ArrayXd& omega, const Eigen::ArrayXd& damping,
                                                     std::size_t omega_key, double h, double ball_mass,
                                                     double past_ratio, bool quadrature) {
@@ -314,7 +307,7 @@ std::shared_ptr<const ModeResponse> cached_response(const Eigen::ArrayXd& omega,
   thread_local std::size_t stored = 0;  // doubles held: at most about 32 MB per thread
   if (stored > 4'000'000) cache.clear(), stored = 0;
   stored += (free_count + 2 * data_count) * omega.size();
-  auto response = std::make_shared<const ModeResponse>(omega, damping, h, ball_mass, past_ratio, true, quadrature);
+  auto response = std::make_shared<const ModeResponse>(omega, damping, h, ball_mass, past_ratio, quadrature, true);
   cache.emplace(key, std::make_pair(ball_mass, response));
   return response;
 }
@@ -346,6 +339,33 @@ const StepCoefficients& ExactStepper::coefficients(double h, double past_ratio) 
       psi2_,
       state_.compliance());
   return kept_.back();
+}
+
+StepCoefficients ExactStepper::event_coefficients(double h) {
+  // A small table per thread whose slots are responses filled in place: an event step met again
+  // (a scene run again) finds its response; a new one takes its slot over, with no allocation once
+  // the slot has the size. (Keeping every event step grew maps with lengths that never recur.)
+  // A response is used within one call of locate() only, so a slot can be refilled at the next.
+  struct Slot {
+    std::size_t key = 0;
+    bool filled = false;
+    std::shared_ptr<ModeResponse> response = std::make_shared<ModeResponse>();
+  };
+  constexpr std::size_t slots = 64;
+  thread_local std::array<Slot, slots> table;
+  const Eigen::ArrayXd& omega = state_.body().omega.array();
+  const double mass = state_.ball_mass();
+  const std::size_t key = omega_key_ ^ std::hash<double>()(h) ^ (std::hash<double>()(mass) << 1);
+  Slot& slot = table[key % slots];
+  ModeResponse& r = *slot.response;
+  const bool same = slot.filled && slot.key == key && r.h == h && r.ball_mass == mass &&
+                    r.quadrature == options_.damping_loss && r.omega.size() == omega.size() && (r.omega == omega).all() &&
+                    r.damping.size() == damping_.size() && (r.damping == damping_).all();
+  if (!same) {
+    r.fill(omega, damping_, h, mass, 0, options_.damping_loss, false);
+    slot.key = key, slot.filled = true;
+  }
+  return StepCoefficients(slot.response, psi2_, state_.compliance());
 }
 
 double ExactStepper::past_ratio(const Eigen::VectorXd& y, double h, const ContactForce& law) const {
@@ -394,16 +414,15 @@ double ExactStepper::locate(const Eigen::VectorXd& y, double h, const ContactFor
     }
   }
   if (hi >= 1) return h;  // `out` already is the state at the end of the step
-  // The event step ends on a 1/4096 grid of the step just past the root, so its response recurs
-  // from impact to impact and is kept. Where it lands (within h/4096, ~2 ns at 10 us) changes
-  // nothing that matters: the force is stationary there (F' = 0 at maximum compression, F = 0
-  // at separation) and the loop's energy is exact anyway. Separation keeps the root's own time,
-  // for the contact time; free flight from there is exact.
+  // The event step ends on a 1/4096 grid of the step just past the root. Where it lands (within
+  // h/4096, ~2 ns at 10 us) changes nothing that matters: the force is stationary there (F' = 0
+  // at maximum compression, F = 0 at separation) and the loop's energy is exact anyway.
+  // Separation keeps the root's own time, for the contact time; free flight from there is exact.
   const double fraction = std::ceil(hi * event_grid) / event_grid;
   if (fraction >= 1) return h;
   // Its length is new at every impact, so its response is computed afresh: the cubic's, in one
   // piece (the quintic's would need its own basis, and a split step three responses).
-  advance(coefficients(fraction * h, 0), y, law, out);
+  advance(event_coefficients(fraction * h), y, law, out);
   return event == ContactEvent::separation ? hi * h : fraction * h;
 }
 
@@ -419,13 +438,26 @@ double touch_stiffness(const ContactForce& law, double u_end) {
 
 // Solves for the end compression u1 with F1 = F(u1) and F1' = F'(u1) u1': Newton on
 // g(u) = u - u_known + gC F(u) + gD F1'(u), kept inside [0, u_known] where g changes sign.
-// `guess` is a prediction of u1 (the Taylor step from the start of the step).
+// `guess` is a prediction of u1 (advance: extrapolated from the past step, or a Taylor step).
 double end_compression(const StepCoefficients& k, const ContactForce& law, double u_known, double du_known,
                        double guess) {
   if (u_known <= 0) return u_known;  // no force can arise: the ball is clear all step
   const double e = law.exponent();
+  // The force at the first iterate from the law (a pow), at the others, close to it, from its
+  // binomial series: F(u) = F(u_ref) (1 + x)^e, x = u / u_ref - 1, which to the 6th power in x
+  // is exact to round-off while |e x| <= 1e-3 (the rest is below (e x)^7 / 7!). Newton's steps
+  // from a good guess are that small: one pow a step instead of one an iteration.
+  double u_ref = -1, f_ref = 0, inverse_ref = 0;
+  const auto force = [&](double u) {
+    const double x = (u - u_ref) * inverse_ref;
+    if (u_ref > 0 && std::abs(e * x) <= 1e-3)
+      return f_ref * (1 + e * x * (1 + (e - 1) / 2 * x * (1 + (e - 2) / 3 * x * (1 + (e - 3) / 4 * x *
+                                   (1 + (e - 4) / 5 * x * (1 + (e - 5) / 6 * x))))));
+    u_ref = u, f_ref = law(u), inverse_ref = 1 / u;
+    return f_ref;
+  };
   const auto g = [&](double u, double& slope) {
-    const double f = law(u), inverse_u = 1 / u, stiffness = e * f * inverse_u;
+    const double f = force(u), inverse_u = 1 / u, stiffness = e * f * inverse_u;
     const double stiffness_rate = (e - 1) * stiffness * inverse_u;
     const double inverse_denominator = 1 / (1 + k.hD * stiffness), numerator = du_known - k.hC * f;
     const double rate = stiffness * numerator * inverse_denominator;
@@ -437,17 +469,15 @@ double end_compression(const StepCoefficients& k, const ContactForce& law, doubl
   double lo = 0, hi = u_known, slope = 0;
   double u = guess > 0 && guess < u_known ? guess : u_known;  // from above, Newton does not overshoot
   // Newton converges quadratically: after a step of x u the error is about K x^2 u, K = u |g''| /
-  // 2 g' at most 1 + |e - 1| / 2 for the power law. It stops once that is below 1e-13 of u.
-  const double converged = std::sqrt(1e-13 / (1 + std::abs(e - 1) / 2));
+  // 2 g' at most 1 + |e - 1| / 2 for the power law. It stops once that is below 1e-13 of u:
+  // (x u)^2 K <= 1e-13 u^2, without a square root or a division.
+  const double k_bound = 1 + std::abs(e - 1) / 2;
   for (int iteration = 0; iteration < 100; ++iteration) {
     const double value = g(u, slope);
     (value > 0 ? hi : lo) = u;
     double next = u - value / slope;
-    // The force at `next` is F(u) (1 + x)^e, x = (next - u) / u, to second order: exact to
-    // round-off at such small x.
-    if (std::abs(next - u) <= converged * u) {
-      const double x = (next - u) / u;
-      law.remember(next, law(u) * (1 + e * x * (1 + (e - 1) / 2 * x)));
+    if ((next - u) * (next - u) * k_bound <= 1e-13 * u * u) {
+      law.remember(next, force(next));
       return next;
     }
     if (hi - lo <= 1e-15 * hi) return next;
@@ -480,16 +510,14 @@ double ExactStepper::damped_dissipation(const ModeResponse& m, const Eigen::Vect
 
 // One pass over the modes for what is known before the end force (free rotation plus the
 // response to the past and start data), summing the contact's u and u' on the way; a second adds
-// the response to F1 and F1'. Plain loops: Eigen would make a pass per expression and one per sum.
+// the response to F1 and F1' (mode_kernels.hpp: Eigen would make a pass per expression and one
+// per sum, and its sums' order would change with the vector unit).
 void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, const ContactForce& law,
                            Eigen::VectorXd& out) {
   const ModeResponse& m = *k.response;
   const int n = state_.modes();
   out.resize(y.size());
-  const double *a = y.data() + 2, *v = a + n;
   double *out_a = out.data() + 2, *out_v = out_a + n;
-  const double *c = m.c.data(), *sn = m.sn.data(), *w2sn = m.w2sn.data(), *cv = m.cv.data(), *psi = psi_.data(),
-               *psi_w2 = psi_w2_.data();
   const auto d = [&m](Datum j) { return m.d.col(j).data(); };
   const auto q = [&m](Datum j) { return m.q.col(j).data(); };
 
@@ -500,24 +528,34 @@ void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, 
   const bool quintic = m.past_ratio > 0;
   const double fp = quintic ? past_.force : 0.0, rp = quintic ? past_.rate : 0.0;
 
-  const double *dP = d(past_force), *dQ = d(past_rate), *dA = d(start_force), *dB = d(start_rate);
-  const double *qP = q(past_force), *qQ = q(past_rate), *qA = q(start_force), *qB = q(start_rate);
-  double psi_a = 0, psi_v = 0, psi_w2a = 0;
-#pragma omp simd reduction(+ : psi_a, psi_v, psi_w2a)
-  for (int i = 0; i < n; ++i) {
-    const double a_known = c[i] * a[i] + sn[i] * v[i] - psi[i] * (fp * dP[i] + rp * dQ[i] + f0 * dA[i] + r0 * dB[i]);
-    const double v_known = cv[i] * v[i] - w2sn[i] * a[i] - psi[i] * (fp * qP[i] + rp * qQ[i] + f0 * qA[i] + r0 * qB[i]);
-    out_a[i] = a_known, out_v[i] = v_known;
-    psi_a += psi[i] * a_known, psi_v += psi[i] * v_known, psi_w2a += psi_w2[i] * a[i];
-  }
+  const StepArrays arrays{y.data() + 2, y.data() + 2 + n, m.c.data(), m.sn.data(), m.w2sn.data(), m.cv.data(),
+                          psi_.data(), psi_w2_.data(), {d(past_force), d(past_rate), d(start_force), d(start_rate)},
+                          {q(past_force), q(past_rate), q(start_force), q(start_rate)}, out_a, out_v};
+  const auto [psi_a, psi_v, psi_w2a] = step_known(n, arrays, {fp, rp, f0, r0});
   const double s_known = y(0) + y(1) * m.h + fp * m.ball_d[past_force] + rp * m.ball_d[past_rate] +
                          f0 * m.ball_d[start_force] + r0 * m.ball_d[start_rate];
   const double vb_known = y(1) + fp * m.ball_q[past_force] + rp * m.ball_q[past_rate] + f0 * m.ball_q[start_force] +
                           r0 * m.ball_q[start_rate];
   const double u_known = psi_a - s_known, du_known = psi_v - vb_known;
 
-  const double ddu0 = -psi_w2a - f0 * (k.psi2_sum + 1 / state_.ball_mass());
-  const double guess = u0 + m.h * du0 + 0.5 * m.h * m.h * ddu0;
+  // The geometric compression's acceleration, then the ball's own: from u_ball + c F(u_ball) = u,
+  // u_ball'' (1 + c F') = u'' - c F'' u_ball'^2 (the same without a residual compliance c).
+  const double ddu_geometric = -psi_w2a - f0 * (k.psi2_sum + 1 / state_.ball_mass());
+  const double c = state_.compliance(), e = law.exponent();
+  const double ddu0 = c == 0 || u0 <= 0 ? ddu_geometric
+                                        : (ddu_geometric - c * e * (e - 1) * f0 / (u0 * u0) * du0 * du0) / (1 + c * k0);
+  // Newton's first iterate: with a past step, the end force extrapolated (the cubic through the
+  // past and start force and rate) and the compression the step's linear relation gives for it;
+  // it is mostly within what Newton's test accepts after one evaluation (one pow a step), where the
+  // Taylor guess from the start, which the modes' ringing puts off, took two. Without, that guess.
+  double guess = u0 + m.h * du0 + 0.5 * m.h * m.h * ddu0;
+  if (quintic) {
+    const double a = past_.h, t = m.h;
+    const double r1 = fp - f0 + r0 * a, r2 = rp - r0;  // p(t) = f0 + r0 t + c2 t^2 + c3 t^3
+    const double c3 = (r2 + 2 * r1 / a) / (a * a), c2 = r1 / (a * a) + c3 * a;
+    const double f1 = f0 + t * (r0 + t * (c2 + t * c3)), df1 = r0 + t * (2 * c2 + 3 * t * c3);
+    guess = u_known - k.gC * f1 - k.gD * df1;
+  }
   const double u1 = end_compression(k, law, u_known, du_known, guess);
   const double f1 = law(u1);
   const double stiffness = u1 > 0 ? law.exponent() * f1 / u1 : 0.0;
@@ -525,12 +563,7 @@ void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, 
 
   out(0) = s_known + f1 * m.ball_d[end_force] + r1 * m.ball_d[end_rate];
   out(1) = vb_known + f1 * m.ball_q[end_force] + r1 * m.ball_q[end_rate];
-  const double *dC = d(end_force), *dD = d(end_rate), *qC = q(end_force), *qD = q(end_rate);
-#pragma omp simd
-  for (int i = 0; i < n; ++i) {
-    out_a[i] -= psi[i] * (f1 * dC[i] + r1 * dD[i]);
-    out_v[i] -= psi[i] * (f1 * qC[i] + r1 * qD[i]);
-  }
+  step_end(n, out_a, out_v, psi_.data(), d(end_force), d(end_rate), q(end_force), q(end_rate), f1, r1);
   if (const int k = state_.dissipated_index(); k >= 0)
     out(k) = y(k) + damped_dissipation(m, y, {fp, rp, f0, r0, f1, r1});
   // The end's u and u' follow from the sums already made, without another pass over the modes.

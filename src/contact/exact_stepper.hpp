@@ -41,6 +41,7 @@ struct DampedQuadrature {
 struct ModeResponse {
   double h = 0;
   double past_ratio = 0;
+  double ball_mass = 0;  // kg
   Eigen::ArrayXd omega, damping;
   Eigen::ArrayXd c, sn, w2sn, cv;
   Eigen::ArrayXXd d, q;
@@ -48,10 +49,16 @@ struct ModeResponse {
   std::vector<DampedQuadrature> damped;  // empty without `quadrature`
   bool quadrature = true;
 
-  // memoize: take each mode's coefficients from (and add them to) this thread's memory.
   // quadrature: the damped modes' dissipation quadrature too (CollisionOptions::damping_loss).
+  // remember_damped: take each damped mode's coefficients from (and add them to) this thread's
+  // memory, for the lengths that recur from impact to impact (a damped mode's closed forms cost
+  // an exponential and a sine and cosine at 9 times).
   ModeResponse(const Eigen::ArrayXd& omega, const Eigen::ArrayXd& damping, double h, double ball_mass,
-               double past_ratio, bool memoize = false, bool quadrature = true);
+               double past_ratio, bool quadrature = true, bool remember_damped = false);
+  ModeResponse() = default;
+  // Computes the response anew in place: the arrays keep their memory when the size is the same.
+  void fill(const Eigen::ArrayXd& omega, const Eigen::ArrayXd& damping, double h, double ball_mass, double past_ratio,
+            bool quadrature, bool remember_damped);
 };
 
 // A response with the sums over the contact point's mode shapes that tie the ball's compression
@@ -108,7 +115,13 @@ class ExactStepper {
   // The past ratio a step from y of length h can use (0: none, cubic).
   double past_ratio(const Eigen::VectorXd& y, double h, const ContactForce& law) const;
   void advance(const StepCoefficients& k, const Eigen::VectorXd& y, const ContactForce& law, Eigen::VectorXd& out);
+  // The coefficients of a step whose length recurs (the nominal step, its split parts, halved
+  // steps): kept for this impact, and their responses for the thread's later impacts.
   const StepCoefficients& coefficients(double h, double past_ratio);
+  // An event step's: its length is new at every impact of a study, so its response is made in
+  // one slot of a small per-thread table, filled in place (keeping every one filled the thread's
+  // memory with lengths that never recur, an allocation and a cache miss each).
+  StepCoefficients event_coefficients(double h);
   // Responses are kept per thread by frequencies, damping and step; the hash is made once.
   static std::size_t frequencies_key(const Eigen::ArrayXd& omega, const Eigen::ArrayXd& damping);
   // The energy the damped modes dissipate over the step from y, given the data it weighted.

@@ -352,6 +352,7 @@ outer_diameter and inner_diameter (per slice, m).)");
   bind_bat_design(m, bat);
   bind_quantity_arguments(m);
 
+  // The result, and the radius of the ball the scene resolved (impact() warns past it).
   m.def("_impact", [](BatHandle& bat, const py::dict& args) {
     const SceneArgs scene = scene_args(args);
     ImpactResult r;
@@ -359,7 +360,7 @@ outer_diameter and inner_diameter (per slice, m).)");
       py::gil_scoped_release release;
       r = run_impact_with_errors(bat, scene);
     }
-    return result_dict(r, bat.bat());
+    return py::make_tuple(result_dict(r, bat.bat()), scene.scene.ball.radius);
   });
   m.def("_max_threads", &max_threads);
   m.attr("_min_slices") = min_slices;

@@ -26,6 +26,9 @@ const std::set<std::string>& known_arguments() {
 }
 
 bool is_numpy(const py::handle& value, const char* type) {
+  // A plain Python float, int or str is none of numpy's types: no import asked (most arguments).
+  if (PyFloat_CheckExact(value.ptr()) || PyLong_CheckExact(value.ptr()) || PyUnicode_CheckExact(value.ptr()))
+    return false;
   return py::isinstance(value, py::module_::import("numpy").attr(type));
 }
 

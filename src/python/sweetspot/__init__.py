@@ -15,6 +15,7 @@ the numbers, defaults filled in, SI units as `scene_units` lists them), the bat 
 `Conventions`, under the names a study dataset uses. `scene_of` and `bat_of` read them back, so
 that a saved result can be computed again: `impacts_like(xr.open_dataset(path))`.
 """
+import functools
 import os
 import shutil
 import subprocess
@@ -61,6 +62,10 @@ def _real(name, value, dimension=None, arrays=False):
     imaginary part would be lost), bools, other strings and objects are refused."""
     if value is None:
         return None
+    if type(value) is float:  # the common cases, at once
+        return value
+    if type(value) is int and -2**53 <= value <= 2**53:  # exactly a float (bool is no int here)
+        return float(value)
     expected = "a real number" + (" or an array of real numbers" if arrays else "")
     if isinstance(value, str):
         si = _si(name, value, dimension)  # ValueError naming the argument and the units if no quantity
@@ -88,7 +93,17 @@ class Result(dict):
 
     def __init__(self, values, attrs):
         super().__init__(values)
-        self.attrs = attrs
+        self._attrs = attrs  # the dict, or a function that makes it when first read (impact())
+
+    @property
+    def attrs(self):
+        if callable(self._attrs):
+            self._attrs = self._attrs()
+        return self._attrs
+
+    @attrs.setter
+    def attrs(self, value):
+        self._attrs = value
 
 
 def _provenance(kind):
@@ -99,12 +114,18 @@ def _provenance(kind):
             "program_version": __version__, "git_commit": _git_commit}
 
 
+@functools.lru_cache(maxsize=None)
+def _units(name):
+    """The units of an output or scene value of that name (fixed by the program)."""
+    return _describe(name)[0]
+
+
 def _with_units(scene):
     """`scene` and `scene_units`: each number's units as a dataset's variable of that name has them
     (netCDF attributes carry no attributes of their own)."""
     units = []
     for name, value in scene.items():
-        unit = _describe(name.removeprefix("scene_"))[0] if not isinstance(value, str) else ""
+        unit = _units(name.removeprefix("scene_")) if not isinstance(value, str) else ""
         if name == "scene_pivot" and "scene_standard" in scene:
             unit = "m"  # the rig's pivot: a point, not the swing's flag
         if unit:
@@ -301,12 +322,12 @@ def impact(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=No
     args = _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, pivot, modes,
                   mode_tolerance, accuracy, step_accuracy, integrator, dt, tolerance, window, theory, n2000, ball)
     _check_bat(bat)
-    result = _impact(bat, args)
-    radius = _si("ball_radius", ball_radius) if ball_radius is not None else _ball(ball or "n2000")["radius"]
+    result, radius = _impact(bat, args)
     if result["u_max"] > radius:
         warnings.warn(f"the ball compressed {1e3 * result['u_max']:.3g} mm, past its radius "
                       f"{1e3 * radius:.3g} mm: the force law is not meant for that", RuntimeWarning, stacklevel=2)
-    return Result(result, _record(bat, args))
+    # The provenance costs more than the impact: made when first read.
+    return Result(result, lambda: _record(bat, args))
 
 
 def _attrs(name):
