@@ -151,12 +151,19 @@ ImpactResult impact_with_estimates(const BatDesign& design, const Bat& bat, Beam
     };
     return simulate_within_accuracy(basis_at, bat.slices(), theory, scene);
   }
-  std::vector<ModalBasis> finer;  // the design at twice and four times the slices, as far as it can be cut
-  for (int times = 1, slices = bat.slices(); times <= 2 && can_refine(bat.slices(), theory, times); ++times)
-    finer.push_back(scene_basis(bat_with_slices(design, slices *= slicing_refinement), theory, scene));
+  const ModalBasis basis = scene_basis(bat, theory, scene);  // first: its refusals are the user's
+  // The design at twice and four times the slices, as far as it can be cut and solved in
+  // practice; where not, the slicing error stays unestimated (NaN).
+  std::vector<ModalBasis> finer;
+  try {
+    for (int times = 1, slices = bat.slices(); times <= 2 && can_refine(bat.slices(), theory, times); ++times)
+      finer.push_back(scene_basis(bat_with_slices(design, slices *= slicing_refinement), theory, scene));
+  } catch (const InputError&) {
+    finer.clear();
+  }
   std::vector<const ModalBasis*> finer_bases;
   for (const ModalBasis& b : finer) finer_bases.push_back(&b);
-  return simulate_impact_with_errors(scene_basis(bat, theory, scene), finer_bases, scene);
+  return simulate_impact_with_errors(basis, finer_bases, scene);
 }
 
 void run_impact(ImpactOptions& o) {

@@ -82,13 +82,20 @@ ImpactResult run_impact(BatHandle& bat, const SceneArgs& args) {
 ImpactResult run_impact_with_errors(BatHandle& bat, SceneArgs args) {
   args.scene.error_estimates = true;
   if (args.scene.accuracy > 0) return checked(run_within_accuracy(bat, args));
-  std::vector<std::shared_ptr<const ModalBasis>> finer;  // twice and four times the slices, as far as it can
-  BatHandle* handle = &bat;
-  for (int times = 0; times < 2 && (handle = handle->finer(args.theory)); ++times)
-    finer.push_back(scene_basis(*handle, args));
+  const auto basis = scene_basis(bat, args);  // first: its refusals are the user's
+  // Twice and four times the slices, as far as it can be cut and solved in practice; where not,
+  // the slicing error stays unestimated (NaN).
+  std::vector<std::shared_ptr<const ModalBasis>> finer;
+  try {
+    BatHandle* handle = &bat;
+    for (int times = 0; times < 2 && (handle = handle->finer(args.theory)); ++times)
+      finer.push_back(scene_basis(*handle, args));
+  } catch (const InputError&) {
+    finer.clear();
+  }
   std::vector<const ModalBasis*> finer_bases;
   for (const auto& b : finer) finer_bases.push_back(b.get());
-  return checked(simulate_impact_with_errors(*scene_basis(bat, args), finer_bases, args.scene));
+  return checked(simulate_impact_with_errors(*basis, finer_bases, args.scene));
 }
 
 // The result under the names of `sweetspot impact --json`, in its order; NaN where JSON has null.
