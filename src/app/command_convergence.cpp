@@ -80,7 +80,7 @@ std::string describe_choice(const AccuracyRun& run) {
 }
 
 void log_sweep(const AccuracySweep& sweep) {
-  spdlog::info("continuum vf = {:.10f} m/s (Richardson in the slices up to {}, every mode, exact at 2.5 us; its "
+  spdlog::info("continuum vf = {:.10f} m/s (Richardson in the slices up to {}, modes auto at 1e-9, exact at 2.5 us; its "
                "last two slicings differ by {:.1e})",
                sweep.reference_vf, sweep.reference_slices, sweep.reference_difference);
   spdlog::info("{:<9} {:<34} {:>9} {:>9} {:>9} {:>9} {:>9} {:>7} {:>12}", "accuracy", "chosen", "slicing", "modes",

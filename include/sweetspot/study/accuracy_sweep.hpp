@@ -5,7 +5,7 @@
 // accuracy, the bat's own slices) are the first row; the accuracies run from 1e-2 to 1e-4 (1e-3
 // alone when quick), whose slicings stay below the reference's. The reference is Richardson
 // extrapolation in the slices (order 2) of the scene with modes auto at 1e-9 and exact stepping
-// at 2.5 us, on the design cut into 16N and 32N slices (8N and 16N when quick), N the bat's own.
+// at 2.5 us, on the design cut into 8N and 16N slices, N the bat's own.
 // Free of I/O: `sweetspot convergence` prints the table and writes it into its dataset.
 #include <limits>
 #include <vector>
