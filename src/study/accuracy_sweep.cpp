@@ -46,7 +46,7 @@ std::pair<ImpactResult, double> timed(F&& f, int repeats) {
   return {std::move(r), best};
 }
 
-double reference_vf(const BatDesign& design, int slices, BeamTheory theory, ImpactScene scene, bool quick,
+double reference_vf(const BatDesign& design, int slices, BeamTheory theory, ImpactScene scene,
                     AccuracySweep& sweep) {
   scene.mode_tolerance = 1e-9;
   scene.integrator.method = Method::exact;
@@ -85,7 +85,7 @@ AccuracySweep run_accuracy_sweep(const BatDesign& design, int slices, BeamTheory
   scene.accuracy = 0;
   scene.error_estimates = true;
   AccuracySweep sweep;
-  const double reference = reference_vf(design, slices, theory, scene, quick, sweep);
+  const double reference = reference_vf(design, slices, theory, scene, sweep);
   sweep.reference_vf = reference;
   const int repeats = quick ? 1 : 3;
 
