@@ -1,4 +1,5 @@
 // sweetspot impact: one ball on one bat, everything N2000 derives from a collision.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -272,18 +273,16 @@ void check_accuracy(const CLI::App& cmd, const ImpactScene& scene) {
   if (cmd.count("--step-accuracy") && !(std::isfinite(scene.step_accuracy) && scene.step_accuracy > 0))
     throw InputError(cmd.get_name() + ": --step-accuracy " + value(scene.step_accuracy) + ": expected " +
                      step_accuracy_expected);
-  const auto refuse_pair = [&](const char* given, const char* accuracy, const char* what) {
-    if (cmd.count(given) && cmd.count(accuracy))
-      throw InputError(cmd.get_name() + ": " + given + " excludes " + accuracy + " (which chooses " + what +
-                       "): give one of them");
+  const auto option = [](std::string key) {
+    std::ranges::replace(key, '_', '-');
+    return "--" + key;
   };
-  for (const char* accuracy : {"--accuracy", "--step-accuracy"}) {
-    refuse_pair("--dt", accuracy, "the step");
-    refuse_pair("--tolerance", accuracy, "dopri's tolerance");
+  for (const AccuracyExclusion& pair : accuracy_exclusions) {
+    const std::string given = option(pair.given), accuracy = option(pair.accuracy);
+    if (cmd.count(given) && cmd.count(accuracy))
+      throw InputError(cmd.get_name() + ": " + given + " excludes " + accuracy + " (which chooses " + pair.chooses +
+                       "): give one of them");
   }
-  refuse_pair("--step-accuracy", "--accuracy", "the step");
-  refuse_pair("--mode-tolerance", "--accuracy", "the modes' tolerance");
-  refuse_pair("--slices", "--accuracy", "the slices");
 }
 
 void add_integrator_options(CLI::App& cmd, CollisionOptions& options) {

@@ -196,17 +196,10 @@ SceneArgs scene_args(const py::dict& args, const std::set<std::string>& per_poin
       throw InputError("step_accuracy " + py::repr(get("step_accuracy")).cast<std::string>() + ": expected " +
                        step_accuracy_expected);
   }
-  const auto refuse_pair = [&](const char* given_name, const char* accuracy, const char* what) {
-    if (has(given_name) && has(accuracy))
-      throw InputError(std::string("impact: ") + given_name + " excludes " + accuracy + " (which chooses " + what +
-                       "): give one of them");
-  };
-  for (const char* accuracy : {"accuracy", "step_accuracy"}) {
-    refuse_pair("dt", accuracy, "the step");
-    refuse_pair("tolerance", accuracy, "dopri's tolerance");
-  }
-  refuse_pair("step_accuracy", "accuracy", "the step");
-  refuse_pair("mode_tolerance", "accuracy", "the modes' tolerance");
+  for (const AccuracyExclusion& pair : accuracy_exclusions)
+    if (has(pair.given) && has(pair.accuracy))
+      throw InputError(std::string("impact: ") + pair.given + " excludes " + pair.accuracy + " (which chooses " +
+                       pair.chooses + "): give one of them");
   if (has("tolerance")) s.integrator.tolerance = number("tolerance", get("tolerance"));
   if (has("window")) s.integrator.window = number("window", get("window"));
   // As the program's --n2000: RK4 at 5 us and 18 modes unless integrator, dt or modes say otherwise.

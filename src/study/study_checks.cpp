@@ -59,20 +59,13 @@ void check_swing(const Settings& s, const Where& top) {
 // one also the modes' tolerance and the slices: what it chooses, given beside it, would be
 // silently overridden, so each such pair is refused.
 void check_step_or_accuracy(const Settings& s) {
-  const auto refuse_pair = [&](const char* given_key, const char* accuracy_key, const char* what) {
-    const Setting *accuracy = s[accuracy_key], *given = s[given_key];
-    if (!accuracy || !given) return;
-    reject(given->where, given->values.size() == 1 ? given->value_text(0) : "[...]",
-           std::string("expected ") + given_key + " or " + accuracy_key + ", not both: key '" + accuracy->where.key +
-               "' is also given, and chooses " + what + " itself");
-  };
-  for (const char* accuracy : {"accuracy", "step_accuracy"}) {
-    refuse_pair("dt", accuracy, "the step");
-    refuse_pair("tolerance", accuracy, "dopri's tolerance");
+  for (const AccuracyExclusion& pair : accuracy_exclusions) {
+    const Setting *accuracy = s[pair.accuracy], *given = s[pair.given];
+    if (accuracy && given)
+      reject(given->where, given->values.size() == 1 ? given->value_text(0) : "[...]",
+             std::string("expected ") + pair.given + " or " + pair.accuracy + ", not both: key '" +
+                 accuracy->where.key + "' is also given, and chooses " + pair.chooses + " itself");
   }
-  refuse_pair("step_accuracy", "accuracy", "the step");
-  refuse_pair("mode_tolerance", "accuracy", "the modes' tolerance");
-  refuse_pair("slices", "accuracy", "the slices");
   // A fixed mode count has no estimate of what its dropped modes cost: it cannot be held to one.
   const Setting *accuracy = s["accuracy"], *modes = s["modes"];
   if (accuracy && modes)

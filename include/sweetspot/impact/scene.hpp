@@ -26,6 +26,18 @@ struct Swing {
 // 0 or less would state no error at all, so it is refused rather than read as "not set".
 inline constexpr const char* step_accuracy_expected =
     "a finite number > 0 (relative vf error the integration may add)";
+// What a stated accuracy chooses itself, by key: given beside it, each would be silently
+// overridden, so every surface (command line, study, Python) refuses the pair, in this order.
+struct AccuracyExclusion {
+  const char* given;
+  const char* accuracy;
+  const char* chooses;
+};
+inline constexpr AccuracyExclusion accuracy_exclusions[] = {
+    {"dt", "accuracy", "the step"},          {"tolerance", "accuracy", "dopri's tolerance"},
+    {"dt", "step_accuracy", "the step"},     {"tolerance", "step_accuracy", "dopri's tolerance"},
+    {"step_accuracy", "accuracy", "the step"}, {"mode_tolerance", "accuracy", "the modes' tolerance"},
+    {"slices", "accuracy", "the slices"}};
 inline constexpr const char* accuracy_expected =
     "a number from 1e-7 to 0.1 (total relative vf error: slicing, modes and step)";
 
