@@ -185,6 +185,7 @@ for call, fragments in [
         (lambda: sweetspot.certify(bat, e0="0.5"), ["e0", "'0.5'"]),
         (lambda: sweetspot.certify(bat, standard=None), ["standard", "None"]),
         (lambda: sweetspot.certify(bat, modes=10 ** 20), ["modes"]),
+        (lambda: sweetspot.certify(bat, accuracy=0), ["accuracy 0", "1e-7 to 0.1"]),
         (lambda: sweetspot.ball(5), ["name", "5"])]:
     try:
         call()
@@ -288,6 +289,10 @@ for standard in ("bbcor", "besr"):
     mine = sweetspot.certify(sweetspot.Bat.load(BAT), standard)
     run = subprocess.run([program, "certify", BAT, "--standard", standard, "--json"], capture_output=True, text=True)
     check(same(json.loads(run.stdout), mine), f"certify({standard}) equals sweetspot certify --json")
+mine = sweetspot.certify(sweetspot.Bat.load(BAT), accuracy=1e-2)
+run = subprocess.run([program, "certify", BAT, "--accuracy", "1e-2", "--json"], capture_output=True, text=True)
+check(same(json.loads(run.stdout), mine) and mine["total_error"] <= 1e-2,
+      "certify(accuracy=1e-2) equals sweetspot certify --accuracy 1e-2 --json, within its accuracy")
 for bad, what in ((lambda: sweetspot.Bat.from_knots("b", 0.84, [0, 0.9], [0.06, 0.06]), "beyond length"),
                   (lambda: sweetspot.Bat.from_knots("b", 0.84, [0.5, 0.2], [0.06, 0.06]), "increasing"),
                   (lambda: sweetspot.Bat.from_knots("b", 0.84, [0, 0.84], [0.06, 0.06], material="oak"), "oak"),

@@ -44,6 +44,23 @@ TEST_CASE("A certification study certifies each bat as sweetspot certify does", 
   }
 }
 
+TEST_CASE("A certification study at a stated accuracy certifies as certify --accuracy does", "[certification]") {
+  const StudyDir d(3);
+  const auto study_file = d.dir.write("certify.toml", "kind = \"certification\"\n[scene]\nbat = \"bats/r161.toml\"\n"
+                                                      "accuracy = 1e-2\n");
+  const Study study = load_study(study_file);
+  const GridPoint p = grid_point(study, 0);
+  const ImpactResult r = simulate_point(p, nullptr);
+  CertifyOptions options;
+  options.accuracy = 1e-2;
+  const Certification c = certify(design("studies/bats/r161.toml"), standards()[0], options);
+  CHECK(r.status == CollisionStatus::ok);
+  CHECK(r.rig.bbcor == c.measure);
+  CHECK(r.slices_used == c.slices_used);
+  CHECK(r.total_error == c.total_error);
+  CHECK(c.total_error <= 1e-2);
+}
+
 TEST_CASE("In a certification study a rigid bat's BBCOR is the ball's e0", "[certification]") {
   const StudyDir d(3);
   // N2000's ball: one COR at every speed (a speed-dependent one: test_ball.cpp).

@@ -41,7 +41,7 @@ Json checks_json(const std::vector<RuleCheck>& checks) {
   return Json::array(items);
 }
 
-void print_json(const std::string& ball, const Certification& c) {
+void print_json(const std::string& ball, double accuracy, const Certification& c) {
   Json::Object out;
   out.add("standard", c.standard.name)
       .add("z_max", c.z_max)
@@ -65,6 +65,14 @@ void print_json(const std::string& ball, const Certification& c) {
       .add("cor_slope", c.standard.ball.cor_slope)
       .add("checks", checks_json(c.checks))
       .add("pass", Json::boolean(c.pass));
+  if (accuracy > 0)
+    out.add("accuracy", accuracy)
+        .add("slices_used", c.slices_used)
+        .add("slicing_error", c.slicing_error)
+        .add("modes_error", c.modes_error)
+        .add("step_error", c.step_error)
+        .add("total_error", c.total_error)
+        .add("accurate", Json::boolean(c.accurate));
   if (c.hollow) out.add("barrel", barrel_json(c.barrel));
   std::printf("%s\n", Json(out).text().c_str());
 }
@@ -79,7 +87,8 @@ std::string moi_text(const Certification& c, const DisplayUnits& u) {
          "; the model's slices: " + us.moment_of_inertia(c.moi_pivot_model, "%.0f") + ")";
 }
 
-void print_text(const std::string& bat_name, const std::string& ball, const Certification& c, const DisplayUnits& u) {
+void print_text(const std::string& bat_name, const std::string& ball, double accuracy, const Certification& c,
+                const DisplayUnits& u) {
   const Standard& s = c.standard;
   const DisplayUnits si = DisplayUnits::si_units(), us = DisplayUnits::us_units();
   std::printf("%s against %s: %s\n", bat_name.c_str(), s.title.c_str(), c.pass ? "PASS" : "FAIL");
@@ -112,6 +121,10 @@ void print_text(const std::string& bat_name, const std::string& ball, const Cert
       std::printf("%s compression %.6g N", c.barrel.hoop_frequency > 0 ? " and" : " to", c.barrel.compression);
     std::printf(" ([barrel], at its reference section)\n");
   }
+  if (accuracy > 0)
+    std::printf("accuracy        %.3g stated: %.3g estimated%s (slicing %.3g at %d slices, modes %.3g, step %.3g)\n",
+                accuracy, c.total_error, c.accurate ? "" : ", NOT MET: the slices cannot double again", c.slicing_error,
+                c.slices_used, c.modes_error, c.step_error);
   std::printf("%-16s %12s %12s  %s\n", "rule", "value", "limit", "result");
   for (const RuleCheck& r : c.checks)
     std::printf("%-16s %12.6g %12.6g  %s\n", r.rule.c_str(), r.value, r.limit, r.pass ? "pass" : "FAIL");
@@ -125,8 +138,9 @@ void run_certify(CertifyCommand& o) {
   o.options.vibrational_modes = parse_modes(o.modes);
   o.options.theory = parse_beam_theory(o.theory);
   const Certification c = certify(design, find_standard(o.standard), o.options);
-  if (o.json) print_json(o.ball, c);
-  else print_text(design.name, o.ball, c, o.units);
+  const double accuracy = o.options.accuracy.value_or(0);
+  if (o.json) print_json(o.ball, accuracy, c);
+  else print_text(design.name, o.ball, accuracy, c, o.units);
   if (!c.pass) exit_status = failed_check;
 }
 
@@ -151,6 +165,8 @@ void add_certify_command(CLI::App& app) {
   cmd->add_option("--slices", o->options.slices, "slice count N (default: the bat's own)")
       ->check(CLI::Range(min_slices, max_slices));
   cmd->add_option("--modes", o->modes, "vibrational modes kept: a number, 'all' or 'auto'")->capture_default_str();
+  cmd->add_option("--accuracy", o->options.accuracy,
+                  "total relative error of the measure (1e-7 to 0.1): chooses the slices, modes and step");
   cmd->add_flag("--json", o->json, "print one JSON object (in SI units)");
   o->units.add_option(*cmd);
   cmd->callback([o] {

@@ -22,6 +22,7 @@ ImpactScene rig_scene(const RigSettings& rig, double z) {
   scene.swing.omega = 0;
   scene.pivoted = true;
   scene.vibrational_modes = rig.vibrational_modes;
+  scene.accuracy = rig.accuracy;
   scene.integrator = rig.integrator;
   return scene;
 }

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "sweetspot/ball/ball_tests.hpp"
+#include "sweetspot/impact/error_estimates.hpp"
 #include "sweetspot/impact/impact.hpp"
 #include "sweetspot/impact/scan_maximum.hpp"
 #include "sweetspot/input_error.hpp"
@@ -41,7 +42,7 @@ ModeRequest partial_scan_request(const ModalBasis& rigid, const RigSettings& rig
   if (modes != auto_modes) return ModeRequest::lowest(modes);
   ModeRequest widest = ModeRequest::below(0);
   for (const double z : scan_points(scan_start(scan, rigid.length()), scan_end(scan, rigid.length()), scan.step)) {
-    const ModeRequest asked = auto_mode_request(rig_scene(rig, z), rigid);
+    const ModeRequest asked = auto_mode_request(scene_for_accuracy(rig_scene(rig, z)), rigid);
     if (asked.is_all()) return asked;
     widest.below_omega = std::max(widest.below_omega, asked.below_omega);
   }
@@ -84,6 +85,7 @@ RigSettings certification_rig(const Standard& standard, const CertifyOptions& op
   rig.ball_speed = options.ball_speed.value_or(standard.ball_speed);
   rig.pivot = options.pivot.value_or(standard.pivot);
   rig.vibrational_modes = options.vibrational_modes;
+  rig.accuracy = options.accuracy.value_or(0);
   rig.integrator.damping_loss = false;  // the measures need no energy balance
   if (!in_range(ball_cor_range, rig.ball.e0)) reject("e0", rig.ball.e0, range_text(ball_cor_range));
   if (!(rig.ball_speed > 0) || !std::isfinite(rig.ball_speed))
@@ -119,7 +121,10 @@ std::vector<RuleCheck> rule_checks(const Standard& standard, double measure, dou
   return checks;
 }
 
-Certification certify(const BatDesign& design, const Standard& standard, const CertifyOptions& options) {
+namespace {
+
+// The certification at the options' slices.
+Certification certify_at_slices(const BatDesign& design, const Standard& standard, const CertifyOptions& options) {
   const RigSettings rig = certification_rig(standard, options, design.length);
   const ModalBasis basis = certification_modes(design, options, rig);
   const ScanMaximum peak = barrel_maximum(basis, rig, standard.measure, options.scan);
@@ -134,10 +139,15 @@ Certification certify(const BatDesign& design, const Standard& standard, const C
     c.hoop_frequency = wall->frequency_hz();
     c.barrel_compression = barrel_compression(*wall);
   }
-  // The wall's load at the peak: the hit again, whole (rig_hit keeps the measures alone).
-  const ImpactResult hit = simulate_impact(basis, rig_scene(rig, peak.x));
+  // The wall's load at the peak: the hit again, whole (rig_hit keeps the measures alone), with
+  // its modes' and step's error estimates at a stated accuracy.
+  ImpactScene peak_scene = rig_scene(rig, peak.x);
+  peak_scene.error_estimates = rig.accuracy > 0;
+  const ImpactResult hit = simulate_impact(basis, peak_scene);
   c.barrel_phi = hit.barrel_phi;
   c.barrel_compliance = hit.barrel_compliance;
+  c.slices_used = basis.slices();
+  if (rig.accuracy > 0) c.modes_error = hit.modes_error, c.step_error = hit.step_error;
   c.hollow = !design_profile(design).inner.empty();
   c.barrel = design.material.barrel;
   c.evaluations = peak.evaluations + 1;
@@ -151,6 +161,48 @@ Certification certify(const BatDesign& design, const Standard& standard, const C
   c.checks = rule_checks(standard, c.measure, c.barrel_diameter, c.drop, c.length);
   c.pass = std::ranges::all_of(c.checks, &RuleCheck::pass);
   return c;
+}
+
+// What a stated accuracy cannot be given with, refused before any work.
+void check_accuracy_options(const CertifyOptions& options) {
+  if (!(*options.accuracy >= min_accuracy && *options.accuracy <= max_accuracy))
+    reject("accuracy", *options.accuracy, accuracy_expected);
+  if (options.slices > 0)
+    throw InputError("certify: slices " + std::to_string(options.slices) +
+                     " with accuracy: the accuracy chooses the slices; give one of them");
+  if (options.vibrational_modes >= 0)
+    throw InputError("certify: modes " + std::to_string(options.vibrational_modes) +
+                     " with accuracy: a fixed number of modes cannot be held to an accuracy; expected 'auto' or 'all'");
+}
+
+// The certification on the design cut at its own slices N, then 2N, 4N ...: at least three
+// slicings, then one more while the measure's Richardson estimate (error_estimates.hpp) exceeds
+// the slicing's share. The finest is the answer.
+Certification certify_within_accuracy(const BatDesign& design, const Standard& standard, CertifyOptions options) {
+  check_accuracy_options(options);
+  const double share = accuracy_budget(*options.accuracy).slicing;
+  std::vector<double> measures;
+  int evaluations = 0;
+  for (options.slices = build_bat(design).slices();; options.slices *= slicing_refinement) {
+    Certification c = certify_at_slices(design, standard, options);
+    evaluations += c.evaluations;
+    measures.push_back(c.measure);
+    const bool can_double = can_refine(options.slices, options.theory);
+    if (measures.size() < 3 && can_double) continue;
+    c.slicing_error = slicing_error(measures, measures.size() - 1) / std::abs(c.measure);
+    if (c.slicing_error > share && can_double) continue;
+    c.accurate = c.slicing_error <= share;
+    c.total_error = c.slicing_error + c.modes_error + c.step_error;
+    c.evaluations = evaluations;
+    return c;
+  }
+}
+
+}  // namespace
+
+Certification certify(const BatDesign& design, const Standard& standard, const CertifyOptions& options) {
+  if (options.accuracy) return certify_within_accuracy(design, standard, options);
+  return certify_at_slices(design, standard, options);
 }
 
 }  // namespace sweetspot

@@ -85,7 +85,7 @@ py::dict properties(const BatHandle& b) {
 
 py::dict certification(const BatHandle& b, const std::string& standard, std::optional<std::string> ball, std::optional<double> e0,
                        std::optional<double> ball_speed, std::optional<double> pivot, const py::object& modes,
-                       const std::string& theory) {
+                       const std::string& theory, std::optional<double> accuracy) {
   CertifyOptions options;
   if (ball) options.ball = load_ball(*ball, "ball").ball;
   options.e0 = e0;
@@ -93,6 +93,7 @@ py::dict certification(const BatHandle& b, const std::string& standard, std::opt
   options.pivot = pivot;
   options.vibrational_modes = parse_modes(modes);
   options.theory = parse_beam_theory(theory);
+  options.accuracy = accuracy;
   const Standard& s = find_standard(standard);
   Certification c;
   {
@@ -126,6 +127,15 @@ py::dict certification(const BatHandle& b, const std::string& standard, std::opt
   d["cor_slope"] = c.standard.ball.cor_slope;
   d["checks"] = checks;
   d["pass"] = c.pass;
+  if (accuracy) {  // the keys of `sweetspot certify --accuracy A --json`
+    d["accuracy"] = *accuracy;
+    d["slices_used"] = c.slices_used;
+    d["slicing_error"] = c.slicing_error;
+    d["modes_error"] = c.modes_error;
+    d["step_error"] = c.step_error;
+    d["total_error"] = c.total_error;
+    d["accurate"] = c.accurate;
+  }
   if (c.hollow) {
     py::dict b;
     const double nan = std::nan("");
@@ -188,7 +198,7 @@ void bind_bat_design(py::module_& m, py::class_<BatHandle, std::shared_ptr<BatHa
            "inches minus weight in ounces), balance_point (m from the knob), moi_knob, moi_pivot (6 in "
            "from the knob), moi_cm (kg m^2).");
   m.def("_certify", &certification, py::arg("bat"), py::arg("standard"), py::arg("ball"), py::arg("e0"), py::arg("ball_speed"),
-        py::arg("pivot"), py::arg("modes"), py::arg("theory"));
+        py::arg("pivot"), py::arg("modes"), py::arg("theory"), py::arg("accuracy"));
 }
 
 }  // namespace sweetspot::python

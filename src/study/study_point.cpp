@@ -23,6 +23,7 @@ ImpactResult certification_point(const GridPoint& point) {
   options.slices = point.slices;
   options.vibrational_modes = point.scene.vibrational_modes;
   options.theory = point.theory;
+  if (point.scene.accuracy > 0) options.accuracy = point.scene.accuracy;
   const Certification c = certify(*point.design_spec, standards()[point.standard], options);
   ImpactResult r;
   r.z = c.z_max;
@@ -30,6 +31,10 @@ ImpactResult certification_point(const GridPoint& point) {
   r.hoop_frequency = c.hoop_frequency;
   r.barrel_compression = c.barrel_compression;
   r.certified = c.pass ? 1 : 0;
+  r.slices_used = c.slices_used;
+  r.slicing_error = c.slicing_error, r.modes_error = c.modes_error, r.step_error = c.step_error;
+  r.total_error = c.total_error;
+  if (!c.accurate) r.status = CollisionStatus::inaccurate, r.message = "the measure's slicing estimate exceeds its share at the finest slices";
   if (!std::isfinite(c.measure)) r.status = CollisionStatus::non_finite, r.message = "the rig's measure is not finite";
   return r;
 }

@@ -23,6 +23,7 @@ struct RigSettings {
   double pivot = rig_pivot;
   int vibrational_modes = auto_modes;
   CollisionOptions integrator;
+  double accuracy = 0;  // a stated total accuracy: its modes' and step's shares (ImpactScene::accuracy)
 };
 
 // The MOI about point z of the bat as the model discretises it: the inertia its rigid modes

@@ -41,6 +41,11 @@ struct CertifyOptions {
   int vibrational_modes = auto_modes;
   BeamTheory theory = BeamTheory::timoshenko;
   BarrelScan scan;
+  // The total relative error the measure may carry (error_estimates.hpp), or 0 for none: its
+  // modes' and step's shares set every rig hit, and the bat is cut at its own slices, twice and
+  // four times them, and finer while the measure's slicing estimate exceeds its share. Excludes
+  // `slices` and a fixed mode count.
+  std::optional<double> accuracy;
 };
 
 struct RuleCheck {
@@ -70,7 +75,18 @@ struct Certification {
   double mass = 0, moi_pivot = 0, drop = 0, length = 0, barrel_diameter = 0;
   // The MOI about the pivot as the model discretises the bat: the r = m d^2 / I of the measures.
   double moi_pivot_model = 0;
-  int evaluations = 0;   // rig hits computed
+  int evaluations = 0;   // rig hits computed, over every slicing
+  // At a stated accuracy: the slices the answer was computed at, and the measure's estimated
+  // relative errors (error_estimates.hpp; the modes' and step's those of the exit speed at the
+  // peak, which bound the measure's: BBCOR = e_A (1 + r) + r, BESR = e_A + 1/2, BPF = BBCOR / e0).
+  // `accurate` false when the slices could not double again before the slicing met its share.
+  // NaN without a stated accuracy.
+  int slices_used = 0;
+  double slicing_error = std::numeric_limits<double>::quiet_NaN();
+  double modes_error = std::numeric_limits<double>::quiet_NaN();
+  double step_error = std::numeric_limits<double>::quiet_NaN();
+  double total_error = std::numeric_limits<double>::quiet_NaN();
+  bool accurate = true;
   std::vector<RuleCheck> checks;
   bool pass = false;     // every check passes
 };
@@ -92,7 +108,8 @@ ScanMaximum barrel_maximum(const ModalBasis& basis, const RigSettings& rig, Meas
 std::vector<RuleCheck> rule_checks(const Standard& standard, double measure, double barrel_diameter, double drop,
                                    double length);
 
-// The whole certification of a design. Throws InputError for a bad option or an impossible bat.
+// The whole certification of a design, at options.accuracy when one is stated. Throws InputError
+// for a bad option or an impossible bat.
 Certification certify(const BatDesign& design, const Standard& standard, const CertifyOptions& options);
 
 }  // namespace sweetspot

@@ -249,15 +249,18 @@ Bat.moment_of_inertia_about = _moment_of_inertia_about
 
 
 def certify(bat, standard="bbcor", *, ball=None, e0=None, ball_speed=None, pivot=None, modes="auto",
-            theory="timoshenko"):
+            theory="timoshenko", accuracy=None):
     """The bat in the virtual test rig of a standard, as `sweetspot certify --json`.
 
     Parameters: bat, a Bat; standard "bbcor", "besr" or "bpf"; e0, ball_speed (m/s, or a string such
     as "93 mph") and pivot (m from the knob, or "6 in") override the standard's rig; ball (a preset's name or a TOML file with a [ball]
     table) replaces the standard's ball, the preset "ncaa"; modes (a count, "all" or "auto") and
-    theory ("timoshenko" or "euler-bernoulli") of the bat's modes.
+    theory ("timoshenko" or "euler-bernoulli") of the bat's modes; accuracy (1e-7 to 0.1), the total
+    relative error the measure may carry: the bat is then cut at its slices, twice and four times
+    them and finer until the estimate meets it.
     Returns: a Result, a dict with standard, z_max (m), e_a, the measure by its name, moi_pivot
-    (kg m^2), mass (kg), drop, barrel_diameter (m), checks (rule, value, limit, pass) and pass, and
+    (kg m^2), mass (kg), drop, barrel_diameter (m), checks (rule, value, limit, pass) and pass (with
+    an accuracy also slices_used, slicing_error, modes_error, step_error, total_error, accurate), and
     `attrs`: the rig as run (scene_standard, scene_e0, scene_ball_speed, scene_pivot, scene_modes,
     scene_theory; scene_ball when given), the bat and the program's version and commit, so that
     ``certify(bat, **scene_of(result))`` certifies again the same way."""
@@ -265,8 +268,9 @@ def certify(bat, standard="bbcor", *, ball=None, e0=None, ball_speed=None, pivot
     ball = None if ball is None else _text("ball", ball, "a ball preset's name or a TOML file's path", path=True)
     result = _certify(bat, _text("standard", standard, '"bbcor", "besr" or "bpf"'), ball, _real("e0", e0),
                       _real("ball_speed", ball_speed, "speed"), _real("pivot", pivot, "length"), modes,
-                      _text("theory", theory, '"timoshenko" or "euler-bernoulli"'))
+                      _text("theory", theory, '"timoshenko" or "euler-bernoulli"'), _real("accuracy", accuracy))
     scene = {"scene_standard": result["standard"]} | ({"scene_ball": str(ball)} if ball is not None else {})
+    scene |= {"scene_accuracy": result["accuracy"]} if accuracy is not None else {}
     scene |= {"scene_e0": result["e0"], "scene_ball_speed": result["ball_speed"], "scene_pivot": result["pivot"],
               "scene_modes": modes if isinstance(modes, str) else int(modes), "scene_theory": theory}
     return Result(result, _provenance("certification") | bat._source() | _with_units(scene))
