@@ -428,6 +428,34 @@ TEST_CASE("optimize's BBCOR constraint is certify's maximum over the barrel, and
   CHECK(feasible(problem, e) == c.pass);
 }
 
+TEST_CASE("optimize at a stated accuracy scores each design as certify --accuracy does, and refuses what excludes it",
+          "[optimize]") {
+  TempDir dir;
+  const std::string problem_text =
+      "bat = \"" + maple + "\"\n[free]\nbarrel_diameter = { min = 0.0603, max = 0.0667 }\n"
+      "[player]\ncenter = 0.09\nomega = 51\nball_speed = 40\n[objective]\nmaximize = \"peak_bbs\"\n"
+      "z = { start = 0.55, stop = 0.80, step = 0.01 }\n[constraints]\nstandard = \"bbcor\"\n[model]\n";
+  const OptimizationProblem problem = load_optimization(dir.write("opt.toml", problem_text + "accuracy = 1e-3\n"));
+  const DesignEvaluation e = evaluate_design(problem, {0.0655}, serial_map);
+  REQUIRE(e.status == EvaluationStatus::ok);
+  // Three slicings at least, and the slicing's estimate within its half of the accuracy.
+  CHECK(e.slices_used >= 4 * build_bat(design_at(problem, {0.0655})).slices());
+  CHECK(e.slicing_error <= 0.5e-3);
+  // The measure is certify's at the same accuracy when both end on the same slices; both within
+  // the accuracy of the converged value, so within twice it of each other.
+  CertifyOptions stated;
+  stated.accuracy = 1e-3;
+  const Certification c = certify(design_at(problem, {0.0655}), problem.standard, stated);
+  CHECK(std::abs(e.constraints[0] - c.measure) <= 2e-3 * c.measure);
+  const auto refused = [&](const std::string& model) {
+    const auto file = dir.write("bad.toml", problem_text + model + "\n");
+    return run_program("optimize '" + file.string() + "' -o '" + (dir.path / "bad.h5").string() + "'");
+  };
+  require_refused(refused("accuracy = 0"), {"model.accuracy", "1e-7 to 0.1"});
+  require_refused(refused("accuracy = 1e-3\nslices = 100"), {"model.accuracy", "slices or accuracy"});
+  require_refused(refused("modes = 5\naccuracy = 1e-3"), {"model.accuracy", "fixed number of modes"});
+}
+
 TEST_CASE("optimize takes a lock on its best bat file, which outputs of one stem share", "[optimize][program]") {
   // r.h5 and r.nc both write r_best.toml: the second is refused while the first holds it.
   TempDir dir;

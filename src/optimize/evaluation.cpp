@@ -8,6 +8,7 @@
 
 #include "sweetspot/impact/bat_test_rig.hpp"
 #include "sweetspot/impact/equal_effort.hpp"
+#include "sweetspot/impact/error_estimates.hpp"
 #include "sweetspot/impact/impact.hpp"
 #include "sweetspot/impact/scan_maximum.hpp"
 #include "sweetspot/study/sweet_spot.hpp"
@@ -173,11 +174,61 @@ ModalBasis design_modes(const OptimizationProblem& problem, const Bat& bat, cons
   const ModalBasis rigid = compute_modes(bat, problem.model.theory, ModeRequest::rigid_only());
   ModeRequest request = ModeRequest::below(0);
   for (const ImpactScene& s : scenes) {
-    const ModeRequest asked = auto_mode_request(s, rigid);
+    const ModeRequest asked = auto_mode_request(scene_for_accuracy(s), rigid);
     if (asked.is_all()) return compute_modes(bat, problem.model.theory, ModeRequest::all());
     request.below_omega = std::max(request.below_omega, asked.below_omega);
   }
   return compute_modes(bat, problem.model.theory, request);
+}
+
+// The design's objective and (NaN when no constraint asks it) the rig's measure, on the design cut
+// into `slices` slices (0: its own, or the model's).
+struct Scores {
+  double objective = nan, measure = nan;
+};
+
+Scores scores_at(const OptimizationProblem& problem, const BatDesign& design, const ImpactScene& scene, int slices,
+                 const PointMap& map) {
+  const Bat bat = slices > 0 ? bat_with_slices(design, slices)
+                             : problem.model.slices > 0 ? resample(build_bat(design), problem.model.slices)
+                                                        : build_bat(design);
+  const ModalBasis basis = design_modes(problem, bat, sampled_scenes(problem, scene, design.length));
+  Scores s;
+  s.objective = objective_value(problem, basis, scene, map);
+  if (std::ranges::any_of(problem.constraints, [](const Constraint& c) { return c.quantity == Quantity::measure; }))
+    s.measure = rig_maximum(problem, basis, design.length, map);
+  return s;
+}
+
+// The relative slicing estimate of the finest of `values` (error_estimates.hpp); 0 for a quantity
+// not computed (all NaN).
+double relative_slicing_error(const std::vector<double>& values) {
+  if (std::isnan(values.back())) return 0;
+  return slicing_error(values, values.size() - 1) / std::abs(values.back());
+}
+
+// The scores at a stated accuracy: the design cut at its own slices N, 2N, 4N ..., at least three
+// slicings and then one more while the objective's or the measure's Richardson estimate exceeds
+// the slicing's share; the finest are the answer. A design the slices cannot meet it for is
+// unscorable.
+Scores scores_within_accuracy(const OptimizationProblem& problem, const BatDesign& design, const ImpactScene& scene,
+                              const PointMap& map, DesignEvaluation& e) {
+  const double share = accuracy_budget(problem.model.accuracy).slicing;
+  std::vector<double> objectives, measures;
+  for (int slices = build_bat(design).slices();; slices *= slicing_refinement) {
+    const Scores s = scores_at(problem, design, scene, slices, map);
+    objectives.push_back(s.objective);
+    measures.push_back(s.measure);
+    const bool can_double = can_refine(slices, problem.model.theory);
+    if (objectives.size() < 3 && can_double) continue;
+    e.slices_used = slices;
+    e.slicing_error = std::max(relative_slicing_error(objectives), relative_slicing_error(measures));
+    if (e.slicing_error <= share) return s;
+    if (!can_double)
+      throw Unscorable("accuracy " + std::to_string(problem.model.accuracy) + " needs the design cut finer than " +
+                       std::to_string(slices) + " slices (its slicing estimate there " +
+                       std::to_string(e.slicing_error) + ")");
+  }
 }
 
 }  // namespace
@@ -207,14 +258,13 @@ DesignEvaluation evaluate_design(const OptimizationProblem& problem, const std::
     scene.ball_speed = problem.player.ball_speed;
     scene.swing = design_swing(problem.player, exact);
     scene.vibrational_modes = problem.model.vibrational_modes;
-    Bat bat = build_bat(design);
-    if (problem.model.slices > 0) bat = resample(bat, problem.model.slices);
-    const ModalBasis basis = design_modes(problem, bat, sampled_scenes(problem, scene, design.length));
-    e.objective = objective_value(problem, basis, scene, map);
+    scene.accuracy = problem.model.accuracy;
+    const Scores s = problem.model.accuracy > 0 ? scores_within_accuracy(problem, design, scene, map, e)
+                                                : scores_at(problem, design, scene, 0, map);
+    e.objective = s.objective;
     const auto measure = std::ranges::find(problem.constraints, Quantity::measure, &Constraint::quantity);
     if (measure != problem.constraints.end())
-      e.constraints[static_cast<std::size_t>(measure - problem.constraints.begin())] =
-          rig_maximum(problem, basis, design.length, map);
+      e.constraints[static_cast<std::size_t>(measure - problem.constraints.begin())] = s.measure;
   } catch (const std::exception& failure) {  // Unscorable, or an InputError of a rig off this bat
     e.status = EvaluationStatus::failed;
     e.message = failure.what();

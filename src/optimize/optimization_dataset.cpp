@@ -82,13 +82,15 @@ void constraint_variables(const OptimizationProblem& p, std::ptrdiff_t best, con
 }
 
 void evaluation_variables(const OptimizationProblem& p, const OptimizationHistory& h, Dataset& d) {
-  std::vector<double> design, objective;
+  std::vector<double> design, objective, slices_used, slicing_error;
   std::vector<std::int32_t> status, is_feasible;
   std::vector<std::string> messages;
   bool any_failed = false;
   for (const DesignEvaluation& e : h.evaluations) {
     design.insert(design.end(), e.x.begin(), e.x.end());
     objective.push_back(e.objective);
+    slices_used.push_back(e.slices_used);
+    slicing_error.push_back(e.slicing_error);
     status.push_back(static_cast<std::int32_t>(e.status));
     is_feasible.push_back(feasible(p, e) ? 1 : 0);
     messages.push_back(e.message);
@@ -102,6 +104,12 @@ void evaluation_variables(const OptimizationProblem& p, const OptimizationHistor
                          {{"flag_meanings", "infeasible feasible"}}, {{"flag_values", {0, 1}}}});
   d.variables.push_back({"status", "", "evaluation status", {"evaluation"}, status, {{"flag_meanings", "ok failed"}},
                          {{"flag_values", {0, 1}}}});
+  if (p.model.accuracy > 0) {  // what the stated accuracy chose, and the estimate it met
+    d.variables.push_back({"slices_used", "1", "slices the design was scored at", {"evaluation"}, slices_used, {}, {}});
+    d.variables.push_back({"slicing_error", "1",
+                           "relative slicing error estimate: the larger of the objective's and the measure's",
+                           {"evaluation"}, slicing_error, {}, {}});
+  }
   if (any_failed) d.variables.push_back({"failure", "", "why an evaluation failed", {"evaluation"}, messages, {}, {}});
 }
 

@@ -8,6 +8,7 @@
 #include "sweetspot/impact/equal_effort.hpp"
 #include "problem_values.hpp"
 #include "sweetspot/ball/ball_tests.hpp"
+#include "sweetspot/impact/error_estimates.hpp"
 #include "sweetspot/input_error.hpp"
 
 namespace sweetspot {
@@ -154,7 +155,7 @@ Player read_player(const Where& top, const toml::table& doc, OptimizationProblem
 ModelSettings read_model(const Where& top, const toml::table& doc) {
   const toml::table& t = table_key(top, doc, "model", false);
   const Where at{top.file, "model", doc.get("model") ? doc.get("model")->source().begin.line : 0};
-  reject_unknown(at, t, {"modes", "slices", "theory"});
+  reject_unknown(at, t, {"modes", "slices", "theory", "accuracy"});
   ModelSettings m;
   if (const toml::node* node = t.get("modes")) {
     const auto text = node->value<std::string_view>();
@@ -169,6 +170,17 @@ ModelSettings read_model(const Where& top, const toml::table& doc) {
     if (!node->is_integer() || node->as_integer()->get() < min_slices || node->as_integer()->get() > max_slices)
       reject(at.child("slices", *node), describe(*node), "expected an integer from 4 to 4096");
     m.slices = static_cast<int>(node->as_integer()->get());
+  }
+  if (const toml::node* node = t.get("accuracy")) {
+    const std::optional<double> a = node->value<double>();
+    if (!node->is_number() || !(*a >= min_accuracy && *a <= max_accuracy))
+      reject(at.child("accuracy", *node), describe(*node), std::string("expected ") + accuracy_expected);
+    if (t.get("slices"))
+      reject(at.child("accuracy", *node), describe(*node), "expected slices or accuracy, not both: the accuracy chooses the slices");
+    if (m.vibrational_modes >= 0)
+      reject(at.child("accuracy", *node), describe(*node),
+             "expected modes \"auto\" or \"all\" beside it: a fixed number of modes cannot be held to an accuracy");
+    m.accuracy = *a;
   }
   if (const toml::node* node = t.get("theory")) {
     try {
@@ -261,6 +273,7 @@ OptimizationProblem load_optimization(const fs::path& file) {
   problem.objective = read_objective(top, doc, length);
   problem.rig.vibrational_modes = problem.model.vibrational_modes;
   problem.rig.slices = problem.model.slices;
+  if (problem.model.accuracy > 0) problem.rig.accuracy = problem.model.accuracy;
   problem.rig.theory = problem.model.theory;
   read_constraints(top, doc, problem);
   check_rig(top, problem, length);

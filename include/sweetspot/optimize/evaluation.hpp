@@ -5,6 +5,7 @@
 // PointMap, which may spread them over threads and ranks, and each is computed alone so that the
 // result is bitwise the same however they are spread.
 #include <cstddef>
+#include <limits>
 #include <functional>
 #include <string>
 #include <vector>
@@ -32,6 +33,10 @@ struct DesignEvaluation {
   std::vector<double> constraints;  // each constraint's quantity, in its units; NaN if unknown
   EvaluationStatus status = EvaluationStatus::ok;
   std::string message;              // why it failed
+  // At a stated accuracy: the slices the design was scored at, and the larger relative slicing
+  // estimate of its objective and measure there.
+  int slices_used = 0;
+  double slicing_error = std::numeric_limits<double>::quiet_NaN();
 };
 
 // Evaluates the design at x. Never throws for a design the bounds allow (load_optimization

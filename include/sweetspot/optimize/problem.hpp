@@ -85,6 +85,11 @@ struct ModelSettings {
   int vibrational_modes = auto_modes;  // 0 makes every design a rigid bat
   int slices = 0;                      // 0: the design's own
   BeamTheory theory = BeamTheory::timoshenko;
+  // A stated total accuracy (error_estimates.hpp), 0 for none: every impact and rig hit takes its
+  // modes' and step's shares, and each design is cut at its slices N, 2N, 4N ... until the
+  // objective's and the measure's Richardson estimates meet the slicing's. Excludes `slices`
+  // and a fixed mode count.
+  double accuracy = 0;
 };
 
 struct OptimizationProblem {
