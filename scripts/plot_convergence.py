@@ -1,8 +1,11 @@
 #!/usr/bin/python3
 """Work-precision diagram of a `sweetspot convergence` dataset: the relative error of the exit
 speed v_f against the wall time per impact, one line per integrator (markers at its settings,
-coarsest first, labelled with the step or tolerance). Lower left is better. Run it with Debian's
-interpreter, which has xarray, h5netcdf and matplotlib.
+coarsest first, labelled with the step or tolerance), and beside it the accuracy sweep: at each
+stated total accuracy (and the default settings), the estimated total error, each source's
+estimate (slicing, modes, step) and the actual error against the continuum, against the time per
+impact. Lower left is better. Run it with Debian's interpreter, which has xarray, h5netcdf and
+matplotlib.
 
 Usage: /usr/bin/python3 scripts/plot_convergence.py RESULT.h5 [OUT.png]
 """
@@ -38,8 +41,36 @@ def scene_title(ds):
 path = sys.argv[1]
 out = sys.argv[2] if len(sys.argv) > 2 else path.rsplit(".", 1)[0] + ".png"
 
+SOURCES = (("total_error", "estimated total", "o", "-"), ("actual_error", "actual (continuum)", "*", "-"),
+           ("slicing_error", "slicing", "s", "none"), ("modes_error", "modes", "^", "none"), ("step_error", "step", "v", "none"))
+
+
+def accuracy_panel(ax, ds):
+    """Each source's estimate, the total and the actual error of the accuracy sweep against the
+    time per impact (the bat's modes solved beforehand), the stated accuracies labelled."""
+    stated = np.arange(1, ds.sizes["accuracy_run"])  # run 0 is the default settings
+    time = np.log10(ds.accuracy_time_per_impact.values * 1e6)
+    for name, label, marker, style in SOURCES:
+        error = np.log10(np.maximum(ds[name].values, 1e-16))
+        ax.plot(time[stated], error[stated], marker=marker, linestyle=style, label=label)
+        ax.plot(time[0], error[0], marker=marker, linestyle="none", color=ax.lines[-1].get_color(), fillstyle="none")
+    for k in stated:
+        ax.annotate(f"A = {float(ds.accuracy.values[k]):.0e}", (time[k], np.log10(ds.total_error.values[k])),
+                    textcoords="offset points", xytext=(5, 4), fontsize=7)
+    ax.annotate("default", (time[0], np.log10(ds.total_error.values[0])), textcoords="offset points",
+                xytext=(5, 4), fontsize=7)
+    ax.set_xlabel("log$_{10}$(wall time per impact / µs)")
+    ax.set_ylabel("log$_{10}$(relative error of $v_f$)")
+    ax.set_title(f"Stated accuracy: error sources against the continuum\n(v$_f$ = {ds.attrs['continuum_vf']:.8f} m/s, "
+                 f"{int(ds.attrs['continuum_slices'])} slices; open markers: the default settings)", fontsize=10)
+    ax.grid(alpha=0.3)
+    ax.legend(loc="lower left", fontsize=8)
+
+
 with xr.open_dataset(path, engine="h5netcdf") as ds:
-    fig, ax = plt.subplots(figsize=(8.5, 6))
+    sweep = "accuracy_run" in ds.dims
+    fig, axes = plt.subplots(1, 2 if sweep else 1, figsize=(16, 6) if sweep else (8.5, 6), squeeze=False)
+    ax = axes[0][0]
     for method in ds.integrator.values:
         run = ds.sel(integrator=method).dropna("setting", subset=["vf_error", "time_per_impact"])
         time = np.log10(run.time_per_impact.values * 1e6)
@@ -60,6 +91,8 @@ with xr.open_dataset(path, engine="h5netcdf") as ds:
             transform=ax.transAxes, ha="right", va="top", fontsize=8)
     ax.grid(alpha=0.3)
     ax.legend(title="integrator", loc="lower left")
+    if sweep:
+        accuracy_panel(axes[0][1], ds)
     fig.tight_layout()
     fig.savefig(out, dpi=120)
 print(f"wrote {out}")
