@@ -94,6 +94,13 @@ TEST_CASE("convergence: the command writes one dataset that xarray opens", "[con
       run_command(std::string(python) + " " + source_path("tests/check_convergence.py") + " " + out + " 3");
   INFO(check.output);
   CHECK(check.exit_code == 0);
+  // The figure's script draws both panels from it (the work-precision diagram, the accuracy sweep).
+  const std::string png = dir / "out.png";
+  const ProgramRun plot =
+      run_command(std::string(python) + " " + source_path("scripts/plot_convergence.py") + " " + out + " " + png);
+  INFO(plot.output);
+  CHECK(plot.exit_code == 0);
+  CHECK(std::filesystem::file_size(png) > 10000);
 }
 
 TEST_CASE("convergence: a study of another kind is refused with exit status 2", "[convergence][program]") {
