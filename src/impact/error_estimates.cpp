@@ -90,12 +90,30 @@ bool SlicingLadder::add(ImpactResult r) {
   return true;
 }
 
+void SlicingLadder::stop(const std::string& why) {
+  result_.slicing_error = result_.total_error = nan;
+  if (vf_.size() >= 2) add_slicing_error(result_, vf_, vf_.size() - 1, true, ball_speed_);
+  char text[200];
+  std::snprintf(text, sizeof text, "accuracy %.3g: the bat cannot be cut finer than %d slices here: ", accuracy_,
+                result_.slices_used);
+  result_.status = CollisionStatus::inaccurate;
+  result_.message = text + why;
+}
+
 ImpactResult simulate_within_accuracy(const BasisAtSlices& basis_at, int slices, BeamTheory theory,
                                       const ImpactScene& scene) {
   SlicingLadder ladder(slices, theory, scene);
-  while (!ladder.add(simulate_impact(basis_at(ladder.next_slices()), scene))) {
+  for (bool first = true;; first = false) {
+    const ModalBasis* basis = nullptr;
+    try {
+      basis = &basis_at(ladder.next_slices());
+    } catch (const InputError& impractical) {  // the bat's own slicing's refusal is the user's
+      if (first) throw;
+      ladder.stop(impractical.what());
+      return ladder.take_result();
+    }
+    if (ladder.add(simulate_impact(*basis, scene))) return ladder.take_result();
   }
-  return ladder.take_result();
 }
 
 ImpactResult simulate_impact_with_errors(const ModalBasis& basis, const std::vector<const ModalBasis*>& finer,

@@ -310,7 +310,12 @@ void refine_to_accuracy(const Study& study, ModalCache& cache, const std::vector
     std::vector<char> done(pending.size(), 0);
 #pragma omp parallel for schedule(dynamic)
     for (std::size_t k = 0; k < pending.size(); ++k) {
-      done[k] = ladders[k].add(guarded_point(rung[k], bases[k], reasons[k]));
+      if (bases[k]) {
+        done[k] = ladders[k].add(guarded_point(rung[k], bases[k], reasons[k]));
+      } else {  // the finer rung cannot be solved: the finest so far, inaccurate, and why
+        ladders[k].stop(reasons[k]);
+        done[k] = 1;
+      }
       if (done[k]) results[pending[k]] = ladders[k].take_result();
     }
     std::size_t kept = 0;

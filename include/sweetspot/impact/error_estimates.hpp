@@ -68,8 +68,9 @@ Bat bat_with_slices(BatDesign design, int slices);
 
 // The absolute slicing error (m/s) of the result at slicing `level` of `vf`, the exit speeds of
 // one scene at N, 2N, 4N ... slices (above). NaN with fewer than two slicings; with two, the
-// finest's 1.5 |v(N) - v(2N)| (Roache's factor of three on the Richardson term, the order not
-// shown).
+// finest's 2 |v(N) - v(2N)|: the safety factor on the whole difference, not on its Richardson
+// third, the order not being shown (Roache's factor of three on the Richardson term would give
+// |v(N) - v(2N)|).
 double slicing_error(const std::vector<double>& vf, std::size_t level);
 
 // Sets r.slicing_error (relative) and r.total_error from the exit speeds at r's slicing and the
@@ -97,8 +98,9 @@ ImpactScene scene_for_accuracy(ImpactScene scene);
 
 // One scene at a stated accuracy on its bat cut at N, 2N, 4N ... slices: at least three
 // slicings, then one more while the finest one's slicing estimate exceeds its share. The finest
-// result is the answer, with `slices_used`. Where the slices cannot double again (max_slices, or
-// the Euler-Bernoulli limit) before the share is met, its status is `inaccurate`, and why.
+// result is the answer, with `slices_used`. Where the slices cannot double again (max_slices, the
+// Euler-Bernoulli limit, or a finer solve that is impractical) before the share is met, its
+// status is `inaccurate`, and why.
 // A study computes each rung for many points at once (study/parallel.cpp), `simulate_within_accuracy`
 // one point.
 class SlicingLadder {
@@ -107,6 +109,10 @@ class SlicingLadder {
   int next_slices() const { return next_slices_; }
   // The result at next_slices(); true when the ladder is done and result() is the answer.
   bool add(ImpactResult r);
+  // The ladder ended before its slicing met its share because the next rung cannot be solved
+  // (`why`: its solve is impractical): the finest result so far, its slicing estimate from the
+  // slicings there are (NaN with one), status `inaccurate` and why.
+  void stop(const std::string& why);
   ImpactResult take_result() { return std::move(result_); }
 
  private:
