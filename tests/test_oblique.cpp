@@ -214,7 +214,7 @@ TEST_CASE("oblique: the energy balance closes with friction's loss on the flexib
     }
 }
 
-TEST_CASE("oblique: more undercut launches higher; a compliant grip spins the ball past rolling", "[oblique]") {
+TEST_CASE("oblique: more undercut launches higher, and a compliant grip spins the ball past rolling", "[oblique]") {
   double previous = -90;
   for (const double undercut : {0.0, 0.01, 0.02, 0.03, 0.04}) {
     const ImpactResult r = simulate_impact(r161(), game_scene(undercut, 0.5));
