@@ -64,9 +64,6 @@ void print_json(const ImpactResult& r, const Bat& bat) {
   out.add("z", r.z)
       .add("vf", r.vf)
       .add("e_eff", r.e_eff)
-      .add("launch_angle", r.launch.angle)  // degrees; these three null where nothing collided
-      .add("backspin", r.launch.backspin)   // rpm
-      .add("sidespin", r.launch.sidespin)
       .add("contact_time", r.contact_time)
       .add("collision_time", r.collision_time)
       .add("u_max", r.u_max)
@@ -83,6 +80,9 @@ void print_json(const ImpactResult& r, const Bat& bat) {
       .add("besr", r.rig.besr)
       .add("bpf", r.rig.bpf)
       .add("energy", energy_json(r.energy))
+      .add("launch_angle", r.launch.angle)  // degrees; these three null where nothing collided
+      .add("backspin", r.launch.backspin)   // rpm
+      .add("sidespin", r.launch.sidespin)
       .add("mode_energy", Json::numbers(r.mode_energy))
       .add("modes_kept", Json::numbers({r.modes_kept.begin(), r.modes_kept.end()}))
       .add("modes_error", r.modes_error)
