@@ -150,7 +150,7 @@ ImpactResult simulate_oblique_impact(const ModalBasis& basis, const ImpactScene&
   launch.sidespin = 0;
   r.vf = launch.speed;
   close_balance(r);
-  require_finite(r, {scene.integrator.find_collision_time, scene.rigid_comparison, scene.van_zandt_comparison,
+  require_finite(r, {scene.integrator.find_collision_time || scene.force_response, scene.rigid_comparison, scene.van_zandt_comparison,
                      scene.linear_batted_ball, true, !std::isnan(e.damped)});
   return r;
 }
