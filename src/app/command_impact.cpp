@@ -1,11 +1,14 @@
 // sweetspot impact: one ball on one bat, everything N2000 derives from a collision.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <cstdio>
 #include <map>
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 
 #include "bat_argument.hpp"
 #include "commands.hpp"
@@ -18,6 +21,7 @@
 #include "sweetspot/bat/bat_design.hpp"
 #include "sweetspot/impact/error_estimates.hpp"
 #include "sweetspot/impact/impact.hpp"
+#include "sweetspot/impact/oblique_impact.hpp"
 #include "sweetspot/input_error.hpp"
 #include "sweetspot/impact/n2000_settings.hpp"
 
@@ -47,6 +51,9 @@ Json energy_json(const ImpactEnergy& e) {
       .add("ball_dissipated", e.ball_dissipated)
       .add("barrel", e.barrel)
       .add("damped", e.damped)
+      .add("ball_spin", e.ball_spin)
+      .add("bat_tangential", e.bat_tangential)
+      .add("friction", e.friction)
       .add("residual", e.residual);
 }
 
@@ -73,6 +80,9 @@ void print_json(const ImpactResult& r, const Bat& bat) {
       .add("besr", r.rig.besr)
       .add("bpf", r.rig.bpf)
       .add("energy", energy_json(r.energy))
+      .add("launch_angle", r.launch.angle)  // degrees; these three null where nothing collided
+      .add("backspin", r.launch.backspin)   // rpm
+      .add("sidespin", r.launch.sidespin)
       .add("mode_energy", Json::numbers(r.mode_energy))
       .add("modes_kept", Json::numbers({r.modes_kept.begin(), r.modes_kept.end()}))
       .add("modes_error", r.modes_error)
@@ -86,10 +96,13 @@ void print_json(const ImpactResult& r, const Bat& bat) {
   std::printf("%s\n", Json(out).text().c_str());
 }
 
-void print_text(const ImpactResult& r, const DisplayUnits& u) {
+void print_text(const ImpactResult& r, const DisplayUnits& u, bool oblique) {
   std::printf("status          %s%s%s\n", to_string(r.status), r.message.empty() ? "" : ": ", r.message.c_str());
   std::printf("impact at z     %s from the knob\n", u.length(r.z, "%.4f").c_str());
   std::printf("exit speed vf   %s\n", u.speed(r.vf, "%.6g").c_str());
+  if (oblique)  // docs/oblique.md
+    std::printf("launch          %.4g deg above the horizontal, backspin %.5g rpm, sidespin %.3g rpm\n", r.launch.angle,
+                r.launch.backspin, r.launch.sidespin);
   std::printf("e_eff           %.6g\n", r.e_eff);
   std::printf("bat speed       %s at the impact point; e_a %.6g\n", u.speed(r.bat_speed, "%.6g").c_str(), r.rig.e_a);
   if (std::isfinite(r.rig.bbcor))
@@ -112,6 +125,11 @@ void print_text(const ImpactResult& r, const DisplayUnits& u) {
   } else if (e.damped != 0) {  // a damped beam
     std::printf("                + vibration %.6g + dissipated in the ball %.6g + by the bat's damping %.6g\n",
                 e.vibration, e.ball_dissipated, e.damped);
+    std::printf("                + residual %.3g\n", e.residual);
+  } else if (oblique) {
+    std::printf("                + vibration %.6g + dissipated in the ball %.6g\n", e.vibration, e.ball_dissipated);
+    std::printf("                + ball's spin %.6g + bat across the line of centres %.6g + friction %.6g\n",
+                e.ball_spin, e.bat_tangential, e.friction);
     std::printf("                + residual %.3g\n", e.residual);
   } else {
     std::printf("                + vibration %.6g + dissipated in the ball %.6g + residual %.3g\n", e.vibration,
@@ -167,6 +185,21 @@ ImpactResult impact_with_estimates(const BatDesign& design, const Bat& bat, Beam
   return simulate_impact_with_errors(basis, finer_bases, scene);
 }
 
+// The oblique options, before any work: "impact: --friction -0.1: expected ...".
+void check_oblique_options(const ObliqueImpact& o) {
+  const std::tuple<const char*, double, bool, const char*> options[] = {
+      {"--undercut", o.undercut, valid_undercut(o.undercut), undercut_expected},
+      {"--swing-tilt", o.swing_tilt, valid_swing_tilt(o.swing_tilt), swing_tilt_expected},
+      {"--pitch-spin", o.pitch_spin, valid_pitch_spin(o.pitch_spin), pitch_spin_expected},
+      {"--friction", o.friction, valid_friction(o.friction), friction_expected}};
+  for (const auto& [name, x, valid, expected] : options)
+    if (!valid) {
+      char value[32];
+      std::snprintf(value, sizeof value, "%.10g", x);
+      throw InputError(std::string("impact: ") + name + " " + value + ": expected " + expected);
+    }
+}
+
 void run_impact(ImpactOptions& o) {
   BatSource source;
   const BatDesign design = load_bat_design(bat_argument(o.bat_file, "--bat"), source);
@@ -180,10 +213,15 @@ void run_impact(ImpactOptions& o) {
   o.scene.swing.center = o.center.value_or(0);
   o.scene.swing.cm_speed = o.cm_speed.value_or(0);
   const BeamTheory theory = parse_beam_theory(o.theory);
+  // A ball that misses the bat is no impact to compute (a study's point records it as a status).
+  if (o.scene.oblique.undercut != 0) {
+    const std::string miss = miss_reason(compute_modes(bat, theory, ModeRequest::rigid_only()), o.scene);
+    if (!miss.empty()) throw InputError("impact: --undercut: " + miss);
+  }
   const ImpactResult r = impact_with_estimates(design, bat, theory, o.scene);
   if (r.status == CollisionStatus::refused_step) throw InputError("--dt: " + r.message);
   if (o.json) print_json(r, bat);
-  else print_text(r, o.units);
+  else print_text(r, o.units, !o.scene.oblique.head_on());
   if (r.u_max > o.scene.ball.radius)
     std::fprintf(stderr, "sweetspot: warning: the ball compressed %.3g mm, past its radius %.3g mm: the force law is "
                          "not meant for that\n",
@@ -329,6 +367,19 @@ void add_impact_command(CLI::App& app) {
       ->transform(quantity_option(Dimension::angular_speed))
       ->capture_default_str();
   cmd->add_flag("--pivot", o->scene.pivoted, "hold the bat at the rotation centre (N2000 Fig. 16)");
+  // The impact in the plane of the swing (docs/oblique.md).
+  cmd->add_option("--undercut", o->scene.oblique.undercut,
+                  "the ball's centre above the bat's axis (negative: below), m, or e.g. 0.5in [default: 0]")
+      ->transform(quantity_option(Dimension::length));
+  cmd->add_option("--swing-tilt", o->scene.oblique.swing_tilt,
+                  "the swing's (and the pitch's line's) angle above the horizontal, degrees [default: 0]");
+  cmd->add_option("--pitch-spin", o->scene.oblique.pitch_spin,
+                  "the pitch's backspin, rpm (negative: topspin) [default: 0]");
+  cmd->add_option("--friction", o->scene.oblique.friction,
+                  "coefficient of sliding friction between ball and bat, >= 0 [default: 0]");
+  cmd->add_flag_function(
+      "--rigid-grip", [o](std::int64_t) { o->scene.oblique.grip_stiffness = std::numeric_limits<double>::infinity(); },
+      "the textbooks' rigid ball across the line of centres: slide, then roll (no tangential stretch)");
   cmd->add_option("--modes", o->modes, "vibrational modes kept: a number, 'all' or 'auto' [default: auto; 18 with "
                                        "--n2000]");
   cmd->add_option("--mode-tolerance", o->scene.mode_tolerance,
@@ -351,6 +402,7 @@ void add_impact_command(CLI::App& app) {
       std::snprintf(value, sizeof value, "%.10g", o->scene.swing.omega);
       throw InputError(std::string("impact: --omega ") + value + ": expected " + omega_expected);
     }
+    check_oblique_options(o->scene.oblique);
     resolve_integrator(*cmd, o->scene.integrator);
     resolve_ball(*cmd, o->named_ball, o->scene.ball);
     if (cmd->count("--n2000") && cmd->count("--modes") == 0) o->modes = std::to_string(n2000_modes);

@@ -174,6 +174,8 @@ ModalBasis compute_modes(const Bat& bat, BeamTheory theory, ModeRequest request)
   if (!request.is_rigid_only()) basis.flexibility = vibrational_flexibility_band(s, mass, basis.vectors.leftCols(2));
   basis.wall = barrel_wall(bat);
   for (const double d : bat.outer_diameter) basis.section_radius.push_back(d / 2);
+  // About the long axis a section's polar moment is twice its diametral one: 2 rho I dz per slice.
+  for (int i = 0; i < bat.slices(); ++i) basis.axial_moment_of_inertia += 2 * bat.slice_rotary_inertia(i);
   basis.loss_factor = bat.material.loss_factor;
   return basis;
 }

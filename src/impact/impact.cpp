@@ -11,6 +11,7 @@
 #include "sweetspot/impact/batted_ball.hpp"
 #include "sweetspot/impact/error_estimates.hpp"
 #include "sweetspot/impact/formulas.hpp"
+#include "sweetspot/impact/oblique_impact.hpp"
 #include "sweetspot/impact/step_selection.hpp"
 
 namespace sweetspot {
@@ -82,8 +83,9 @@ std::vector<double> force_response_grid() {
 void close_balance(ImpactResult& r) {
   ImpactEnergy& e = r.energy;
   // The barrel's terms last: 0 for a solid section, so a wooden bat's sum is what it always was.
+  // The oblique terms after them: 0 for a head-on impact, whose sum is again what it always was.
   e.residual = e.initial - (e.ball + e.bat_translation + e.bat_rotation + e.vibration + e.ball_dissipated + e.barrel +
-                            e.damped);
+                            e.damped + e.ball_spin + e.bat_tangential + e.friction);
   // A damped bat's loss not integrated (CollisionOptions::damping_loss): no balance to check.
   if (std::isnan(e.damped)) return;
   if (r.status != CollisionStatus::ok || std::abs(e.residual) <= balance_limit * e.initial) return;  // NaN: not
@@ -118,8 +120,11 @@ const char* first_non_finite(const ImpactResult& r, const AskedValues& asked) {
       {"vf_van_zandt", asked.vf_van_zandt ? r.vf_van_zandt : 0.0},
       {"bbs_linear", asked.bbs_linear ? r.bbs_linear : 0.0},
       {"energy", asked.energy ? e.initial + e.ball + e.bat_translation + e.bat_rotation + e.vibration +
-                                    e.ball_dissipated + e.residual + e.barrel + e.damped
+                                    e.ball_dissipated + e.residual + e.barrel + e.damped + e.ball_spin +
+                                    e.bat_tangential + e.friction
                               : 0.0},
+      {"launch_angle", std::isnan(r.launch.speed) ? 0.0 : r.launch.angle},  // the wall and toy give none
+      {"backspin", std::isnan(r.launch.speed) ? 0.0 : r.launch.backspin},
   };
   for (const auto& [name, value] : scalars)
     if (!std::isfinite(value)) return name;
@@ -281,6 +286,9 @@ std::unique_ptr<ImpactScene> clamped_onto_bat(const ImpactScene& scene, double l
 
 ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& stated) {
   validate(stated, basis);
+  // Off the line of the swing, or with spin or friction: the head-on collision along the line of
+  // centres, then the motion across it (oblique_impact.cpp).
+  if (!stated.oblique.head_on()) return simulate_oblique_impact(basis, stated);
   // A stated accuracy sets the modes' tolerance and the step (error_estimates.hpp); the slicing
   // is the caller's, who holds the bat's design (simulate_within_accuracy).
   const std::unique_ptr<ImpactScene> budgeted =
@@ -332,7 +340,7 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& stated)
   if (c.status == CollisionStatus::no_contact) {  // nothing happened: no result
     r.e_eff = std::nan("");
     r.energy = {std::nan(""), std::nan(""), std::nan(""), std::nan(""), std::nan(""), std::nan(""), std::nan(""),
-                std::nan(""), std::nan("")};
+                std::nan(""), std::nan(""), std::nan(""), std::nan(""), std::nan("")};
     return r;
   }
   if (scene.rigid_comparison) r.vf_rigid = rigid_exit_speed(scene.ball.e0, g.recoil, scene.ball_speed, g.bat_speed);
@@ -350,6 +358,7 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& stated)
   e.initial = 0.5 * scene.ball.mass * scene.ball_speed * scene.ball_speed + 0.5 * g.contact.velocity0.squaredNorm();
   e.ball = 0.5 * scene.ball.mass * r.vf * r.vf;
   bat_energies(scene, g, basis, c, r);
+  r.launch = head_on_launch(r.vf);
   close_balance(r);
   const bool collision_time = scene.integrator.find_collision_time || scene.force_response;
   require_finite(r, {collision_time, scene.rigid_comparison, scene.van_zandt_comparison, scene.linear_batted_ball, true,

@@ -196,6 +196,16 @@ Eigen::VectorXd SceneGeometry::shapes_at(const ModalBasis& basis, double z) cons
   return shapes;
 }
 
+void validate_oblique(const ObliqueImpact& o) {
+  if (!valid_undercut(o.undercut)) reject("undercut", o.undercut, std::string("expected ") + undercut_expected);
+  if (!valid_swing_tilt(o.swing_tilt)) reject("swing_tilt", o.swing_tilt, std::string("expected ") + swing_tilt_expected);
+  if (!valid_pitch_spin(o.pitch_spin)) reject("pitch_spin", o.pitch_spin, std::string("expected ") + pitch_spin_expected);
+  if (!valid_friction(o.friction)) reject("friction", o.friction, std::string("expected ") + friction_expected);
+  if (!(o.grip_stiffness > 0)) reject("grip_stiffness", o.grip_stiffness, "expected a number > 0 or infinity");
+  if (!(o.ball_inertia_factor > 0 && o.ball_inertia_factor <= 2.0 / 3))
+    reject("ball_inertia_factor", o.ball_inertia_factor, "expected a number in (0, 2/3] (I / m R^2 of a ball)");
+}
+
 void validate(const ImpactScene& scene, const ModalBasis& basis) {
   const double length = basis.length();
   if (!lies_on_bat(scene.z, length)) reject_off_bat("z", scene.z, length);
@@ -229,6 +239,7 @@ void validate(const ImpactScene& scene, const ModalBasis& basis) {
       (scene.vibrational_modes < 0 || scene.vibrational_modes > basis.count() - 2))
     reject("modes", scene.vibrational_modes,
            "must be 'all' or between 0 and " + std::to_string(basis.count() - 2) + " at this slice count");
+  validate_oblique(scene.oblique);
 }
 
 namespace {

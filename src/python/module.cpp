@@ -125,7 +125,10 @@ py::dict result_dict(const ImpactResult& r, const Bat& bat) {
   e["bat_rotation"] = r.energy.bat_rotation, e["vibration"] = r.energy.vibration;
   e["ball_dissipated"] = r.energy.ball_dissipated, e["barrel"] = r.energy.barrel,
   e["damped"] = r.energy.damped, e["residual"] = r.energy.residual;
+  e["ball_spin"] = r.energy.ball_spin, e["bat_tangential"] = r.energy.bat_tangential;
+  e["friction"] = r.energy.friction;
   d["energy"] = e;
+  d["launch_angle"] = r.launch.angle, d["backspin"] = r.launch.backspin, d["sidespin"] = r.launch.sidespin;
   d["mode_energy"] = array(r.mode_energy);
   d["modes_kept"] = py::array_t<int>(r.modes_kept.size(), r.modes_kept.data());
   d["modes_error"] = r.modes_error;
@@ -142,7 +145,8 @@ const std::vector<std::string> impacts_outputs = {
     "bpf",    "contact_time", "collision_time", "u_max",      "peak_force", "impulse",
     "energy_initial", "energy_ball", "energy_bat_translation", "energy_bat_rotation", "energy_vibration",
     "energy_ball_dissipated", "energy_residual", "modes_error", "hoop_frequency", "energy_barrel",
-    "energy_damped", "barrel_compression", "slicing_error", "total_error", "slices_used"};
+    "energy_damped", "barrel_compression", "slicing_error", "total_error", "slices_used",
+    "launch_angle", "backspin", "sidespin", "energy_ball_spin", "energy_bat_tangential", "energy_friction"};
 
 void fill_row(const ImpactResult& r, double* row) {
   const double values[] = {r.vf,
@@ -171,7 +175,13 @@ void fill_row(const ImpactResult& r, double* row) {
                            r.barrel_compression,
                            r.slicing_error,
                            r.total_error,
-                           static_cast<double>(r.slices_used)};
+                           static_cast<double>(r.slices_used),
+                           r.launch.angle,
+                           r.launch.backspin,
+                           r.launch.sidespin,
+                           r.energy.ball_spin,
+                           r.energy.bat_tangential,
+                           r.energy.friction};
   std::copy(std::begin(values), std::end(values), row);
 }
 

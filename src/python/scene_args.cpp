@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 
 #include <pybind11/stl.h>
 
@@ -21,7 +22,8 @@ const std::set<std::string>& known_arguments() {
   static const std::set<std::string> names = {
       "z",  "ball_speed", "cm_speed",    "center", "omega",          "e0",       "ball_mass", "ball_radius",
       "k1", "a",          "pivot",       "modes",  "mode_tolerance", "accuracy", "integrator", "dt",
-      "tolerance", "window", "theory", "n2000", "ball", "step_accuracy"};
+      "tolerance", "window", "theory", "n2000", "ball", "step_accuracy", "undercut", "swing_tilt", "pitch_spin",
+      "friction"};
   return names;
 }
 
@@ -73,6 +75,18 @@ void check_point_ranges(const ImpactScene& scene, const std::set<std::string>& p
     std::snprintf(value, sizeof value, "%.10g", scene.swing.omega);
     throw InputError(std::string("omega ") + value + ": expected " + omega_expected);
   }
+  // The oblique keys as a study's and the program's options take them (a miss is a status).
+  const ObliqueImpact& o = scene.oblique;
+  const std::tuple<const char*, double, bool, const char*> oblique[] = {
+      {"undercut", o.undercut, valid_undercut(o.undercut), undercut_expected},
+      {"swing_tilt", o.swing_tilt, valid_swing_tilt(o.swing_tilt), swing_tilt_expected},
+      {"pitch_spin", o.pitch_spin, valid_pitch_spin(o.pitch_spin), pitch_spin_expected},
+      {"friction", o.friction, valid_friction(o.friction), friction_expected}};
+  for (const auto& [name, x, valid, expected] : oblique)
+    if (!valid && !per_point.contains(name)) {
+      std::snprintf(value, sizeof value, "%.10g", x);
+      throw InputError(std::string(name) + " " + value + ": expected " + expected);
+    }
 }
 
 std::optional<double> real_number(const py::handle& value) {
@@ -93,7 +107,7 @@ double number(const std::string& name, const py::handle& value) {
 }
 
 std::optional<Dimension> point_argument_dimension(const std::string& name) {
-  if (name == "z" || name == "center" || name == "ball_radius") return Dimension::length;
+  if (name == "z" || name == "center" || name == "ball_radius" || name == "undercut") return Dimension::length;
   if (name == "ball_speed" || name == "cm_speed") return Dimension::speed;
   if (name == "omega") return Dimension::angular_speed;
   if (name == "ball_mass") return Dimension::mass;
@@ -131,7 +145,11 @@ void set_point_argument(ImpactScene& s, int which, double v) {
     case 6: s.ball.mass = v; break;
     case 7: s.ball.radius = v; break;
     case 8: s.ball.k1 = v; break;
-    default: s.ball.a = v; break;
+    case 9: s.ball.a = v; break;
+    case 10: s.oblique.undercut = v; break;
+    case 11: s.oblique.swing_tilt = v; break;
+    case 12: s.oblique.pitch_spin = v; break;
+    default: s.oblique.friction = v; break;
   }
 }
 

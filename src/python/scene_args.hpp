@@ -16,8 +16,9 @@ namespace sweetspot::python {
 
 // The arguments that may vary from point to point in sweetspot.impacts (numbers only).
 inline const std::vector<std::string>& point_arguments() {
-  static const std::vector<std::string> names = {"z",  "ball_speed", "cm_speed",    "center", "omega",
-                                                 "e0", "ball_mass",  "ball_radius", "k1",     "a"};
+  static const std::vector<std::string> names = {"z",          "ball_speed", "cm_speed",   "center",  "omega",
+                                                 "e0",         "ball_mass",  "ball_radius", "k1",     "a",
+                                                 "undercut",   "swing_tilt", "pitch_spin",  "friction"};
   return names;
 }
 

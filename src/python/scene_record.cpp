@@ -22,6 +22,10 @@ py::dict scene_record(const SceneArgs& args, const std::set<std::string>& per_po
   number("ball_radius", s.ball.radius);
   number("k1", s.ball.k1);
   number("a", s.ball.a);
+  number("undercut", s.oblique.undercut);
+  number("swing_tilt", s.oblique.swing_tilt);
+  number("pitch_spin", s.oblique.pitch_spin);
+  number("friction", s.oblique.friction);
   // The ball's speed dependence and curvature are no arguments: its name (scene_ball) gives them;
   // stored so that a result shows them and a replay can check them.
   number("cor_slope", s.ball.cor_slope);

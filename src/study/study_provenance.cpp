@@ -62,6 +62,10 @@ void add_scene_key(const Study& study, const std::string& key, SceneAttributes& 
     return study.equal_effort ? out.text(key, study.reference_source.toml_file.string()) : void();
   if (key == "swing_exponent") return study.equal_effort ? out.number(key, study.swing_exponent) : void();
   if (key == "e_a_speed") return out.number(key, s.e_a_speed);
+  if (key == "undercut") return out.number(key, s.oblique.undercut);
+  if (key == "swing_tilt") return out.number(key, s.oblique.swing_tilt);
+  if (key == "pitch_spin") return out.number(key, s.oblique.pitch_spin);
+  if (key == "friction") return out.number(key, s.oblique.friction);
   if (key == "standard") return out.text(key, standards()[study.standard].name);
   // The rig's ball: the standard's, unless the study gives its own.
   if (key == "rig_e0") return std::isnan(study.rig_e0) ? void() : out.number(key, study.rig_e0);

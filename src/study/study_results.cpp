@@ -34,6 +34,16 @@ const std::map<std::string, Description>& descriptions() {
       {"swing_exponent", {"1", "exponent n of the equal-effort swing, speed ~ MOI^-n"}},
       {"e_a_speed", {"m/s", "ball speed at which e_A is taken for bbs_linear"}},
       {"e_eff", {"1", "effective coefficient of restitution"}},
+      {"launch_angle", {"degree", "launch angle of the ball above the horizontal"}},
+      {"backspin", {"rpm", "backspin of the ball as it leaves the bat (negative: topspin)"}},
+      {"sidespin", {"rpm", "sidespin of the ball as it leaves the bat (0 in the plane of the swing)"}},
+      {"undercut", {"m", "offset of the ball's centre above the bat's axis (negative: below)"}},
+      {"swing_tilt", {"degree", "angle of the bat's swing (and the pitch's line) above the horizontal"}},
+      {"pitch_spin", {"rpm", "backspin of the pitch as it flies toward the bat (negative: topspin)"}},
+      {"friction", {"1", "coefficient of sliding friction between ball and bat"}},
+      {"energy_ball_spin", {"J", "final rotational energy of the ball"}},
+      {"energy_bat_tangential", {"J", "final energy of the bat's rigid motion across the line of centres, its roll included"}},
+      {"energy_friction", {"J", "energy friction took from ball and bat (sliding, and the grip's not returned)"}},
       {"e_a", {"1", "collision efficiency (vf - v_bat) / (ball_speed + v_bat)"}},
       {"bbcor", {"1", "ball-bat coefficient of restitution e_a (1 + r) + r, r = m d^2 / I_pivot"}},
       {"besr", {"1", "ball exit speed ratio e_a + 1/2"}},
@@ -159,6 +169,9 @@ double energy_value(const ImpactEnergy& e, const std::string& name) {
   if (name == "energy_ball_dissipated") return e.ball_dissipated;
   if (name == "energy_barrel") return e.barrel;
   if (name == "energy_damped") return e.damped;
+  if (name == "energy_ball_spin") return e.ball_spin;
+  if (name == "energy_bat_tangential") return e.bat_tangential;
+  if (name == "energy_friction") return e.friction;
   return e.residual;
 }
 
@@ -173,6 +186,9 @@ double scalar_value(const ImpactResult& r, const std::string& name) {
   if (name == "vf_rigid") return r.vf_rigid;
   if (name == "vf_van_zandt") return r.vf_van_zandt;
   if (name == "e_eff") return r.e_eff;
+  if (name == "launch_angle") return r.launch.angle;
+  if (name == "backspin") return r.launch.backspin;
+  if (name == "sidespin") return r.launch.sidespin;
   if (name == "e_a") return r.rig.e_a;
   if (name == "z_max") return r.z;
   if (name == "certified") return r.certified;

@@ -45,6 +45,9 @@ struct ModalBasis {
   double loss_factor = 0;
   // Outer radius of each slice, m: the surface the ball meets (Ball::curvature_factor).
   std::vector<double> section_radius;
+  // The bat's moment of inertia about its own long axis, kg m^2 (the slices' rho (pi/2)(R2^4 - R1^4)
+  // dz): how it rolls under a tangential force (oblique_impact.hpp). 0 when not known: no roll.
+  double axial_moment_of_inertia = 0;
 
   int count() const { return static_cast<int>(omega.size()); }
   // Every mode of the discretisation solved (rigid-only bases are not).

@@ -32,13 +32,29 @@ struct ImpactEnergy {
   // between them: int sum 2 zeta omega a'^2 dt, integrated with the collision (not inferred from
   // the balance); 0 for an undamped beam with a solid section or a lossless wall.
   double damped = 0;
+  // An oblique impact (oblique_impact.hpp), 0 for a head-on one: the ball's spin energy after the
+  // collision, the bat's rigid motion across the line of centres (its recoil and its roll about
+  // its own axis), and what friction took from the two (sliding and the grip's elastic energy not
+  // given back). The initial energy then holds the ball's spin and the motion across the line.
+  double ball_spin = 0;
+  double bat_tangential = 0;
+  double friction = 0;
+};
+
+// The ball as it leaves the bat: what its flight starts from (docs/oblique.md). NaN where there
+// was no collision.
+struct Launch {
+  double speed = std::numeric_limits<double>::quiet_NaN();     // m/s, the exit velocity's magnitude
+  double angle = std::numeric_limits<double>::quiet_NaN();     // degrees above the horizontal
+  double backspin = std::numeric_limits<double>::quiet_NaN();  // rpm, positive lifts the ball
+  double sidespin = std::numeric_limits<double>::quiet_NaN();  // rpm; 0 in the plane of the swing
 };
 
 struct ImpactResult {
   CollisionStatus status = CollisionStatus::ok;
   std::string message;
   double z = 0;               // impact location, m from the knob
-  double vf = 0;              // exit speed, m/s, positive away from the bat
+  double vf = 0;              // exit speed, m/s, positive away from the bat (oblique: the velocity's magnitude)
   double e_eff = 0;           // effective COR
   double contact_time = 0;    // s
   double collision_time = 0;  // s, 99 % of the impulse
@@ -69,6 +85,7 @@ struct ImpactResult {
   RigMeasures rig;
   int certified = -1;  // a certification study's point: 1 when the bat passes every rule, else 0
   ImpactEnergy energy;
+  Launch launch;  // speed, angle and spins the ball leaves with (every collision of a bat)
   std::vector<double> mode_energy;  // J per kept vibrational mode (of the held bat when pivoted)
   std::vector<int> modes_kept;      // vibrational mode numbers kept (1 = the first)
   double modes_error = 0;           // modes = auto: estimated relative vf error of the dropped ones

@@ -49,6 +49,39 @@ inline constexpr const char* omega_expected =
     "a finite angular speed >= 0 (the swing turns the barrel toward the ball; a negative omega swings it backwards)";
 inline bool valid_omega(double omega) { return std::isfinite(omega) && omega >= 0; }
 
+// An impact in the plane of the swing (docs/oblique.md, oblique_impact.hpp). The plane is the one
+// across the bat's axis at the struck point: the bat's point moves along the swing, tilted
+// swing_tilt above the horizontal, and the pitch arrives along the same line, against it (a
+// swing matched to the pitch's plane). All four zero is the head-on collision of N2000, bit for
+// bit; the normal force along the line of centres is its ball law.
+struct ObliqueImpact {
+  // m: the ball's centre above the bat's axis, across the line of the swing (the bat passes under
+  // the ball's centre: backspin and a higher launch); negative below. At or past the sum of the
+  // radii the ball misses (status no_contact).
+  double undercut = 0;
+  double swing_tilt = 0;   // degrees above the horizontal of the bat's velocity (and the pitch's line)
+  // rpm of the pitch about the bat's axis, positive for backspin as it flies toward the bat (a
+  // fastball's, whose top turns back toward the pitcher): the same turning is topspin on the way out.
+  double pitch_spin = 0;
+  double friction = 0;     // coefficient of sliding friction between ball and bat, >= 0
+  // The ball's tangential stiffness over its normal loading stiffness (tangential_contact.hpp):
+  // 2/3 is Mindlin's for nu = 1/2; infinity grips rigidly (slide, then roll: the textbooks' model).
+  double grip_stiffness = 2.0 / 3;
+  double ball_inertia_factor = 0.4;  // the ball's moment of inertia over m R^2 (a uniform sphere)
+
+  bool head_on() const { return undercut == 0 && swing_tilt == 0 && pitch_spin == 0 && friction == 0; }
+};
+
+// What the oblique keys must be, wherever they are given (study keys, impact options, Python).
+inline constexpr const char* undercut_expected = "a finite length (the ball's centre above the bat's axis; negative below)";
+inline constexpr const char* swing_tilt_expected = "a finite angle in degrees, above -90 and below 90";
+inline constexpr const char* pitch_spin_expected = "a finite spin in rpm (positive: the pitch's backspin)";
+inline constexpr const char* friction_expected = "a finite coefficient of friction >= 0";
+inline bool valid_undercut(double x) { return std::isfinite(x); }
+inline bool valid_swing_tilt(double x) { return std::isfinite(x) && x > -90 && x < 90; }
+inline bool valid_pitch_spin(double x) { return std::isfinite(x); }
+inline bool valid_friction(double x) { return std::isfinite(x) && x >= 0; }
+
 inline constexpr int all_modes = -1;
 // Keep the modes the collision can excite (see mode_selection.hpp), within mode_tolerance.
 inline constexpr int auto_modes = -2;
@@ -120,11 +153,16 @@ struct ImpactScene {
   // collisions at two and four times the step (dopri: 32 and 1024 times the tolerance), about
   // three quarters of an impact more.
   bool error_estimates = false;
+  // The impact in the plane of the swing: undercut, tilt, pitch spin and friction.
+  ObliqueImpact oblique;
 };
 
 // Throws InputError naming the offending scene value (z outside the bat, speeds not finite,
 // e0 outside (0, 1], a <= 0, k1 <= 0, dt <= 0, too many modes, pivot without a centre).
 void validate(const ImpactScene& scene, const ModalBasis& basis);
+// The oblique keys alone (InputError naming undercut, swing_tilt, pitch_spin or friction); a
+// miss (an undercut past the radii) is not an error here but the impact's status.
+void validate_oblique(const ObliqueImpact& oblique);
 
 // The scene as the collision sees it.
 struct SceneGeometry {

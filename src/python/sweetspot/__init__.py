@@ -279,13 +279,14 @@ _POINT = tuple(_point_arguments())  # z, ball_speed, cm_speed, center, omega, e0
 
 
 def _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, pivot, modes,
-           mode_tolerance, accuracy, step_accuracy, integrator, dt, tolerance, window, theory, n2000, ball=None, arrays=False):
+           mode_tolerance, accuracy, step_accuracy, integrator, dt, tolerance, window, theory, n2000, ball=None, arrays=False,
+           oblique=None):
     # Each point argument a real number (impacts: or an array of them); a length, mass or speed
     # given as a string with a unit ("28 in", "136 mph") is SI from here on.
     point = {name: _real(name, value, arrays=arrays)
              for name, value in (("z", z), ("ball_speed", ball_speed), ("cm_speed", cm_speed), ("center", center),
                                  ("omega", omega), ("e0", e0), ("ball_mass", ball_mass), ("ball_radius", ball_radius),
-                                 ("k1", k1), ("a", a))}
+                                 ("k1", k1), ("a", a), *(oblique or {}).items())}
     numbers = {name: _real(name, value) for name, value in (("mode_tolerance", mode_tolerance), ("accuracy", accuracy),
                                                             ("step_accuracy", step_accuracy), ("dt", dt), ("tolerance", tolerance), ("window", window))}
     if ball is not None:
@@ -301,7 +302,8 @@ def _check_bat(bat):
 
 def impact(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=None, e0=None, ball_mass=None,
            ball_radius=None, k1=None, a=None, pivot=False, modes=None, mode_tolerance=None, accuracy=None, step_accuracy=None,
-           integrator=None, dt=None, tolerance=None, window=None, theory="timoshenko", n2000=False):
+           integrator=None, dt=None, tolerance=None, window=None, theory="timoshenko", n2000=False,
+           undercut=None, swing_tilt=None, pitch_spin=None, friction=None):
     """One ball on one bat, as `sweetspot impact --json`: a dict with the same keys (status, z, vf,
     e_eff, contact_time, collision_time, u_max, peak_force, impulse, bat_speed, e_a, bbcor, besr, bpf,
     energy, mode_energy, modes_kept, modes_error, slicing_error, step_error, total_error, contacts),
@@ -313,6 +315,9 @@ def impact(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=No
     cannot be cut finely enough); step_accuracy chooses the step alone.
 
     The swing is cm_speed (m/s) or center (m from the knob, the point at rest), with omega (rad/s).
+    An oblique impact (docs/oblique.md): undercut (m, the ball's centre above the bat's axis),
+    swing_tilt (degrees above the horizontal), pitch_spin (rpm, the pitch's backspin), friction
+    (>= 0); the result then gives launch_angle (degrees), backspin and sidespin (rpm) beside vf.
     z, ball_speed, cm_speed, center, omega, ball_mass and ball_radius may be strings with a unit
     ("28 in", "136 mph", "480 rpm", "5.125 oz"); numbers are SI.
     `ball` names the ball (a preset's name or a TOML file with a [ball] table; default N2000's), and
@@ -324,7 +329,8 @@ def impact(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=No
     Returns: a Result, the dict above with `attrs` (the resolved scene as scene_*, the bat, the
     program's version and commit); ``impact(bat, **scene_of(result))`` computes it again bit for bit."""
     args = _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, pivot, modes,
-                  mode_tolerance, accuracy, step_accuracy, integrator, dt, tolerance, window, theory, n2000, ball)
+                  mode_tolerance, accuracy, step_accuracy, integrator, dt, tolerance, window, theory, n2000, ball,
+                  oblique=dict(undercut=undercut, swing_tilt=swing_tilt, pitch_spin=pitch_spin, friction=friction))
     _check_bat(bat)
     result, radius = _impact(bat, args)
     if result["u_max"] > radius:
@@ -356,9 +362,10 @@ def _dims(arrays, shape):
 
 def impacts(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=None, e0=None, ball_mass=None,
             ball_radius=None, k1=None, a=None, pivot=False, modes=None, mode_tolerance=None, accuracy=None, step_accuracy=None,
-            integrator=None, dt=None, tolerance=None, window=None, theory="timoshenko", n2000=False, threads=None):
-    """Many impacts at once: z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1
-    and a may be arrays, broadcast together as numpy does. Runs in C++ over OpenMP threads with the
+            integrator=None, dt=None, tolerance=None, window=None, theory="timoshenko", n2000=False, threads=None,
+            undercut=None, swing_tilt=None, pitch_spin=None, friction=None):
+    """Many impacts at once: z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1,
+    a, undercut, swing_tilt, pitch_spin and friction may be arrays, broadcast together as numpy does. Runs in C++ over OpenMP threads with the
     GIL released (`threads` of them, 1 to 4 per processor; default OpenMP's: OMP_NUM_THREADS or every core), each needed set of modes solved once. Returns an xarray.Dataset with a study
     dataset's names, units and status flags: dims named after the array arguments when each is 1-D
     along its own axis (z=np.linspace(...), ball_speed=v[:, None] gives dims (ball_speed, z)), else
@@ -376,7 +383,8 @@ def impacts(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=N
     import xarray as xr
 
     args = _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, pivot, modes,
-                  mode_tolerance, accuracy, step_accuracy, integrator, dt, tolerance, window, theory, n2000, ball, arrays=True)
+                  mode_tolerance, accuracy, step_accuracy, integrator, dt, tolerance, window, theory, n2000, ball, arrays=True,
+                  oblique=dict(undercut=undercut, swing_tilt=swing_tilt, pitch_spin=pitch_spin, friction=friction))
     _check_bat(bat)
     threads = 0 if threads is None else _whole("threads", threads, 1, _max_threads(),
                                                       " (4 per processor; more only contend for the same cores)")  # 0: OpenMP's default
