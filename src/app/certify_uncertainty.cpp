@@ -77,8 +77,11 @@ void print_json(const UncertaintyStudy& u, const Dataset& d, const std::string& 
   Json::Object probability, quantiles;
   for (std::size_t r = 0; r < rules.size(); ++r) probability.add(rules[r], interval_json(pass, 3 * r));
   const std::vector<double>& q = numbers(d, measure + "_quantile");
-  for (std::size_t k = 0; k < u.plan.quantiles.size(); ++k)
-    quantiles.add(Json::number(u.plan.quantiles[k]).text(), interval_json(q, 3 * k));
+  for (std::size_t k = 0; k < u.plan.quantiles.size(); ++k) {
+    char level[32];
+    std::snprintf(level, sizeof level, "%g", u.plan.quantiles[k]);  // as the study writes it: "0.05"
+    quantiles.add(level, interval_json(q, 3 * k));
+  }
   Json::Object out;
   out.add("standard", standards()[u.study.standard].name)
       .add("samples", static_cast<double>(u.plan.statistics_points()))
