@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "program.hpp"
@@ -212,6 +213,11 @@ TEST_CASE("A bad uncertainty study is refused with one line before any work", "[
        "key 'sampling.size' = 0: expected a whole number of samples >= 2"},
       {"[uncertain]\ne0 = { distribution = \"normal\", mean = 0.5, sd = 0.02 }\n[sampling]\nsize = 1e14\n",
        "key 'sampling.size' = 1e+14"},
+      // Under 1e9 points, but 9.5e8 points of 3 inputs need some 84 GB before a value is drawn.
+      {"[uncertain]\ne0 = { distribution = \"normal\", mean = 0.5, sd = 0.02 }\nk1 = { distribution = \"normal\", "
+       "mean = 6.53e7, sd = 1e6 }\na = { distribution = \"uniform\", lower = 1.8, upper = 1.9 }\n[sampling]\n"
+       "size = 190000000\nsensitivity = true\n",
+       "GB, more than half the"},
       {"[uncertain]\ne0 = { distribution = \"normal\", mean = 0.9, sd = 0.2 }\n[sampling]\nsize = 200\n",
        "truncate the distribution"},
       {"[uncertain]\ne0 = { distribution = \"gauss\", mean = 0.5, sd = 0.02 }\n" + sampling,
@@ -226,4 +232,76 @@ TEST_CASE("A bad uncertainty study is refused with one line before any work", "[
     CHECK(!std::filesystem::exists(out));
     CHECK(!std::filesystem::exists(out + ".journal"));
   }
+}
+
+TEST_CASE("certify --uncertainty: a rigid bat's BBCOR is the drawn e0, so it passes as often as e0 <= 0.5",
+          "[uncertainty][certification]") {
+  // With N2000's ball (one COR at every speed) a rigid bat returns BBCOR = e0 (test_certification_study.cpp):
+  // e0 uniform on [0.44, 0.54] passes the 0.500 limit with probability 0.6, and BBCOR's mean is 0.49.
+  TempDir dir;
+  const auto study = dir.write("rigid_certify.toml", R"(kind = "uncertainty"
+model = "certification"
+[ball]
+preset = "n2000"
+[scene]
+bat = ")" + source_path("studies/bats/r161.toml") + R"("
+modes = 0
+[uncertain]
+rig_e0 = { distribution = "uniform", lower = 0.44, upper = 0.54 }
+[sampling]
+method = "monte_carlo"
+size = 40
+[output]
+variables = ["bbcor", "status"]
+)");
+  const ProgramRun run = run_program("certify --uncertainty " + study.string() + " --json");
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  const auto triple = [&](const std::string& key) {
+    const std::size_t at = run.output.find("\"" + key + "\": [");
+    REQUIRE(at != std::string::npos);
+    double v[3];
+    REQUIRE(std::sscanf(run.output.c_str() + at + key.size() + 4, "[%lf, %lf, %lf]", &v[0], &v[1], &v[2]) == 3);
+    return Estimate{v[0], v[1], v[2]};
+  };
+  CHECK(within(0.6, triple("all")));
+  CHECK(within(0.6, triple("bbcor")));
+  CHECK(within(0.49, triple("bbcor_mean")));
+  CHECK(within(0.1 / std::sqrt(12.0), triple("bbcor_std")));
+  // A bat given as well is refused: the study names its bat.
+  require_refused(run_program("certify r161 --uncertainty " + study.string()), "give one or the other");
+}
+
+TEST_CASE("A killed uncertainty study resumes to the file of an uninterrupted run", "[uncertainty]") {
+  TempDir dir;
+  const auto study = dir.write("resume.toml", R"(kind = "uncertainty"
+[scene]
+bat = ")" + source_path("studies/bats/r161.toml") + R"("
+center = 0.09
+omega = 51
+ball_speed = 40
+[axes]
+z = { start = 0.60, stop = 0.80, step = 0.01 }
+[uncertain]
+"bat.youngs_modulus" = { distribution = "lognormal", mean = 1.814e10, sd = 2e9 }
+[sampling]
+size = 150
+[output]
+variables = ["vf", "sweet_spot_width", "status"]
+)");
+  const std::string whole = dir / "whole.h5", resumed = dir / "resumed.h5";
+  REQUIRE(run_program("run " + study.string() + " -o " + whole + " --quiet").exit_code == 0);
+  const ProgramRun killed =
+      run_and_kill(SWEETSPOT_PROGRAM, "run " + study.string() + " -o " + resumed + " --quiet", resumed);
+  INFO(killed.output);
+  REQUIRE_THAT(killed.output, Catch::Contains("killed 137"));
+  REQUIRE(std::filesystem::exists(resumed + ".journal"));
+  const ProgramRun resume = run_program("run " + study.string() + " -o " + resumed + " --resume");
+  INFO(resume.output);
+  REQUIRE(resume.exit_code == 0);
+  CHECK_THAT(resume.output, Catch::Contains("resuming:"));
+  const ProgramRun compare =
+      run_command(std::string(python) + " " + source_path("tests/compare_datasets.py") + " " + whole + " " + resumed);
+  INFO(compare.output);
+  CHECK(compare.exit_code == 0);
 }
