@@ -36,7 +36,7 @@ std::vector<Setting> drawn_settings(const Where& top, const SampledKeys& sampled
         (spec->type != Type::number && spec->type != Type::bat_parameter))
       reject(where, "{...}", "expected a numeric key of kind " + kind_text(sampled.model) + " that may be an axis: " +
                                  key_list(sampled.model, true) + ", or \"bat.PARAMETER\"");
-    if (given.scene.size() && find(given.scene, key.name))
+    if (find(given.scene, key.name))
       reject(where, "{...}", "is drawn here and set in [scene]: give it in one place");
     if (find(given.axes, key.name)) reject(where, "{...}", "is drawn here and is an axis: give it in one place");
     for (std::size_t i = 0; i < key.values.size(); ++i)

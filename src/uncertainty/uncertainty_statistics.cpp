@@ -46,14 +46,15 @@ void add_output_statistics(const UncertaintyStudy& u, const Variable& v, std::ve
            first = statistic(v, "_sobol_first", "first-order Sobol' indices", {"input"}, "1"),
            total_index = statistic(v, "_sobol_total", "total Sobol' indices", {"input"}, "1");
   std::vector<double> means, sds, quantiles, firsts, totals, column(total);
+  std::vector<std::vector<double>> inputs;
+  if (u.plan.sensitivity)
+    for (const Axis& drawn : u.study.sampled) inputs.push_back(drawn.values);
   for (std::size_t j = 0; j < inner; ++j) {
     for (std::size_t i = 0; i < total; ++i) column[i] = values[i * inner + j];
     const SampleSummary s = summarize(std::span(column).first(used), u.plan.confidence, u.plan.quantiles);
     push(means, s.mean), push(sds, s.sd);
     for (const Estimate& q : s.quantiles) push(quantiles, q);
     if (!u.plan.sensitivity) continue;
-    std::vector<std::vector<double>> inputs;
-    for (const Axis& drawn : u.study.sampled) inputs.push_back(drawn.values);
     const SobolIndices indices = sobol_indices(inputs, column, u.plan.size, u.plan.confidence);
     for (const Estimate& e : indices.first) push(firsts, e);
     for (const Estimate& e : indices.total) push(totals, e);
