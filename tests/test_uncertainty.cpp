@@ -72,6 +72,23 @@ TEST_CASE("The mean's interval is Student's and shrinks as one over the root of 
   CHECK(small.mean.upper - small.mean.value == Approx(small.mean.value - small.mean.lower));
 }
 
+TEST_CASE("Correlated inputs have the Gaussian copula's correlation", "[uncertainty]") {
+  // Normal marginals under a Gaussian copula are jointly normal: their Pearson correlation is r.
+  // Its estimate from n pairs has atanh(r_hat) ~ N(atanh(r), 1/(n - 3)): 99.9 % within 3.29 sd.
+  const std::vector<InputDistribution> inputs = {{"ball_speed", Shape::normal, 40, 2}, {"e0", Shape::normal, 0.5, 0.01}};
+  for (const SamplingMethod method : {SamplingMethod::monte_carlo, SamplingMethod::low_discrepancy}) {
+    SamplingPlan plan;
+    plan.size = 4000, plan.method = method, plan.correlations = {{0, 1, 0.6}};
+    const auto x = draw_samples(inputs, plan, "test");
+    const SampleSummary a = summarize(x[0], 0.95, {0.5}), b = summarize(x[1], 0.95, {0.5});
+    double covariance = 0;
+    for (std::size_t i = 0; i < x[0].size(); ++i) covariance += (x[0][i] - a.mean.value) * (x[1][i] - b.mean.value);
+    const double r = covariance / static_cast<double>(x[0].size() - 1) / (a.sd.value * b.sd.value);
+    INFO(to_string(method) << ": r = " << r);
+    CHECK(std::abs(std::atanh(r) - std::atanh(0.6)) < 3.29 / std::sqrt(4000.0 - 3));
+  }
+}
+
 TEST_CASE("A probability's interval is Clopper-Pearson's", "[uncertainty]") {
   // No success in n trials: the upper bound solves (1 - p)^n = (1 - c) / 2.
   for (const std::size_t n : {10u, 200u})
@@ -222,6 +239,15 @@ TEST_CASE("A bad uncertainty study is refused with one line before any work", "[
        "truncate the distribution"},
       {"[uncertain]\ne0 = { distribution = \"gauss\", mean = 0.5, sd = 0.02 }\n" + sampling,
        "key 'uncertain.e0.distribution' = \"gauss\""},
+      // Three correlations no joint distribution has: x1 ~ x2 and x2 ~ x3 strongly, x1 ~ x3 against both.
+      {"[uncertain]\ne0 = { distribution = \"normal\", mean = 0.5, sd = 0.01 }\nk1 = { distribution = \"normal\", "
+       "mean = 6.53e7, sd = 1e6 }\na = { distribution = \"uniform\", lower = 1.8, upper = 1.9 }\n[sampling]\n"
+       "size = 10\nmethod = \"monte_carlo\"\ncorrelation = [[\"e0\", \"k1\", 0.9], [\"k1\", \"a\", 0.9], "
+       "[\"e0\", \"a\", -0.9]]\n",
+       "key 'sampling.correlation': the correlation matrix it makes is not positive definite"},
+      {"[uncertain]\ne0 = { distribution = \"normal\", mean = 0.5, sd = 0.01 }\nk1 = { distribution = \"normal\", "
+       "mean = 6.53e7, sd = 1e6 }\n[sampling]\nsize = 10\ncorrelation = [[\"e0\", \"k1\", 1.5]]\n",
+       "key 'sampling.correlation[0]'"},
   };
   for (const auto& [tail, expected] : cases) {
     const auto file = dir.write("bad.toml", head + tail);
