@@ -6,6 +6,7 @@
 #include <string>
 
 #include "bat_argument.hpp"
+#include "certify_uncertainty.hpp"
 #include "commands.hpp"
 #include "display_units.hpp"
 #include "json.hpp"
@@ -13,6 +14,7 @@
 #include "sweetspot/ball/ball_file.hpp"
 #include "sweetspot/bat/bat_design.hpp"
 #include "sweetspot/impact/certification.hpp"
+#include "sweetspot/input_error.hpp"
 
 namespace sweetspot::app {
 
@@ -20,6 +22,8 @@ namespace {
 
 struct CertifyCommand {
   std::string bat_file;
+  std::string uncertainty;  // an uncertainty study of model "certification" in place of the bat
+  std::string output;       // its dataset (default: none kept)
   std::string standard = "bbcor";
   std::string theory = "timoshenko";
   std::string modes = "auto";
@@ -131,6 +135,15 @@ void print_text(const std::string& bat_name, const std::string& ball, double acc
 }
 
 void run_certify(CertifyCommand& o) {
+  if (o.bat_file.empty() == o.uncertainty.empty())
+    throw InputError(o.uncertainty.empty() ? "certify: expected a bat, or --uncertainty with a study file"
+                                           : "certify: a bat and --uncertainty " + o.uncertainty +
+                                                 ": the study names its bat; give one or the other");
+  if (!o.uncertainty.empty()) {
+    certify_under_uncertainty(o.uncertainty, o.output, o.json);
+    return;
+  }
+  if (!o.output.empty()) throw InputError("certify: --output " + o.output + " applies only with --uncertainty");
   BatSource source;
   const BatDesign design = load_bat_design(bat_argument(o.bat_file, "bat"), source);
   o.options.e0 = o.e0, o.options.ball_speed = o.ball_speed, o.options.pivot = o.pivot;
@@ -149,7 +162,10 @@ void run_certify(CertifyCommand& o) {
 void add_certify_command(CLI::App& app) {
   auto o = std::make_shared<CertifyCommand>();
   CLI::App* cmd = app.add_subcommand("certify", "A bat in the virtual test rig against BBCOR, BESR or BPF");
-  cmd->add_option("bat", o->bat_file, "bat file (TOML) or a shipped bat's name (r161, alloy_bbcor, ...)")->required();
+  cmd->add_option("bat", o->bat_file, "bat file (TOML) or a shipped bat's name (r161, alloy_bbcor, ...)");
+  cmd->add_option("--uncertainty", o->uncertainty,
+                  "an uncertainty study (TOML) of model certification: the pass probability under its scatter");
+  cmd->add_option("-o,--output", o->output, "with --uncertainty: keep its dataset here (HDF5)");
   cmd->add_option("--standard", o->standard, "bbcor (NCAA/NFHS), besr (NCAA 1999-2010) or bpf (USSSA)")
       ->capture_default_str();
   cmd->add_option("--ball", o->ball, "the rig's ball: a preset's name or a TOML file with a [ball] table")

@@ -637,7 +637,9 @@ void run_study(const Study& study, const RunOptions& options) {
   const auto output_start = Clock::now();
   const DesignModes modes = keeps_vibrations(study) ? design_modes(study, dataset_mode_count(study)) : DesignModes{};
   const double modes_seconds = seconds_since(output_start);
-  write_dataset(options.output, make_dataset(study, layout, coordinator.rows(), modes, info));
+  Dataset dataset = make_dataset(study, layout, coordinator.rows(), modes, info);
+  if (options.finish) options.finish(dataset);
+  write_dataset(options.output, dataset);
   spdlog::info("rank 0: the bats' modes for the dataset in {:.3f} s, the dataset in {:.3f} s", modes_seconds,
                seconds_since(output_start) - modes_seconds);
   claim->journal.remove();  // the lock goes with the claim, after the journal

@@ -153,6 +153,33 @@ void check_possible(const BatDesign& design, const Settings& s, const std::vecto
   reject(blamed->where, value, "makes an impossible bat: " + broken->message + " (" + label + ")");
 }
 
+// An uncertainty study's bats: the file's bat with each sample's drawn bat parameters, in
+// sample order, each checked against the rules of a possible bat and built.
+void build_sampled_designs(Study& study, const Settings& s, const Setting& bat, std::size_t file,
+                           std::vector<std::string>& labels) {
+  std::vector<const Setting*> drawn;
+  for (const Setting& setting : s.samples)
+    if (is_bat_parameter(setting.name)) drawn.push_back(&setting);
+  const std::size_t samples = s.samples.front().values.size();
+  if (static_cast<double>(samples) > max_designs)
+    reject(drawn.front()->where, "[...]",
+           "draws " + format_number(static_cast<double>(samples)) + " bats (one per sample); at most 1e5");
+  const std::string name = study.bat_names[file] + " (" + bat.labels[file] + ")";
+  for (std::size_t i = 0; i < samples; ++i) {
+    BatDesign design = study.bat_designs[file];
+    std::string label = name + " in sample " + std::to_string(i);
+    for (const Setting* setting : drawn) {
+      set_parameter(design, *setting, i, label);
+      label += ", " + setting->name + " = " + parameter_value(*setting, i);
+    }
+    check_possible(design, s, drawn, std::vector<std::size_t>(drawn.size(), i), bat, file, label);
+    study.designs.push_back(build_bat(design));
+    study.design_mass.push_back(design_mass_properties(design));
+    study.design_specs.push_back(std::move(design));
+    labels.push_back(std::move(label));
+  }
+}
+
 // Every design: each bat file with [scene]'s bat parameters, then each combination of the
 // bat-parameter axes (row-major, in the order written), checked against the rules of a possible
 // bat and built. Returns a label per design for messages:
@@ -172,6 +199,10 @@ std::vector<std::string> build_designs(Study& study, const Settings& s, const Se
     BatDesign& base = study.bat_designs[f];
     for (const Setting& setting : s.scene)
       if (is_bat_parameter(setting.name)) set_parameter(base, setting, 0, file);
+    if (study.sampled_designs) {  // an uncertainty study: no bat axes, one bat per sample
+      build_sampled_designs(study, s, bat, f, labels);
+      continue;
+    }
     std::vector<std::size_t> at(axes.size(), 0);
     for (std::size_t d = 0; d < static_cast<std::size_t>(count); ++d) {
       BatDesign design = base;
@@ -246,7 +277,7 @@ void check_euler_bernoulli_slices(const Settings& s, const Where& top, const std
 }  // namespace
 
 void check_grid_size(const Settings& s, const Where& top) {
-  double points = 1;
+  double points = s.samples.empty() ? 1 : static_cast<double>(s.samples.front().values.size());
   for (const Setting& axis : s.axes) points *= static_cast<double>(axis.values.size());
   if (points > max_points)
     reject(Where{top.file, "axes", 0}, "{...}", "the grid has " + format_number(points) + " points; at most 1e9");

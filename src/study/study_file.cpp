@@ -1,5 +1,6 @@
 // load_study: a study file read, checked across keys and resolved into a Study.
 #include <algorithm>
+#include <numeric>
 
 #include "ball/ball_table.hpp"
 #include "study_settings.hpp"
@@ -11,6 +12,7 @@ namespace sweetspot {
 
 using namespace study_detail;
 using detail::describe;
+using detail::format_number;
 
 namespace {
 
@@ -21,21 +23,61 @@ Axis make_axis(const Setting& s) {
   return axis;
 }
 
-}  // namespace
+// An uncertainty study's drawn keys as settings, each value checked as the key's own values are
+// (a normal distribution reaches any value: one outside what the key takes is refused, naming
+// the sample, so that the user truncates the distribution).
+std::vector<Setting> drawn_settings(const Where& top, const SampledKeys& sampled, const Settings& given) {
+  std::vector<Setting> settings;
+  for (std::size_t k = 0; k < sampled.keys.size(); ++k) {
+    const Axis& key = sampled.keys[k];
+    const KeySpec* spec = find_key(key.name);
+    const Where where{top.file, "uncertain." + key.name, sampled.lines[k]};
+    if (!spec || !(spec->kinds & bit(sampled.model)) || !spec->axis ||
+        (spec->type != Type::number && spec->type != Type::bat_parameter))
+      reject(where, "{...}", "expected a numeric key of kind " + kind_text(sampled.model) + " that may be an axis: " +
+                                 key_list(sampled.model, true) + ", or \"bat.PARAMETER\"");
+    if (find(given.scene, key.name))
+      reject(where, "{...}", "is drawn here and set in [scene]: give it in one place");
+    if (find(given.axes, key.name)) reject(where, "{...}", "is drawn here and is an axis: give it in one place");
+    for (std::size_t i = 0; i < key.values.size(); ++i)
+      if (!spec->valid(key.values[i]))
+        reject(where, format_number(key.values[i]) + " (sample " + std::to_string(i) + ")",
+               std::string(spec->expected) + "; truncate the distribution to the values the key takes");
+    settings.push_back(Setting{spec, where, key.values, {}, key.name});
+  }
+  return settings;
+}
 
-Study load_study(const fs::path& file) {
+// An uncertainty study's axes sweep its scene for every sample; the bats are the samples'.
+void reject_model_axes(const Settings& s) {
+  for (const Setting& axis : s.axes)
+    if (axis.name == "bat" || axis.name == "slices" || axis.name == "theory" || is_bat_parameter(axis.name))
+      reject(axis.where, "[...]",
+             "an uncertainty study's bats are one file's (its [scene] bat and the drawn bat parameters): not an axis");
+}
+
+Study load(const fs::path& file, std::string text, const SampledKeys* sampled) {
   Study study;
   study.file = file;
-  study.text = read_text(file);
+  study.text = std::move(text);
   const toml::table doc = parse_toml(file, study.text);
   const Where top{&study.file, "", 0};
-  reject_unknown(top, doc, {"title", "kind", "scene", "axes", "output", "ball"});
+  if (sampled)
+    reject_unknown(top, doc, {"title", "kind", "model", "scene", "axes", "output", "ball", "uncertain", "sampling"});
+  else
+    reject_unknown(top, doc, {"title", "kind", "scene", "axes", "output", "ball"});
   if (const toml::node* title = doc.get("title")) {
     if (!title->is_string()) reject(top.child("title", *title), describe(*title), "expected a string");
     study.title = title->as_string()->get();
   }
-  study.kind = read_kind(top, doc);
-  const Settings s{read_settings(top, doc, "scene", study.kind), read_settings(top, doc, "axes", study.kind)};
+  study.kind = sampled ? sampled->model : read_kind(top, doc);
+  Settings s{read_settings(top, doc, "scene", study.kind), read_settings(top, doc, "axes", study.kind)};
+  if (sampled) {
+    reject_model_axes(s);
+    s.samples = drawn_settings(top, *sampled, s);
+    study.sampled = sampled->keys;
+    study.sampled_designs = std::ranges::any_of(s.samples, [](const Setting& d) { return is_bat_parameter(d.name); });
+  }
   check_grid_size(s, top);
   check_required(s, top, study.kind);
   if (has_bat(study.kind)) check_bat_scene(study, s, top);
@@ -82,9 +124,22 @@ Study load_study(const fs::path& file) {
   study.rig_ball_speed = base.rig_ball_speed;
   study.theory = base.theory;
   study.slices = base.slices;
+  if (sampled) {
+    Axis samples{std::string(sample_axis), std::vector<double>(sampled->samples), {}};
+    std::iota(samples.values.begin(), samples.values.end(), 0.0);
+    study.axes.push_back(std::move(samples));
+  }
   for (const Setting& axis : s.axes) study.axes.push_back(make_axis(axis));
   check_study_memory(study, machine_memory_bytes());
   return study;
+}
+
+}  // namespace
+
+Study load_study(const fs::path& file) { return load(file, read_text(file), nullptr); }
+
+Study load_sampled_study(const fs::path& file, std::string text, const SampledKeys& sampled) {
+  return load(file, std::move(text), &sampled);
 }
 
 }  // namespace sweetspot

@@ -19,6 +19,7 @@ std::vector<std::size_t> design_axes(const Study& study) {
   for (std::size_t k = 0; k < study.axes.size(); ++k)
     if (study.axes[k].name == "bat") axes.insert(axes.begin(), k);
     else if (is_bat_parameter(study.axes[k].name)) axes.push_back(k);
+    else if (study.sampled_designs && study.axes[k].name == sample_axis) axes.push_back(k);  // a bat per sample
   return axes;
 }
 
@@ -46,10 +47,14 @@ GridPoint grid_point(const Study& study, std::size_t index) {
   p.coords.resize(study.axes.size());
   for (std::size_t k = study.axes.size(); k-- > 0;) {
     const Axis& axis = study.axes[k];
-    const KeySpec* spec = find_key(axis.name);
-    if (!spec) throw std::invalid_argument("grid_point: unknown axis '" + axis.name + "'");
     p.coords[k] = index % axis.size();
     index /= axis.size();
+    if (axis.name == sample_axis) {  // every drawn key takes its value in this sample
+      for (const Axis& drawn : study.sampled) find_key(drawn.name)->set(p, drawn.values[p.coords[k]]);
+      continue;
+    }
+    const KeySpec* spec = find_key(axis.name);
+    if (!spec) throw std::invalid_argument("grid_point: unknown axis '" + axis.name + "'");
     spec->set(p, axis.values[p.coords[k]]);
   }
   p.design = design_index(study, p.coords);
@@ -61,15 +66,16 @@ GridPoint grid_point(const Study& study, std::size_t index) {
 }
 
 namespace {
-bool model_axis(const Axis& axis) {
-  return axis.name == "bat" || axis.name == "slices" || axis.name == "theory" || is_bat_parameter(axis.name);
+bool model_axis(const Study& study, const Axis& axis) {
+  return axis.name == "bat" || axis.name == "slices" || axis.name == "theory" || is_bat_parameter(axis.name) ||
+         (study.sampled_designs && axis.name == sample_axis);
 }
 }  // namespace
 
 std::size_t models(const Study& study) {
   std::size_t n = 1;
   for (const Axis& axis : study.axes)
-    if (model_axis(axis)) n *= axis.size();
+    if (model_axis(study, axis)) n *= axis.size();
   return n;
 }
 
@@ -83,7 +89,7 @@ std::size_t task_point(const Study& study, std::size_t task) {
   std::size_t model = task / per_model, rest = task % per_model;
   std::vector<std::size_t> coords(study.axes.size());
   for (std::size_t k = coords.size(); k-- > 0;) {
-    std::size_t& part = model_axis(study.axes[k]) ? model : rest;
+    std::size_t& part = model_axis(study, study.axes[k]) ? model : rest;
     coords[k] = part % study.axes[k].size();
     part /= study.axes[k].size();
   }

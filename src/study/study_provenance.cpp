@@ -14,8 +14,11 @@ namespace sweetspot {
 
 namespace {
 
+// An axis's values, and an uncertainty study's drawn values, are variables of their own: such a
+// key has no one value to state as an attribute.
 bool is_axis(const Study& study, const std::string& key) {
-  return std::ranges::any_of(study.axes, [&](const Axis& axis) { return axis.name == key; });
+  const auto named = [&](const Axis& axis) { return axis.name == key; };
+  return std::ranges::any_of(study.axes, named) || std::ranges::any_of(study.sampled, named);
 }
 
 // Global attributes named scene_KEY, typed as the key is: numbers as doubles, counts and

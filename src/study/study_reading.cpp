@@ -366,12 +366,15 @@ constexpr StudyKind study_kinds[] = {StudyKind::impact, StudyKind::wall, StudyKi
 StudyKind read_kind(const Where& top, const toml::table& doc) {
   const toml::node* node = doc.get("kind");
   if (!node) return StudyKind::impact;
+  if (node->value<std::string_view>() == "uncertainty")  // a study of another kind, drawn: sweetspot/uncertainty
+    reject(top.child("kind", *node), describe(*node),
+           "an uncertainty study is loaded by load_uncertainty_study (sweetspot run, certify --uncertainty)");
   std::string names;
   for (const StudyKind kind : study_kinds) {
     if (node->value<std::string_view>() == to_string(kind)) return kind;
     names += (names.empty() ? "" : ", ") + kind_text(kind);
   }
-  reject(top.child("kind", *node), describe(*node), "expected one of " + names);
+  reject(top.child("kind", *node), describe(*node), "expected one of " + names + ", \"uncertainty\"");
 }
 
 // ---- Outputs -----------------------------------------------------------------------------------

@@ -95,6 +95,7 @@ const std::map<std::string, Description>& descriptions() {
       {"compression", {"m", "compression of the ball"}},
       {"ball_position", {"m", "displacement of the ball from first touch, positive away from the bat"}},
       {"z", {"m", "impact location from the knob"}},
+      {"sample", {"1", "sample of the uncertain inputs (their values: the variables named after them)"}},
       {"ball_speed", {"m/s", "ball speed toward the bat"}},
       {"e0", {"1", "coefficient of restitution of the ball on a rigid wall"}},
       {"ball_mass", {"kg", "ball mass"}},
@@ -224,7 +225,7 @@ Coordinate axis_coordinate(const Study& study, const Axis& axis) {
     for (double index : axis.values) c.labels.push_back(study.bat_names[static_cast<std::size_t>(index)]);
   } else if (axis.name == "theory" || !axis.labels.empty()) {
     c.labels = axis.labels;
-  } else if (axis.name == "slices") {
+  } else if (axis.name == "slices" || axis.name == sample_axis) {
     c.integers = integers(axis.values);
   } else if (axis.name == "modes") {
     c.integers = integers(axis.values);
@@ -475,6 +476,14 @@ Dataset make_dataset(const Study& study, const OutputLayout& layout, const std::
   add_outputs(study, layout, rows, dims, d);
   add_sweet_spots(study, layout, rows, d);
   if (has_bat(study.kind)) add_design_variables(study, modes, dataset_mode_count(study), d);
+  // An uncertainty study's inputs: each drawn key's value in every sample (a drawn bat.length is
+  // already there: the bats' bat_length over the sample dimension).
+  for (const Axis& drawn : study.sampled) {
+    if (std::ranges::count(d.variables, dataset_name(drawn.name), &Variable::name)) continue;
+    const Description description = describe(drawn.name);
+    d.variables.push_back({dataset_name(drawn.name), description.units, description.long_name,
+                           {std::string(sample_axis)}, drawn.values, {}, {}});
+  }
 
   add_provenance(study, info, d);
   return d;

@@ -57,10 +57,13 @@ struct Setting {
 
 const Setting* find(const std::vector<Setting>& settings, std::string_view name);
 
-// The settings in force: an axis overrides the same key in [scene].
+// The settings in force: an axis overrides the same key in [scene]. An uncertainty study's
+// drawn keys (`samples`, each with a value per sample, all moving together along the sample
+// axis) are neither, and no key is both drawn and set.
 struct Settings {
-  std::vector<Setting> scene, axes;
+  std::vector<Setting> scene, axes, samples = {};
   const Setting* operator[](std::string_view name) const {
+    if (const Setting* drawn = find(samples, name)) return drawn;
     const Setting* axis = find(axes, name);
     return axis ? axis : find(scene, name);
   }

@@ -6,8 +6,10 @@
 // Each point is computed alone and stored by its grid index, so the dataset is bitwise the same
 // for any number of ranks and threads.
 #include <filesystem>
+#include <functional>
 
 #include "sweetspot/input_error.hpp"
+#include "sweetspot/study/dataset.hpp"
 #include "sweetspot/study/study.hpp"
 
 namespace sweetspot {
@@ -23,6 +25,9 @@ struct RunOptions {
   std::filesystem::path output;  // the dataset; OUT.journal and OUT.lock beside it while running
   bool resume = false;           // keep the journal's finished points
   Verbosity verbosity = Verbosity::normal;
+  // Called on rank 0 with the finished dataset before it is written: what a study kind derives
+  // from all points together (an uncertainty study's statistics) goes in here.
+  std::function<void(Dataset&)> finish = {};
 };
 
 // A run refused before any rank did any work: the output cannot or must not be written

@@ -138,6 +138,11 @@ struct Study {
   std::vector<Axis> axes;            // in the order written
   std::vector<std::string> outputs;  // in the order written
   double sweet_spot_fraction = 0.01;  // [output]: the sweet spot's zone is within this of the peak vf
+  // An uncertainty study (sweetspot/uncertainty/): the keys drawn from distributions, each with
+  // its value in every sample (labels empty). The study's first axis is then `sample` (0, 1, ...),
+  // along which they all move together; empty for any other study.
+  std::vector<Axis> sampled;
+  bool sampled_designs = false;  // a sampled key is a bat parameter: one bat per sample
 
   // Number of grid points: the product of the axis sizes (1 without axes).
   std::size_t points() const;
@@ -146,6 +151,23 @@ struct Study {
 // Parses and validates a study file and loads each bat file once; throws InputError with one
 // line naming the study file (and line), the key, the value and what was expected.
 Study load_study(const std::filesystem::path& file);
+
+// The draws of an uncertainty study, made by its sampler (sweetspot/uncertainty/) from the
+// file's [uncertain] and [sampling] tables: what each sample computes (`model`), and per drawn
+// key its value in every sample and the line of the file that gives its distribution.
+struct SampledKeys {
+  StudyKind model = StudyKind::impact;
+  std::size_t samples = 0;
+  std::vector<Axis> keys;
+  std::vector<std::size_t> lines;
+};
+// The name of the axis the samples run along.
+inline constexpr std::string_view sample_axis = "sample";
+// Loads the study `text` (read from `file`) with the drawn keys set per sample: its scene and
+// [axes] as any study of kind `sampled.model` (no axis may make bats: bat, bat.PARAMETER, slices,
+// theory), every drawn value checked as the key's own values are (InputError naming the key, the
+// sample and the value), a bat built and checked per sample when a bat parameter is drawn.
+Study load_sampled_study(const std::filesystem::path& file, std::string text, const SampledKeys& sampled);
 
 // Everything one grid point needs: its kind and scene (the ball, speed and integrator serve the
 // wall too), for a bat which one, how it is sliced and which beam theory makes its modes, for the
