@@ -1,10 +1,13 @@
 // The batted ball's flight (src/flight): exact limits (the vacuum parabola, quadratic drag's
-// closed forms, symmetries) and the trajectory calculator's own published case.
+// closed forms, symmetries), the trajectory calculator's own published case, and the command.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "sweetspot/flight/flight.hpp"
+#include "program.hpp"
+#include "refusal.hpp"
 #include "sweetspot/input_error.hpp"
 
 using namespace sweetspot;
@@ -237,4 +240,40 @@ TEST_CASE("A flight refuses unphysical air and launches before any work", "[flig
   CHECK(refused(ok, Air{.relative_humidity = -0.1}, "humidity"));
   CHECK(refused(ok, Air{.wind_speed = -3}, "wind_speed"));
   CHECK(refused(ok, Air{.wind_direction = nan}, "wind_direction"));
+}
+
+// ---- The command: sweetspot flight.
+
+TEST_CASE("sweetspot flight prints distance, apex, hang time and landing angle in m and ft", "[flight][program]") {
+  const ProgramRun run = run_program("flight --speed 103mph --angle 27.5 --backspin 2500rpm");
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  for (const char* line : {"distance ", " ft)", "apex ", "hang time ", "landing angle ", "air density "})
+    CHECK_THAT(run.output, Catch::Contains(line));
+}
+
+TEST_CASE("sweetspot flight --vacuum --json is the parabola", "[flight][program]") {
+  const ProgramRun run = run_program("flight --speed 40 --angle 30 --height 0 --vacuum --json");
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  const double g = 9.80665, th = std::numbers::pi / 6;
+  const std::string key = "\"distance\": ";
+  const std::size_t at = run.output.find(key);
+  REQUIRE(at != std::string::npos);
+  CHECK(std::stod(run.output.substr(at + key.size())) == Approx(1600 * std::sin(2 * th) / g).epsilon(1e-9));
+}
+
+TEST_CASE("sweetspot flight refuses unphysical air and launches in one line, as written", "[flight][program]") {
+  require_refused(run_program("flight --speed -3"), {"--speed \"-3\"", "speed >= 0"});
+  require_refused(run_program("flight --speed nan"), {"--speed \"nan\""});
+  require_refused(run_program("flight --speed 40 --humidity 150"), {"--humidity \"150\"", "0 to 100"});
+  require_refused(run_program("flight --speed 40 --humidity -1"), {"--humidity \"-1\""});
+  require_refused(run_program("flight --speed 40 --pressure -1inHg"), {"--pressure \"-1inHg\"", "pressure > 0"});
+  require_refused(run_program("flight --speed 40 --temperature -500F"), {"--temperature \"-500F\"", "above 0 K"});
+  require_refused(run_program("flight --speed 40 --temperature 0"), {"--temperature \"0\""});
+  require_refused(run_program("flight --speed 40 --temperature 70mph"), {"--temperature \"70mph\"", "units K, C, F"});
+  require_refused(run_program("flight --speed 40 --angle 100"), {"--angle \"100\"", "-90 to 90"});
+  require_refused(run_program("flight --speed 40 --wind-direction nan"), {"--wind-direction \"nan\""});
+  require_refused(run_program("flight --speed 40 --spin-decay-time 0"), {"--spin-decay-time"});
+  require_refused(run_program("flight --angle 30"), {"--speed"});
 }
