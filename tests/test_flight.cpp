@@ -83,6 +83,20 @@ TEST_CASE("A ball dropped through still air falls as quadratic drag's closed for
   }
 }
 
+TEST_CASE("The spin decays with the path through the air", "[flight]") {
+  // d(omega)/dt = -omega |u| / (tau v_ref): omega = omega0 exp(-path / (tau v_ref)). A ball dropped
+  // through still air without lift falls straight, so its path is the height it fell.
+  FlightOptions o;
+  o.lift = false;
+  o.aerodynamics.spin_decay_time = 2;
+  Launch l;
+  l.angle = -90;
+  l.height = 50;
+  l.backspin = 3000 * rpm;
+  const FlightResult r = simulate_flight(l, Air{}, o);
+  CHECK(r.landing_spin == Approx(l.backspin * std::exp(-50 / (2 * spin_decay_reference_speed))).epsilon(1e-9));
+}
+
 TEST_CASE("A ball thrown straight up through still air rises and falls as quadratic drag's closed forms say",
           "[flight]") {
   // Up: apex (v_t^2 / 2g) ln(1 + v0^2 / v_t^2) at (v_t / g) atan(v0 / v_t); down from there it lands

@@ -77,7 +77,7 @@ double read(const std::string& key, const QuantityText& q) {
   const Unit* plain = q.plain_unit.empty() ? nullptr : find_unit(q.plain_unit);
   if (const std::optional<double> x = plain_number(q.text)) {
     if (!plain || !std::isfinite(*x)) return *x;  // NaN and infinities reach the physical checks
-    return *x * plain->multiplier / plain->divisor + plain->offset;
+    return *parse_quantity(q.text + " " + std::string(q.plain_unit), *q.dimension);  // "27.5" is "27.5 deg"
   }
   if (const std::optional<double> si = parse_quantity(q.text, *q.dimension)) return *si;
   std::string expected = expected_quantity(*q.dimension);
@@ -121,6 +121,7 @@ void print_json(const Launch& l, const Air& air, const FlightResult& r) {
   out.add("wind_direction", air.wind_direction).add("air_density", r.air_density);
   out.add("distance", r.distance).add("apex", r.apex).add("apex_time", r.apex_time);
   out.add("hang_time", r.hang_time).add("landing_angle", r.landing_angle).add("landing_speed", r.landing_speed);
+  out.add("landing_spin", r.landing_spin);
   out.add("bearing", r.bearing).add("landing_x", r.landing_x).add("landing_y", r.landing_y);
   if (!r.samples.empty()) out.add("trajectory", samples_json(r.samples));
   std::printf("%s\n", Json(out).text().c_str());
@@ -155,11 +156,11 @@ void run_flight(const FlightCommandOptions& o) {
   if (const auto problem = launch_problem(launch)) refuse_option(o, *problem);
   if (const auto problem = air_problem(air)) refuse_option(o, *problem);
   if (const auto problem = flight_options_problem(options)) {
-    if (problem->key == "spin_decay_time")
-      throw InputError("flight: --spin-decay-time " + std::to_string(o.spin_decay_time) + ": expected a time > 0 (s)");
-    if (problem->key == "sample_interval")
-      throw InputError("flight: --samples " + std::to_string(o.samples) + ": expected a time >= 0 (s; 0: none)");
-    refuse(*problem, "flight: ");
+    // The two options CLI11 reads as numbers: named as options, the value as the number read.
+    InputProblem named = *problem;
+    if (named.key == "spin_decay_time") named.key = "--spin-decay-time";
+    if (named.key == "sample_interval") named.key = "--samples";
+    refuse(named, "flight: ");
   }
   const FlightResult r = simulate_flight(launch, air, options);
   if (o.json)

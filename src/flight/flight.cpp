@@ -62,6 +62,7 @@ void land(FlightResult& r, double t, const FlightState& s) {
   const double horizontal = std::hypot(s[3], s[4]);
   r.landing_angle = degrees(std::atan2(-s[5], horizontal));
   r.landing_speed = std::sqrt(horizontal * horizontal + s[5] * s[5]);
+  r.landing_spin = s[6];
 }
 
 }  // namespace
@@ -94,11 +95,11 @@ FlightResult simulate_flight(const Launch& launch, const Air& air, const FlightO
     const auto [t0, t1] = stepper.do_step(equations);
     const FlightState& before = stepper.previous_state();
     const FlightState& after = stepper.current_state();
-    if (before[5] > 0 && after[5] <= 0) {  // v_z passes zero: the apex
-      r.apex_time = crossing(stepper, 5, t0, t1, before[5], after[5]);
+    if (before[5] > 0 && after[5] <= 0) {  // v_z passes zero: a top (the highest is the apex)
+      const double t = crossing(stepper, 5, t0, t1, before[5], after[5]);
       FlightState top{};
-      stepper.calc_state(r.apex_time, top);
-      r.apex = top[2];
+      stepper.calc_state(t, top);
+      if (top[2] > r.apex) r.apex = top[2], r.apex_time = t;
     }
     const bool landed = before[2] > 0 && after[2] <= 0;
     const double end = landed ? crossing(stepper, 2, t0, t1, before[2], after[2]) : t1;

@@ -41,6 +41,7 @@ py::dict run_flight(const Launch& launch, const Air& air, const FlightOptions& o
   out["hang_time"] = r.hang_time;
   out["landing_angle"] = r.landing_angle;
   out["landing_speed"] = r.landing_speed;
+  out["landing_spin"] = r.landing_spin;
   out["bearing"] = r.bearing;
   out["landing_x"] = r.landing_x;
   out["landing_y"] = r.landing_y;

@@ -54,6 +54,7 @@ struct FlightResult {
   double hang_time = 0;       // s, from launch to landing
   double landing_angle = 0;   // deg below the horizontal at landing
   double landing_speed = 0;   // m/s
+  double landing_spin = 0;    // rad/s, what the spin has decayed to
   double air_density = 0;     // kg/m^3
   std::vector<FlightSample> samples;  // when asked (FlightOptions::sample_interval)
 };

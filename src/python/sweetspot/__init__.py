@@ -290,7 +290,7 @@ def flight(speed, angle=0.0, *, direction=0.0, backspin=0.0, sidespin=0.0, heigh
     the wind blows toward: 0 out to centre field, 180 in); spin_decay_time (s at 100 mph);
     vacuum=True for no air; samples > 0 records the trajectory every that many seconds.
     Returns: a dict with distance, apex (m), apex_time, hang_time (s), landing_angle (deg below the
-    horizontal), landing_speed (m/s), bearing (deg), landing_x, landing_y (m), air_density (kg/m^3)
+    horizontal), landing_speed (m/s), landing_spin (rad/s), bearing (deg), landing_x, landing_y (m), air_density (kg/m^3)
     and, with samples, trajectory: numpy arrays t, x, y, z, vx, vy, vz."""
     if not isinstance(vacuum, (bool, np.bool_)):
         _refuse("vacuum", vacuum, "True or False")
