@@ -46,7 +46,12 @@ p = sweetspot.flight(v, 30, height=0, vacuum=True)
 check(abs(p["distance"] - v * v * math.sin(2 * th) / g) < 1e-9 * p["distance"], f"vacuum distance {p['distance']}")
 check(abs(p["apex"] - (v * math.sin(th)) ** 2 / (2 * g)) < 1e-9 * p["apex"], f"vacuum apex {p['apex']}")
 # An angle with its unit is that angle.
-check(sweetspot.flight(v, f"{th!r} rad", height=0, vacuum=True)["distance"] == p["distance"], "angle in rad")
+check(abs(sweetspot.flight(v, f"{th!r} rad", height=0, vacuum=True)["distance"] - p["distance"]) < 1e-12 * p["distance"],
+      "angle in rad")
+r = sweetspot.flight("103 mph", "0.48 rad", wind_direction="-0.5 rad")
+out = json.loads(subprocess.run([program, "flight", "--speed", "103mph", "--angle", "0.48rad", "--wind-direction", "-0.5rad",
+                                 "--json"], check=True, capture_output=True, text=True).stdout)
+check(r["distance"] == out["distance"], f"angles with units: Python {r['distance']!r}, program {out['distance']!r}")
 
 t = sweetspot.flight(40, 30, samples=0.25)["trajectory"]
 check(isinstance(t["z"], np.ndarray) and t["t"][0] == 0 and t["z"][-1] == 0, "trajectory from launch to landing")

@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <map>
 #include <memory>
-#include <numbers>
 #include <optional>
 #include <string>
 #include <system_error>
@@ -64,7 +63,8 @@ std::optional<double> plain_number(std::string_view text) {
   return x;
 }
 
-// The option's value in SI (humidity as a fraction), or InputError naming it as written.
+// The option's value in SI, or in its plain unit where it has one (angles in deg: 27.5 stays
+// 27.5), humidity as a fraction; InputError naming the option as written otherwise.
 double read(const std::string& key, const QuantityText& q) {
   const std::string head = "flight: " + option_name(key) + " \"" + q.text + "\": expected ";
   if (!q.dimension) {  // humidity: a number of percent, "50" or "50%"
@@ -75,11 +75,9 @@ double read(const std::string& key, const QuantityText& q) {
     return *percent / 100;
   }
   const Unit* plain = q.plain_unit.empty() ? nullptr : find_unit(q.plain_unit);
-  if (const std::optional<double> x = plain_number(q.text)) {
-    if (!plain || !std::isfinite(*x)) return *x;  // NaN and infinities reach the physical checks
-    return *parse_quantity(q.text + " " + std::string(q.plain_unit), *q.dimension);  // "27.5" is "27.5 deg"
-  }
-  if (const std::optional<double> si = parse_quantity(q.text, *q.dimension)) return *si;
+  if (const std::optional<double> x = plain_number(q.text)) return *x;  // NaN reaches the physical checks
+  if (const std::optional<double> si = parse_quantity(q.text, *q.dimension))
+    return plain ? in_unit(*si, *plain) : *si;  // "0.48 rad" as deg
   std::string expected = expected_quantity(*q.dimension);
   if (plain) {
     const std::string si_text = "a number in " + std::string(si_unit(*q.dimension));
@@ -145,10 +143,8 @@ void print_text(const FlightResult& r) {
 void run_flight(const FlightCommandOptions& o) {
   std::map<std::string, double> v;
   for (const auto& [key, q] : o.values) v[key] = read(key, q);
-  const Launch launch{v["speed"], v["angle"] * 180 / std::numbers::pi, v["direction"] * 180 / std::numbers::pi,
-                      v["backspin"], v["sidespin"], v["height"]};
-  const Air air{v["temperature"], v["pressure"], v["altitude"], v["humidity"], v["wind_speed"],
-                v["wind_direction"] * 180 / std::numbers::pi};
+  const Launch launch{v["speed"], v["angle"], v["direction"], v["backspin"], v["sidespin"], v["height"]};
+  const Air air{v["temperature"], v["pressure"], v["altitude"], v["humidity"], v["wind_speed"], v["wind_direction"]};
   FlightOptions options;
   options.aerodynamics.spin_decay_time = o.spin_decay_time;
   options.sample_interval = o.samples;

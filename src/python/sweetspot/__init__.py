@@ -274,7 +274,8 @@ def certify(bat, standard="bbcor", *, ball=None, e0=None, ball_speed=None, pivot
 
 def _degrees(name, value):
     # An angle: a plain number in deg, or a string with its unit ("0.48 rad", "27.5 deg").
-    return math.degrees(_real(name, value, "angle")) if isinstance(value, str) else _real(name, value)
+    # (rad / (pi / 180): the program's conversion, so that both give the same bits.)
+    return _real(name, value, "angle") / (math.pi / 180) if isinstance(value, str) else _real(name, value)
 
 
 def flight(speed, angle=0.0, *, direction=0.0, backspin=0.0, sidespin=0.0, height="3 ft", temperature="70 F",
