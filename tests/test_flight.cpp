@@ -169,7 +169,7 @@ TEST_CASE("In still air the flight does not depend on its direction", "[flight]"
   CHECK(pulled.bearing == Approx(-35).epsilon(1e-9));
 }
 
-TEST_CASE("Backspin lifts the ball; thinner air and a tail wind carry it farther", "[flight]") {
+TEST_CASE("Backspin lifts the ball, and thinner air and a tail wind carry it farther", "[flight]") {
   Launch l;
   l.speed = 100 * mph;
   l.angle = 28;
@@ -254,6 +254,9 @@ TEST_CASE("A flight refuses unphysical air and launches before any work", "[flig
   CHECK(refused(ok, Air{.relative_humidity = -0.1}, "humidity"));
   CHECK(refused(ok, Air{.wind_speed = -3}, "wind_speed"));
   CHECK(refused(ok, Air{.wind_direction = nan}, "wind_direction"));
+  FlightOptions tiny;
+  tiny.sample_interval = 1e-9;  // billions of samples: refused, not a memory exhausted
+  CHECK_THROWS_AS(simulate_flight(ok, Air{}, tiny), InputError);
 }
 
 // ---- The command: sweetspot flight.

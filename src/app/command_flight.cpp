@@ -188,7 +188,8 @@ void add_flight_command(CLI::App& app) {
   add("wind_direction", "the direction the wind blows toward, from centre field toward right field: deg (180: in)");
   cmd->add_option("--spin-decay-time", o->spin_decay_time, "spin decay time at 100 mph: s (the calculator's 1e4: none)")
       ->capture_default_str();
-  cmd->add_option("--samples", o->samples, "print the trajectory every this many seconds (0: no)")->capture_default_str();
+  cmd->add_option("--samples", o->samples, "print the trajectory every this many seconds (0: no; else >= 0.001)")
+      ->capture_default_str();
   cmd->add_flag("--vacuum", o->vacuum, "no air: no drag and no lift (the parabola)");
   cmd->add_flag("--json", o->json, "print one JSON object (in SI units; angles in deg, humidity in %)");
   cmd->callback([o] { run_flight(*o); });

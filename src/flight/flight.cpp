@@ -87,7 +87,8 @@ FlightResult simulate_flight(const Launch& launch, const Air& air, const FlightO
     land(r, 0, state);
     return r;
   }
-  auto stepper = odeint::make_dense_output(options.tolerance, options.tolerance, odeint::runge_kutta_dopri5<FlightState>());
+  auto stepper =
+      odeint::make_dense_output(options.tolerance, options.tolerance, odeint::runge_kutta_dopri5<FlightState>());
   // A first step of a thousandth of the time a vacuum flight would rise: the controller adapts it.
   stepper.initialize(state, 0.0, std::max(1e-3 * launch.speed / options.gravity, 1e-4));
   int next_sample = 1;

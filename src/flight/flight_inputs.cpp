@@ -25,8 +25,8 @@ std::optional<InputProblem> flight_options_problem(const FlightOptions& o) {
   if (!positive(o.gravity)) return InputProblem{"gravity", o.gravity, "a finite acceleration > 0"};
   if (!positive(o.tolerance)) return InputProblem{"tolerance", o.tolerance, "a finite tolerance > 0"};
   if (!positive(o.max_time)) return InputProblem{"max_time", o.max_time, "a finite time > 0"};
-  if (!(o.sample_interval >= 0) || !std::isfinite(o.sample_interval))
-    return InputProblem{"sample_interval", o.sample_interval, "a finite time >= 0 (0: no samples)"};
+  if (!(o.sample_interval == 0 || (o.sample_interval >= 1e-3 && std::isfinite(o.sample_interval))))
+    return InputProblem{"sample_interval", o.sample_interval, "0 (no samples) or a finite time >= 0.001 s"};
   const Aerodynamics& a = o.aerodynamics;
   for (const auto& [key, value] : {std::pair{"cd0", a.cd0}, std::pair{"cd_spin", a.cd_spin},
                                    std::pair{"cl0", a.cl0}, std::pair{"cl1", a.cl1}, std::pair{"cl2", a.cl2}})

@@ -37,7 +37,7 @@ struct FlightOptions {
   bool lift = true;                  // false: no Magnus force
   double tolerance = 1e-10;          // the integrator's relative and absolute (m, m/s) tolerance
   double max_time = 60;              // s: a flight that has not landed by then is refused
-  double sample_interval = 0;        // s: > 0 records the trajectory at that interval (and landing)
+  double sample_interval = 0;        // s: >= 1 ms records the trajectory at that interval (and landing)
 };
 
 struct FlightSample {
@@ -62,12 +62,13 @@ struct FlightResult {
 // The first thing unphysical about a launch, or nothing: speed >= 0, angle in [-90, 90] deg,
 // height in [0, 1000] m, everything finite (keys speed, angle, direction, backspin, sidespin,
 // height). And about the options: positive ball mass and radius, gravity, tolerance, max_time and
-// spin decay time, finite coefficients, sample_interval >= 0.
+// spin decay time, finite coefficients, sample_interval 0 (none) or at least 1 ms.
 std::optional<InputProblem> launch_problem(const Launch& launch);
 std::optional<InputProblem> flight_options_problem(const FlightOptions& options);
 
-// The flight; checks the launch, the air and the options first (InputError from their problems). A launch at height 0 that does not rise lands
-// at once (distance 0). std::runtime_error when the ball has not landed by max_time.
+// The flight; checks the launch, the air and the options first (InputError from their
+// problems). A launch at height 0 that does not rise lands at once (distance 0).
+// std::runtime_error when the ball has not landed by max_time.
 FlightResult simulate_flight(const Launch& launch, const Air& air, const FlightOptions& options = {});
 
 }  // namespace sweetspot
