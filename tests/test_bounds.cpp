@@ -151,8 +151,8 @@ TEST_CASE("Usage errors: one line in the program's style, exit status 2", "[boun
       {impact + " --center 0.1 --integrator euler", "impact: --integrator: 'euler': expected rk4, exact or dopri"},
       {"modes " + r161 + " --count 0", "modes: --count: Value 0 not in range 1 to 8192"},
       {"modes " + r161 + " --shapes", "modes: --shapes requires --json"},
-      {"", "expected a command: modes, impact, wall, toy, ball, run, convergence, certify or optimize"},
-      {"swing", "expected a command: modes, impact, wall, toy, ball, run, convergence, certify or optimize, not 'swing'"},
+      {"", "expected a command: modes, impact, wall, toy, ball, run, convergence, certify, optimize or flight"},
+      {"swing", "expected a command: modes, impact, wall, toy, ball, run, convergence, certify, optimize or flight, not 'swing'"},
       {impact, "impact: give the swing as --cm-speed or as --center"},
   };
   for (const Case& c : cases) {

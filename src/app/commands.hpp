@@ -46,6 +46,7 @@ void add_run_command(CLI::App& app);
 void add_convergence_command(CLI::App& app);
 void add_certify_command(CLI::App& app);
 void add_optimize_command(CLI::App& app);
+void add_flight_command(CLI::App& app);
 
 // A hollow bat's [barrel] table as the wall used it: its load, and what calibrated it (null: not
 // given), in `impact --json` and `certify --json`.

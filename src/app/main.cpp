@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   sweetspot::app::add_convergence_command(app);
   sweetspot::app::add_certify_command(app);
   sweetspot::app::add_optimize_command(app);
+  sweetspot::app::add_flight_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -30,7 +31,7 @@ int main(int argc, char** argv) {
     std::replace(text.begin(), text.end(), '\n', ' ');
     for (const CLI::App* command : app.get_subcommands()) text = command->get_name() + ": " + text;
     if (app.get_subcommands().empty()) {  // CLI11 says only "A subcommand is required"
-      text = "expected a command: modes, impact, wall, toy, ball, run, convergence, certify or optimize";
+      text = "expected a command: modes, impact, wall, toy, ball, run, convergence, certify, optimize or flight";
       if (argc > 1) text += ", not '" + std::string(argv[1]) + "'";
     }
     std::fprintf(stderr, "sweetspot: error: %s (see sweetspot%s --help)\n", sweetspot::app::printable(text).c_str(),

@@ -17,6 +17,7 @@
 
 #include "bat_design_bindings.hpp"
 #include "bat_handle.hpp"
+#include "flight_bindings.hpp"
 #include "scene_args.hpp"
 #include "scene_record.hpp"
 #include "sweetspot/ball/ball_file.hpp"
@@ -380,6 +381,7 @@ outer_diameter and inner_diameter (per slice, m).)");
     return py::make_tuple(result_dict(r, bat.bat()), scene.scene.ball.radius);
   });
   m.def("_max_threads", &max_threads);
+  bind_flight(m);
   m.attr("_min_slices") = min_slices;
   m.attr("_max_slices") = max_slices;
   m.def("_impacts", &run_impacts, py::arg("bat"), py::arg("scalars"), py::arg("arrays"), py::arg("threads") = 0);

@@ -58,7 +58,7 @@ double point_number(const std::string& name, const py::handle& value) {
 
 Dimension dimension_named(const std::string& name) {
   for (const Dimension d : {Dimension::length, Dimension::mass, Dimension::speed, Dimension::angular_speed,
-                            Dimension::frequency})
+                            Dimension::frequency, Dimension::angle, Dimension::temperature, Dimension::pressure})
     if (dimension_name(d) == name) return d;
   throw py::value_error("unknown dimension '" + name + "'");
 }

@@ -31,6 +31,18 @@ constexpr Unit unit_table[] = {
     {"rpm", Dimension::angular_speed, "1", std::numbers::pi / 30},
     {"Hz", Dimension::frequency, "1"},
     {"kHz", Dimension::frequency, "1000"},
+    {"rad", Dimension::angle, "1"},
+    {"deg", Dimension::angle, "1", std::numbers::pi / 180},
+    {"K", Dimension::temperature, "1"},
+    {"C", Dimension::temperature, "1", 1, 1, 273.15},
+    {"F", Dimension::temperature, "1", 5, 9, 459.67 * 5 / 9},
+    {"Pa", Dimension::pressure, "1"},
+    {"hPa", Dimension::pressure, "100"},
+    {"kPa", Dimension::pressure, "1000"},
+    {"mbar", Dimension::pressure, "100"},
+    {"atm", Dimension::pressure, "101325"},
+    {"mmHg", Dimension::pressure, "133.322387415"},   // 13.5951 g/cm^3 x 1 mm x 9.80665 m/s^2
+    {"inHg", Dimension::pressure, "3386.388640341"},  // 25.4 mmHg
 };
 
 // A unit the users of that dimension write, for the example in messages.
@@ -46,6 +58,12 @@ std::string_view example(Dimension dimension) {
       return "600 rpm";
     case Dimension::frequency:
       return "1.5 kHz";
+    case Dimension::angle:
+      return "27.5 deg";
+    case Dimension::temperature:
+      return "70 F";
+    case Dimension::pressure:
+      return "29.92 inHg";
   }
   return "";
 }
@@ -131,6 +149,12 @@ std::string_view dimension_name(Dimension dimension) {
       return "angular speed";
     case Dimension::frequency:
       return "frequency";
+    case Dimension::angle:
+      return "angle";
+    case Dimension::temperature:
+      return "temperature";
+    case Dimension::pressure:
+      return "pressure";
   }
   return "";
 }
@@ -163,13 +187,14 @@ std::optional<double> parse_quantity(std::string_view text, Dimension dimension)
   if (!unit || unit->dimension != dimension) return std::nullopt;
   double si = exact_product(number, unit->si);
   if (unit->multiplier != 1 || unit->divisor != 1) si = si * unit->multiplier / unit->divisor;
+  si += unit->offset;
   return std::isfinite(si) ? std::optional(si) : std::nullopt;
 }
 
 double in_unit(double si, const Unit& unit) {
   double factor = 0;
   std::from_chars(unit.si.data(), unit.si.data() + unit.si.size(), factor);
-  return si * unit.divisor / unit.multiplier / factor;
+  return (si - unit.offset) * unit.divisor / unit.multiplier / factor;
 }
 
 }  // namespace sweetspot

@@ -13,16 +13,18 @@
 
 namespace sweetspot {
 
-enum class Dimension { length, mass, speed, angular_speed, frequency };
+enum class Dimension { length, mass, speed, angular_speed, frequency, angle, temperature, pressure };
 
 // One unit a user may write; `si` is its value in SI units as exact decimal text, then times
-// `multiplier` and divided by `divisor` where the factor is not a decimal (rpm: pi / 30).
+// `multiplier` and divided by `divisor` where the factor is not a decimal (rpm: pi / 30), plus
+// `offset` (in SI) for the temperature scales whose zero is not absolute (deg C, deg F).
 struct Unit {
   std::string_view name;
   Dimension dimension;
   std::string_view si;
   double multiplier = 1;
   double divisor = 1;
+  double offset = 0;
 };
 
 // Every unit, SI's own first within each dimension.
@@ -31,10 +33,10 @@ std::span<const Unit> units();
 // The unit of that name (case matters: "mm" is not "Mm"), or nullptr.
 const Unit* find_unit(std::string_view name);
 
-// "length", "mass", "speed", "angular speed", "frequency".
+// "length", "mass", "speed", "angular speed", "frequency", "angle", "temperature", "pressure".
 std::string_view dimension_name(Dimension dimension);
 
-// The SI unit a plain number is read in: "m", "kg", "m/s", "rad/s", "Hz".
+// The SI unit a plain number is read in: "m", "kg", "m/s", "rad/s", "Hz", "rad", "K", "Pa".
 std::string_view si_unit(Dimension dimension);
 
 // What a reader expects, for messages: `a length (a number in m, or a string such as "28 in";

@@ -16,6 +16,7 @@ the numbers, defaults filled in, SI units as `scene_units` lists them), the bat 
 that a saved result can be computed again: `impacts_like(xr.open_dataset(path))`.
 """
 import functools
+import math
 import os
 import shutil
 import subprocess
@@ -25,12 +26,12 @@ from pathlib import Path
 
 import numpy as np
 
-from ._sweetspot import (Bat, __version__, _ball, _certify, _describe, _git_commit, _impact, _impacts,
+from ._sweetspot import (Bat, __version__, _ball, _certify, _describe, _flight, _git_commit, _impact, _impacts,
                          _max_slices, _max_threads, _min_slices, _point_arguments, _scene_record, _si,
                          _status_names)
 
-__all__ = ["Bat", "Result", "ball", "impact", "impacts", "run_study", "certify", "scene_of", "bat_of", "impacts_like",
-           "__version__"]
+__all__ = ["Bat", "Result", "ball", "impact", "impacts", "run_study", "certify", "flight", "scene_of", "bat_of",
+           "impacts_like", "__version__"]
 
 # ---- Arguments: every one checked here, so that a wrong type is a ValueError naming it (not
 # pybind11's RuntimeError "Unable to cast" or TypeError "incompatible function arguments").
@@ -274,6 +275,43 @@ def certify(bat, standard="bbcor", *, ball=None, e0=None, ball_speed=None, pivot
     scene |= {"scene_e0": result["e0"], "scene_ball_speed": result["ball_speed"], "scene_pivot": result["pivot"],
               "scene_modes": modes if isinstance(modes, str) else int(modes), "scene_theory": theory}
     return Result(result, _provenance("certification") | bat._source() | _with_units(scene))
+
+def _degrees(name, value):
+    # An angle: a plain number in deg, or a string with its unit ("0.48 rad", "27.5 deg").
+    # (rad / (pi / 180): the program's conversion, so that both give the same bits.)
+    return _real(name, value, "angle") / (math.pi / 180) if isinstance(value, str) else _real(name, value)
+
+
+def flight(speed, angle=0.0, *, direction=0.0, backspin=0.0, sidespin=0.0, height="3 ft", temperature="70 F",
+           pressure="29.92 inHg", altitude=0.0, humidity=50.0, wind_speed=0.0, wind_direction=0.0,
+           spin_decay_time=1e4, vacuum=False, samples=0.0):
+    """The batted ball's flight through the air, as `sweetspot flight --json` (docs/flight.md).
+
+    Parameters (numbers in SI, or strings with a unit such as "103 mph", "2500 rpm", "70 F"):
+    speed (m/s); angle above the horizontal and direction from centre field toward right field
+    (plain numbers in deg); backspin and sidespin (rad/s; positive sidespin curves toward left
+    field); height of the launch (m); temperature (K), pressure reduced to sea level (Pa),
+    altitude of the field (m), humidity (%), wind_speed (m/s), wind_direction (deg, the direction
+    the wind blows toward: 0 out to centre field, 180 in); spin_decay_time (s at 100 mph);
+    vacuum=True for no air; samples > 0 records the trajectory every that many seconds.
+    Returns: a dict with distance, apex (m), apex_time, hang_time (s), landing_angle (deg below the
+    horizontal), landing_speed (m/s), landing_spin (rad/s), bearing (deg), landing_x, landing_y (m), air_density (kg/m^3)
+    and, with samples, trajectory: numpy arrays t, x, y, z, vx, vy, vz."""
+    if not isinstance(vacuum, (bool, np.bool_)):
+        _refuse("vacuum", vacuum, "True or False")
+    if isinstance(humidity, str):
+        _refuse("humidity", humidity, "a relative humidity in % (a number from 0 to 100)")
+    args = {name: _real(name, value, dimension) for name, value, dimension in (
+        ("speed", speed, "speed"), ("backspin", backspin, "angular speed"), ("sidespin", sidespin, "angular speed"),
+        ("height", height, "length"), ("temperature", temperature, "temperature"), ("pressure", pressure, "pressure"),
+        ("altitude", altitude, "length"), ("humidity", humidity, None), ("wind_speed", wind_speed, "speed"),
+        ("spin_decay_time", spin_decay_time, None), ("samples", samples, None))}
+    for name, value in args.items():
+        if value is None:
+            _refuse(name, value, "a real number")
+    return _flight(angle=_degrees("angle", angle), direction=_degrees("direction", direction),
+                   wind_direction=_degrees("wind_direction", wind_direction), vacuum=bool(vacuum), **args)
+
 
 _POINT = tuple(_point_arguments())  # z, ball_speed, cm_speed, center, omega, e0, ball_mass, ...
 

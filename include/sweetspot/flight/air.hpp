@@ -1,0 +1,66 @@
+#pragma once
+// The air a batted ball flies through: its density from temperature, pressure, field elevation
+// and humidity, and the wind. Free of I/O; SI throughout.
+//
+// Density is moist air as an ideal gas, rho = (p - 0.378 e) / (R_d T) (dry air plus water vapour,
+// R_d / R_v = 0.622), with the vapour pressure e = RH e_s(T) and e_s from Buck's formula over
+// water (A. L. Buck, J. Appl. Meteor. 20, 1527 (1981), as updated in the Buck Research CR-1A
+// manual (1996)): e_s = 611.21 Pa exp((18.678 - T/234.5) T / (257.14 + T)), T in deg C. This is
+// the density of A. M. Nathan's trajectory calculator (baseball.physics.illinois.edu), which
+// writes the same law with rounded constants (1.2929 kg/m^3 at 273 K and 760 mmHg, 0.3783).
+//
+// Pressure is the barometric pressure as weather services report it, reduced to sea level; the
+// ball's own pressure is that times exp(-beta h) at the field's elevation h, beta = 1.217e-4 /m
+// (a scale height of 8.2 km), as the calculator does. Give an elevation alone and the standard
+// 101325 Pa is reduced; give a station pressure with elevation 0.
+
+#include <optional>
+#include <string>
+
+namespace sweetspot {
+
+// What is wrong with one input: its key (as a study or Python names it), its value in SI, and
+// what was expected. The command line phrases it with the value as the user wrote it.
+struct InputProblem {
+  std::string key;
+  double value = 0;
+  std::string expected;
+};
+
+// "<prefix><key> = <value>: expected <expected>", thrown as InputError.
+[[noreturn]] void refuse(const InputProblem& problem, const char* prefix);
+
+struct Air {
+  double temperature = 294.261111111111111;  // K (70 deg F, the calculator's default)
+  double pressure = 101325;                   // Pa, reduced to sea level (29.92 inHg)
+  double elevation = 0;                       // m above sea level
+  double relative_humidity = 0.5;             // 0..1
+  double wind_speed = 0;                      // m/s, horizontal, uniform
+  // deg: the direction the wind blows TOWARD, from the line home plate -> centre field, positive
+  // toward right field (the launch direction's convention): 0 blows out to centre, 180 blows in.
+  double wind_direction = 0;
+};
+
+inline constexpr double standard_pressure = 101325;                // Pa
+inline constexpr double pressure_decay_per_metre = 1.217e-4;       // beta, 1/m (the calculator's)
+inline constexpr double dry_air_gas_constant = 287.058;            // R_d, J/(kg K)
+
+// Buck's saturation vapour pressure over water (Pa) at `temperature` (K).
+double saturation_vapour_pressure(double temperature);
+
+// The pressure at the field (Pa): air.pressure exp(-beta elevation).
+double station_pressure(const Air& air);
+
+// Moist-air density (kg/m^3).
+double air_density(const Air& air);
+
+// The first thing unphysical about the air, or nothing: temperature > 0 K (and below 373.15 K,
+// where Buck's formula and outdoor air end), pressure > 0, elevation in (-1 km, 10 km), humidity
+// in [0, 1], wind speed >= 0, everything finite (keys temperature, pressure, altitude, humidity,
+// wind_speed, wind_direction).
+std::optional<InputProblem> air_problem(const Air& air);
+
+// InputError from air_problem; `prefix` starts the message ("flight: ").
+void check_air(const Air& air, const char* prefix = "");
+
+}  // namespace sweetspot

@@ -1,0 +1,39 @@
+// What a flight refuses before any work: the launch and the options (the air: air.cpp).
+#include <cmath>
+
+#include "sweetspot/flight/flight.hpp"
+
+namespace sweetspot {
+
+std::optional<InputProblem> launch_problem(const Launch& launch) {
+  if (!(launch.speed >= 0) || !std::isfinite(launch.speed))
+    return InputProblem{"speed", launch.speed, "a finite speed >= 0"};
+  if (!(launch.angle >= -90 && launch.angle <= 90))
+    return InputProblem{"angle", launch.angle, "an angle from -90 to 90 deg above the horizontal"};
+  if (!std::isfinite(launch.direction)) return InputProblem{"direction", launch.direction, "a finite angle in deg"};
+  if (!std::isfinite(launch.backspin)) return InputProblem{"backspin", launch.backspin, "a finite spin"};
+  if (!std::isfinite(launch.sidespin)) return InputProblem{"sidespin", launch.sidespin, "a finite spin"};
+  if (!(launch.height >= 0 && launch.height <= 1000))
+    return InputProblem{"height", launch.height, "a launch height from 0 to 1000 m"};
+  return std::nullopt;
+}
+
+std::optional<InputProblem> flight_options_problem(const FlightOptions& o) {
+  const auto positive = [](double x) { return x > 0 && std::isfinite(x); };
+  if (!positive(o.ball.mass)) return InputProblem{"ball_mass", o.ball.mass, "a finite mass > 0"};
+  if (!positive(o.ball.radius)) return InputProblem{"ball_radius", o.ball.radius, "a finite radius > 0"};
+  if (!positive(o.gravity)) return InputProblem{"gravity", o.gravity, "a finite acceleration > 0"};
+  if (!positive(o.tolerance)) return InputProblem{"tolerance", o.tolerance, "a finite tolerance > 0"};
+  if (!positive(o.max_time)) return InputProblem{"max_time", o.max_time, "a finite time > 0"};
+  if (!(o.sample_interval == 0 || (o.sample_interval >= 1e-3 && std::isfinite(o.sample_interval))))
+    return InputProblem{"sample_interval", o.sample_interval, "0 (no samples) or a finite time >= 0.001 s"};
+  const Aerodynamics& a = o.aerodynamics;
+  for (const auto& [key, value] : {std::pair{"cd0", a.cd0}, std::pair{"cd_spin", a.cd_spin},
+                                   std::pair{"cl0", a.cl0}, std::pair{"cl1", a.cl1}, std::pair{"cl2", a.cl2}})
+    if (!std::isfinite(value)) return InputProblem{key, value, "a finite coefficient"};
+  if (!(a.cl0 > 0) || !(a.cl1 >= 0)) return InputProblem{"cl0", a.cl0, "cl0 > 0 and cl1 >= 0 (a finite C_L)"};
+  if (!(a.spin_decay_time > 0)) return InputProblem{"spin_decay_time", a.spin_decay_time, "a time > 0 (s)"};
+  return std::nullopt;
+}
+
+}  // namespace sweetspot

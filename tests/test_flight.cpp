@@ -1,0 +1,296 @@
+// The batted ball's flight (src/flight): exact limits (the vacuum parabola, quadratic drag's
+// closed forms, symmetries), the trajectory calculator's own published case, and the command.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "sweetspot/flight/flight.hpp"
+#include "program.hpp"
+#include "refusal.hpp"
+#include "sweetspot/input_error.hpp"
+
+using namespace sweetspot;
+
+namespace {
+
+constexpr double mph = 0.44704, ft = 0.3048, rpm = std::numbers::pi / 30;
+
+FlightOptions vacuum() {
+  FlightOptions o;
+  o.drag = o.lift = false;
+  return o;
+}
+
+// Drag alone with a constant C_D (no spin): the terminal speed v_t = sqrt(g / (K cd0)).
+double terminal_speed(const Air& air, const FlightOptions& o) {
+  const double k = air_density(air) * std::numbers::pi * o.ball.radius * o.ball.radius / (2 * o.ball.mass);
+  return std::sqrt(o.gravity / (k * o.aerodynamics.cd0));
+}
+
+bool refused(const Launch& launch, const Air& air, const std::string& key) {
+  try {
+    simulate_flight(launch, air);
+  } catch (const InputError& e) {
+    INFO(e.what());
+    CHECK_THAT(e.what(), Catch::StartsWith(key + " = "));
+    return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("Without air the flight is the parabola", "[flight]") {
+  const double g = 9.80665;
+  for (const double angle : {5.0, 27.5, 45.0, 80.0})
+    for (const double height : {0.0, 0.9144}) {
+      Launch l;
+      l.speed = 45;
+      l.angle = angle;
+      l.direction = 17;
+      l.backspin = 2000 * rpm;  // spin does nothing without air
+      l.height = height;
+      const FlightResult r = simulate_flight(l, Air{}, vacuum());
+      const double th = angle * std::numbers::pi / 180;
+      const double vx = l.speed * std::cos(th), vz = l.speed * std::sin(th);
+      const double t = (vz + std::sqrt(vz * vz + 2 * g * height)) / g;
+      INFO("angle " << angle << ", height " << height);
+      CHECK(r.hang_time == Approx(t).epsilon(1e-9));
+      CHECK(r.distance == Approx(vx * t).epsilon(1e-9));
+      CHECK(r.apex == Approx(height + vz * vz / (2 * g)).epsilon(1e-9));
+      CHECK(r.apex_time == Approx(vz / g).epsilon(1e-9));
+      CHECK(r.bearing == Approx(17).epsilon(1e-9));
+      CHECK(std::tan(r.landing_angle * std::numbers::pi / 180) == Approx((g * t - vz) / vx).epsilon(1e-9));
+    }
+}
+
+TEST_CASE("A ball dropped through still air falls as quadratic drag's closed form says", "[flight]") {
+  // z(t) = h - (v_t^2 / g) ln cosh(g t / v_t): the fall from h takes (v_t / g) arccosh(exp(g h / v_t^2))
+  // and lands at v_t sqrt(1 - exp(-2 g h / v_t^2)).
+  const Air air;
+  const FlightOptions o;
+  const double vt = terminal_speed(air, o), g = o.gravity;
+  for (const double h : {2.0, 30.0, 300.0}) {
+    Launch l;
+    l.angle = -90;
+    l.height = h;
+    const FlightResult r = simulate_flight(l, air, o);
+    INFO("h " << h << " m, v_t " << vt);
+    CHECK(r.hang_time == Approx(vt / g * std::acosh(std::exp(g * h / (vt * vt)))).epsilon(1e-6));
+    CHECK(r.landing_speed == Approx(vt * std::sqrt(1 - std::exp(-2 * g * h / (vt * vt)))).epsilon(1e-6));
+    CHECK(r.apex == h);
+  }
+}
+
+TEST_CASE("The spin decays with the path through the air", "[flight]") {
+  // d(omega)/dt = -omega |u| / (tau v_ref): omega = omega0 exp(-path / (tau v_ref)). A ball dropped
+  // through still air without lift falls straight, so its path is the height it fell.
+  FlightOptions o;
+  o.lift = false;
+  o.aerodynamics.spin_decay_time = 2;
+  Launch l;
+  l.angle = -90;
+  l.height = 50;
+  l.backspin = 3000 * rpm;
+  const FlightResult r = simulate_flight(l, Air{}, o);
+  CHECK(r.landing_spin == Approx(l.backspin * std::exp(-50 / (2 * spin_decay_reference_speed))).epsilon(1e-9));
+}
+
+TEST_CASE("A ball thrown straight up through still air rises and falls as quadratic drag's closed forms say",
+          "[flight]") {
+  // Up: apex (v_t^2 / 2g) ln(1 + v0^2 / v_t^2) at (v_t / g) atan(v0 / v_t); down from there it lands
+  // at v0 v_t / sqrt(v0^2 + v_t^2).
+  const Air air;
+  const FlightOptions o;
+  const double vt = terminal_speed(air, o), g = o.gravity;
+  for (const double v0 : {10.0, 45.0}) {
+    Launch l;
+    l.speed = v0;
+    l.angle = 90;
+    l.height = 0;
+    const FlightResult r = simulate_flight(l, air, o);
+    const double apex = vt * vt / (2 * g) * std::log1p(v0 * v0 / (vt * vt));
+    const double rise = vt / g * std::atan(v0 / vt), fall = vt / g * std::acosh(std::exp(g * apex / (vt * vt)));
+    INFO("v0 " << v0);
+    CHECK(r.apex == Approx(apex).epsilon(1e-6));
+    CHECK(r.apex_time == Approx(rise).epsilon(1e-6));
+    CHECK(r.hang_time == Approx(rise + fall).epsilon(1e-6));
+    CHECK(r.landing_speed == Approx(v0 * vt / std::hypot(v0, vt)).epsilon(1e-6));
+    CHECK(r.landing_angle == Approx(90).epsilon(1e-6));
+  }
+}
+
+TEST_CASE("A ball moving with the wind falls straight through the air and drifts with the wind", "[flight]") {
+  // Launched horizontally at the wind's velocity, the air's speed past the ball is vertical: it
+  // falls as the closed form says and covers the wind speed times that time, toward the wind's
+  // direction (the direction it blows to).
+  Air air;
+  air.wind_speed = 8;
+  air.wind_direction = 30;
+  const FlightOptions o;
+  const double vt = terminal_speed(air, o), g = o.gravity, h = 20;
+  Launch l;
+  l.speed = air.wind_speed;
+  l.direction = air.wind_direction;
+  l.height = h;
+  const FlightResult r = simulate_flight(l, air, o);
+  const double t = vt / g * std::acosh(std::exp(g * h / (vt * vt)));
+  CHECK(r.hang_time == Approx(t).epsilon(1e-6));
+  CHECK(r.distance == Approx(air.wind_speed * t).epsilon(1e-6));
+  CHECK(r.bearing == Approx(30).epsilon(1e-9));
+}
+
+TEST_CASE("Sidespin curves the ball to one side and its opposite to the mirror image", "[flight]") {
+  Launch l;
+  l.speed = 100 * mph;
+  l.angle = 25;
+  l.backspin = 2000 * rpm;
+  l.sidespin = 800 * rpm;
+  const FlightResult left = simulate_flight(l, Air{});
+  l.sidespin = -l.sidespin;
+  const FlightResult right = simulate_flight(l, Air{});
+  CHECK(left.landing_x < -1);  // positive sidespin: toward left field, as in the calculator
+  CHECK(right.landing_x == Approx(-left.landing_x).epsilon(1e-9));
+  CHECK(right.landing_y == Approx(left.landing_y).epsilon(1e-9));
+  CHECK(right.hang_time == Approx(left.hang_time).epsilon(1e-9));
+}
+
+TEST_CASE("In still air the flight does not depend on its direction", "[flight]") {
+  Launch l;
+  l.speed = 100 * mph;
+  l.angle = 28;
+  l.backspin = 2200 * rpm;
+  const FlightResult centre = simulate_flight(l, Air{});
+  l.direction = -35;
+  const FlightResult pulled = simulate_flight(l, Air{});
+  CHECK(pulled.distance == Approx(centre.distance).epsilon(1e-9));
+  CHECK(pulled.apex == Approx(centre.apex).epsilon(1e-9));
+  CHECK(pulled.bearing == Approx(-35).epsilon(1e-9));
+}
+
+TEST_CASE("Backspin lifts the ball, and thinner air and a tail wind carry it farther", "[flight]") {
+  Launch l;
+  l.speed = 100 * mph;
+  l.angle = 28;
+  const FlightResult plain = simulate_flight(l, Air{});
+  l.backspin = 2500 * rpm;
+  const FlightResult spun = simulate_flight(l, Air{});
+  CHECK(spun.apex > plain.apex);
+  CHECK(spun.hang_time > plain.hang_time);
+  Air denver;
+  denver.elevation = 5280 * ft;
+  CHECK(simulate_flight(l, denver).distance > spun.distance + 5 * ft);
+  Air out;
+  out.wind_speed = 10 * mph;
+  CHECK(simulate_flight(l, out).distance > spun.distance + 10 * ft);
+}
+
+TEST_CASE("Dry air is an ideal gas and humid air the trajectory calculator's density", "[flight]") {
+  Air dry;
+  dry.relative_humidity = 0;
+  dry.temperature = 288.15;
+  CHECK(air_density(dry) == Approx(101325 / (287.058 * 288.15)).epsilon(1e-14));
+  // The calculator's own formula (pybaseball's parameters.py): 70 F, 50 %, 29.92 inHg, 15 ft.
+  Air ballpark;
+  ballpark.pressure = 29.92 * 3386.388640341;
+  ballpark.elevation = 15 * ft;
+  const double c = 70.0 - 32, celsius = c * 5 / 9;
+  const double svp = 4.5841 * std::exp((18.687 - celsius / 234.5) * celsius / (257.14 + celsius));
+  const double calculator =
+      1.2929 * (273 / (celsius + 273)) * (29.92 * 1000 / 39.37 * std::exp(-1.217e-4 * 15 * ft) - 0.3783 * 50 * svp / 100) / 760;
+  CHECK(air_density(ballpark) == Approx(calculator).epsilon(1e-3));
+  CHECK(air_density(ballpark) < air_density(Air{.relative_humidity = 0}));  // water vapour is lighter
+}
+
+TEST_CASE("The trajectory calculator's published fly ball: 103 mph, 27.5 deg, 2500 rpm at 70 F", "[flight]") {
+  // The calculator's trajectory for this case (TrajectoryCalculator-new-3D.xlsx, as published in
+  // the R package mosaicCalc, data set Fly_ball: 5.125 oz, 9.125 in, 70 F, 50 %, 29.92 inHg, 15 ft,
+  // starting 2 ft in front of the plate and 3 ft up): apex 92.04 ft at 2.64 s, and the last point
+  // y = 420.95 ft, z = 0.57 ft at 5.51 s, i.e. landing about 421.5 ft from the plate at 5.52 s.
+  Launch l;
+  l.speed = 103 * mph;
+  l.angle = 27.5;
+  l.backspin = 2500 * rpm;
+  l.height = 3 * ft;
+  Air air;
+  air.pressure = 29.92 * 3386.388640341;
+  air.elevation = 15 * ft;
+  const FlightResult r = simulate_flight(l, air);
+  CHECK((r.distance + 2 * ft) / ft == Approx(421.5).epsilon(0.005));
+  CHECK(r.apex / ft == Approx(92.04).epsilon(0.005));
+  CHECK(r.apex_time == Approx(2.64).epsilon(0.005));
+  CHECK(r.hang_time == Approx(5.52).epsilon(0.005));
+}
+
+TEST_CASE("The trajectory is sampled from launch to landing on request", "[flight]") {
+  Launch l;
+  l.speed = 40;
+  l.angle = 30;
+  FlightOptions o;
+  o.sample_interval = 0.1;
+  const FlightResult r = simulate_flight(l, Air{}, o);
+  REQUIRE(r.samples.size() >= 3);
+  CHECK(r.samples.front().t == 0);
+  CHECK(r.samples.front().z == l.height);
+  CHECK(r.samples.back().t == r.hang_time);
+  CHECK(r.samples.back().z == 0);
+  CHECK(std::hypot(r.samples.back().x, r.samples.back().y) == r.distance);
+  for (std::size_t i = 1; i + 1 < r.samples.size(); ++i) CHECK(r.samples[i].t == Approx(0.1 * i).epsilon(1e-12));
+  CHECK(simulate_flight(l, Air{}).samples.empty());
+}
+
+TEST_CASE("A flight refuses unphysical air and launches before any work", "[flight]") {
+  const double nan = std::nan("");
+  const Launch ok{.speed = 40, .angle = 30};
+  CHECK(refused(Launch{.speed = -1}, Air{}, "speed"));
+  CHECK(refused(Launch{.speed = nan}, Air{}, "speed"));
+  CHECK(refused(Launch{.speed = 40, .angle = 95}, Air{}, "angle"));
+  CHECK(refused(Launch{.speed = 40, .height = -1}, Air{}, "height"));
+  CHECK(refused(ok, Air{.temperature = 0}, "temperature"));
+  CHECK(refused(ok, Air{.temperature = nan}, "temperature"));
+  CHECK(refused(ok, Air{.pressure = -100}, "pressure"));
+  CHECK(refused(ok, Air{.relative_humidity = 1.5}, "humidity"));
+  CHECK(refused(ok, Air{.relative_humidity = -0.1}, "humidity"));
+  CHECK(refused(ok, Air{.wind_speed = -3}, "wind_speed"));
+  CHECK(refused(ok, Air{.wind_direction = nan}, "wind_direction"));
+  FlightOptions tiny;
+  tiny.sample_interval = 1e-9;  // billions of samples: refused, not a memory exhausted
+  CHECK_THROWS_AS(simulate_flight(ok, Air{}, tiny), InputError);
+}
+
+// ---- The command: sweetspot flight.
+
+TEST_CASE("sweetspot flight prints distance, apex, hang time and landing angle in m and ft", "[flight][program]") {
+  const ProgramRun run = run_program("flight --speed 103mph --angle 27.5 --backspin 2500rpm");
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  for (const char* line : {"distance ", " ft)", "apex ", "hang time ", "landing angle ", "air density "})
+    CHECK_THAT(run.output, Catch::Contains(line));
+}
+
+TEST_CASE("sweetspot flight --vacuum --json is the parabola", "[flight][program]") {
+  const ProgramRun run = run_program("flight --speed 40 --angle 30 --height 0 --vacuum --json");
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  const double g = 9.80665, th = std::numbers::pi / 6;
+  const std::string key = "\"distance\": ";
+  const std::size_t at = run.output.find(key);
+  REQUIRE(at != std::string::npos);
+  CHECK(std::stod(run.output.substr(at + key.size())) == Approx(1600 * std::sin(2 * th) / g).epsilon(1e-9));
+}
+
+TEST_CASE("sweetspot flight refuses unphysical air and launches in one line, as written", "[flight][program]") {
+  require_refused(run_program("flight --speed -3"), {"--speed \"-3\"", "speed >= 0"});
+  require_refused(run_program("flight --speed nan"), {"--speed \"nan\""});
+  require_refused(run_program("flight --speed 40 --humidity 150"), {"--humidity \"150\"", "0 to 100"});
+  require_refused(run_program("flight --speed 40 --humidity -1"), {"--humidity \"-1\""});
+  require_refused(run_program("flight --speed 40 --pressure -1inHg"), {"--pressure \"-1inHg\"", "pressure > 0"});
+  require_refused(run_program("flight --speed 40 --temperature -500F"), {"--temperature \"-500F\"", "above 0 K"});
+  require_refused(run_program("flight --speed 40 --temperature 0"), {"--temperature \"0\""});
+  require_refused(run_program("flight --speed 40 --temperature 70mph"), {"--temperature \"70mph\"", "units K, C, F"});
+  require_refused(run_program("flight --speed 40 --angle 100"), {"--angle \"100\"", "-90 to 90"});
+  require_refused(run_program("flight --speed 40 --wind-direction nan"), {"--wind-direction \"nan\""});
+  require_refused(run_program("flight --speed 40 --spin-decay-time 0"), {"--spin-decay-time"});
+  require_refused(run_program("flight --angle 30"), {"--speed"});
+}
