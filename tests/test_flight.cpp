@@ -4,8 +4,14 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "sweetspot/flight/flight.hpp"
+#include "study_dir.hpp"
+#include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/impact/impact.hpp"
+#include "sweetspot/study/study_point.hpp"
 #include "program.hpp"
 #include "refusal.hpp"
 #include "sweetspot/input_error.hpp"
@@ -293,4 +299,49 @@ TEST_CASE("sweetspot flight refuses unphysical air and launches in one line, as 
   require_refused(run_program("flight --speed 40 --wind-direction nan"), {"--wind-direction \"nan\""});
   require_refused(run_program("flight --speed 40 --spin-decay-time 0"), {"--spin-decay-time"});
   require_refused(run_program("flight --angle 30"), {"--speed"});
+}
+
+TEST_CASE("A study's distance is the flight of each impact's launch, in the study's air", "[flight][study]") {
+  // Each point's launch (speed, angle, backspin from the oblique impact) flown by the flight
+  // module in the air the keys give: the same numbers but for the rounding of rpm and deg F.
+  const StudyDir d(1, "friction = 0.5\nundercut = \"1 in\"\nswing_tilt = 10\ntemperature = \"90 F\"\n"
+                      "altitude = 1600\nhumidity = 20\nwind_speed = 5\nwind_direction = 180\n");
+  const auto file = d.dir.write("flight.toml", file_text(d.study) + "[output]\nvariables = [\"distance\", \"apex\", "
+                                                                       "\"hang_time\", \"landing_angle\"]\n");
+  const Study study = load_study(file);
+  REQUIRE(study.flight);
+  for (std::size_t i = 0; i < study.points(); ++i) {
+    const GridPoint p = grid_point(study, i);
+    const ModalBasis basis = compute_modes(load_bat(source_path("studies/bats/") + (p.bat == 0 ? "r161.toml" : "torpedo.toml")),
+                                           BeamTheory::timoshenko, ModeRequest::lowest(18));
+    const ImpactResult r = simulate_point(p, &basis);
+    REQUIRE(r.status == CollisionStatus::ok);
+    Launch launch;
+    launch.speed = r.launch.speed;
+    launch.angle = r.launch.angle;
+    launch.backspin = r.launch.backspin * 2 * std::numbers::pi / 60;
+    Air air;
+    air.temperature = (90 - 32) / 1.8 + 273.15;
+    air.elevation = 1600;
+    air.relative_humidity = 0.2;
+    air.wind_speed = 5;
+    air.wind_direction = 180;
+    const FlightResult f = simulate_flight(launch, air);
+    CHECK(r.launch.angle > 10);  // the undercut lifts it above the swing's tilt
+    CHECK(r.distance == Approx(f.distance).epsilon(1e-12));
+    CHECK(r.apex == Approx(f.apex).epsilon(1e-12));
+    CHECK(r.hang_time == Approx(f.hang_time).epsilon(1e-12));
+    CHECK(r.landing_angle == Approx(f.landing_angle).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("A study refuses air that is not air, naming the key", "[flight][study]") {
+  for (const auto& [scene, words] : std::vector<std::pair<std::string, std::string>>{
+           {"humidity = 150\n", "humidity"}, {"temperature = -5\n", "temperature"}, {"pressure = 0\n", "pressure"},
+           {"altitude = 20000\n", "altitude"}, {"wind_speed = -1\n", "wind_speed"}}) {
+    const StudyDir d(1, scene);
+    const std::string refusal = study_refusal(d.study);
+    INFO(refusal);
+    CHECK_THAT(refusal, Catch::Contains(words) && Catch::Contains("study.toml"));
+  }
 }

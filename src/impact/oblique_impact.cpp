@@ -84,7 +84,7 @@ ImpactResult missed(const ImpactScene& scene, std::string reason) {
 
 }  // namespace
 
-Launch head_on_launch(double vf) { return {vf, 0.0, 0.0, 0.0}; }
+BallLaunch head_on_launch(double vf) { return {vf, 0.0, 0.0, 0.0}; }
 
 double contact_reach(const ModalBasis& basis, const ImpactScene& scene) {
   return scene.ball.radius + basis.section_radius_at(scene.z);
@@ -143,7 +143,7 @@ ImpactResult simulate_oblique_impact(const ModalBasis& basis, const ImpactScene&
 
   // The launch: the exit velocity (normal r.vf along the line of centres, v_t across it) in the
   // vertical plane; the line of centres leans swing_tilt + theta above the horizontal.
-  Launch& launch = r.launch;
+  BallLaunch& launch = r.launch;
   launch.speed = std::hypot(r.vf, v_t);
   launch.angle = o.swing_tilt + std::asin(line.sin) / degree + std::atan2(v_t, r.vf) / degree;
   launch.backspin = t.final.ball_spin / rpm;

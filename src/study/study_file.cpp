@@ -119,6 +119,11 @@ Study load(const fs::path& file, std::string text, const SampledKeys* sampled) {
   study.base = base.scene;
   study.omega_tau = base.omega_tau;
   study.swing_exponent = base.swing_exponent;
+  study.air = base.air;
+  // The flight costs about an impact: only when one of its outputs is asked.
+  study.flight = std::ranges::any_of(study.outputs, [](const std::string& name) {
+    return name == "distance" || name == "apex" || name == "hang_time" || name == "landing_angle";
+  });
   study.standard = base.standard;
   study.rig_e0 = base.rig_e0;
   study.rig_ball_speed = base.rig_ball_speed;

@@ -38,6 +38,8 @@ GridPoint grid_point(const Study& study, std::size_t index) {
   p.scene = study.base;
   p.omega_tau = study.omega_tau;
   p.swing_exponent = study.swing_exponent;
+  p.air = study.air;
+  p.flight = study.flight;
   p.standard = study.standard;
   p.rig_e0 = study.rig_e0;
   p.rig_ball_speed = study.rig_ball_speed;

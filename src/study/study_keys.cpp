@@ -34,6 +34,10 @@ bool ball_cor(double x) { return in_range(ball_cor_range, x); }
 bool swing_exponent(double x) { return valid_swing_exponent(x); }
 bool mode_count(double x) { return x >= 0 && x <= 1e6; }    // "all" and "auto" are not checked
 bool total_accuracy(double x) { return x >= min_accuracy && x <= max_accuracy; }
+bool air_temperature(double x) { return x > 0 && x < 373.15; }  // as flight/air.hpp's air_problem
+bool elevation(double x) { return x > -1000 && x < 10000; }
+bool humidity(double x) { return x >= 0 && x <= 100; }
+bool non_negative(double x) { return std::isfinite(x) && x >= 0; }
 
 constexpr KeySpec keys[] = {
     {"bat", Type::bat, "a bat file path (relative to the study file)", any,
@@ -100,6 +104,19 @@ constexpr KeySpec keys[] = {
     // The impact in the plane of the swing (oblique_impact.hpp); a miss is a point's status.
     {"undercut", Type::number, undercut_expected, valid_undercut,
      [](GridPoint& p, double x) { p.scene.oblique.undercut = x; }, impact, 0, true, Dimension::length},
+    // The air the batted ball flies through (flight/air.hpp), for the flight's outputs.
+    {"temperature", Type::number, "an absolute temperature above 0 K and below 373.15 K", air_temperature,
+     [](GridPoint& p, double x) { p.air.temperature = x; }, impact, 0, true, Dimension::temperature},
+    {"pressure", Type::number, "a finite pressure > 0 (reduced to sea level)", positive,
+     [](GridPoint& p, double x) { p.air.pressure = x; }, impact, 0, true, Dimension::pressure},
+    {"altitude", Type::number, "an elevation between -1000 m and 10000 m", elevation,
+     [](GridPoint& p, double x) { p.air.elevation = x; }, impact, 0, true, Dimension::length},
+    {"humidity", Type::number, "a relative humidity from 0 to 100 (%)", humidity,
+     [](GridPoint& p, double x) { p.air.relative_humidity = x / 100; }, impact},
+    {"wind_speed", Type::number, "a finite speed >= 0", non_negative,
+     [](GridPoint& p, double x) { p.air.wind_speed = x; }, impact, 0, true, Dimension::speed},
+    {"wind_direction", Type::number, "a finite angle (deg, where the wind blows toward; 0 out to centre field)", finite,
+     [](GridPoint& p, double x) { p.air.wind_direction = x; }, impact, 0, true, Dimension::angle},
     {"swing_tilt", Type::number, swing_tilt_expected, valid_swing_tilt,
      [](GridPoint& p, double x) { p.scene.oblique.swing_tilt = x; }, impact},
     {"pitch_spin", Type::number, pitch_spin_expected, valid_pitch_spin,
@@ -146,6 +163,10 @@ constexpr OutputSpec outputs[] = {
     {"bbs_linear", impact, 0},
     {"e_eff", ball_kinds, ball_kinds},
     {"launch_angle", impact, 0},
+    {"distance", impact, 0},
+    {"apex", impact, 0},
+    {"hang_time", impact, 0},
+    {"landing_angle", impact, 0},
     {"backspin", impact, 0},
     {"sidespin", impact, 0},
     {"e_a", bat_kinds, 0},

@@ -1,9 +1,11 @@
 #include "sweetspot/study/study_point.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <sstream>
 #include <stdexcept>
 
+#include "sweetspot/flight/flight.hpp"
 #include "sweetspot/impact/certification.hpp"
 #include "sweetspot/impact/standards.hpp"
 #include "sweetspot/impact/toy_model.hpp"
@@ -39,6 +41,25 @@ ImpactResult certification_point(const GridPoint& point) {
   return r;
 }
 
+// The ball's launch as the flight takes it: the exit velocity in the plane of the swing, toward
+// centre field, from the calculator's 3 ft above the plate; spins in rad/s.
+Launch launch_of(const BallLaunch& ball) {
+  constexpr double rad_per_s_per_rpm = 2 * std::numbers::pi / 60;
+  Launch launch;
+  launch.speed = ball.speed;
+  launch.angle = ball.angle;
+  launch.backspin = ball.backspin * rad_per_s_per_rpm;
+  launch.sidespin = ball.sidespin * rad_per_s_per_rpm;
+  return launch;
+}
+
+// The batted ball's flight from the impact's launch, in `air` (the study's keys: checked). A
+// ball driven into the ground at once has no flight: distance 0.
+void add_flight(const Air& air, ImpactResult& r) {
+  const FlightResult f = simulate_flight(launch_of(r.launch), air);
+  r.distance = f.distance, r.apex = f.apex, r.hang_time = f.hang_time, r.landing_angle = f.landing_angle;
+}
+
 }  // namespace
 
 void flag_untrusted_modes_error(const ImpactScene& scene, ImpactResult& r) {
@@ -67,6 +88,7 @@ ImpactResult simulate_point(const GridPoint& point, const ModalBasis* basis) {
   if (!basis) throw std::invalid_argument("simulate_point: an impact point needs its bat's modal basis");
   ImpactResult r = simulate_impact(*basis, point.scene);
   flag_untrusted_modes_error(point.scene, r);
+  if (point.flight && r.status == CollisionStatus::ok) add_flight(point.air, r);
   return r;
 }
 

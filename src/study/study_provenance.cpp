@@ -67,6 +67,12 @@ void add_scene_key(const Study& study, const std::string& key, SceneAttributes& 
   if (key == "e_a_speed") return out.number(key, s.e_a_speed);
   if (key == "undercut") return out.number(key, s.oblique.undercut);
   if (key == "swing_tilt") return out.number(key, s.oblique.swing_tilt);
+  if (key == "temperature") return out.number(key, study.air.temperature);
+  if (key == "pressure") return out.number(key, study.air.pressure);
+  if (key == "altitude") return out.number(key, study.air.elevation);
+  if (key == "humidity") return out.number(key, 100 * study.air.relative_humidity);
+  if (key == "wind_speed") return out.number(key, study.air.wind_speed);
+  if (key == "wind_direction") return out.number(key, study.air.wind_direction);
   if (key == "pitch_spin") return out.number(key, s.oblique.pitch_spin);
   if (key == "friction") return out.number(key, s.oblique.friction);
   if (key == "standard") return out.text(key, standards()[study.standard].name);

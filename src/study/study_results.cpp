@@ -35,6 +35,16 @@ const std::map<std::string, Description>& descriptions() {
       {"e_a_speed", {"m/s", "ball speed at which e_A is taken for bbs_linear"}},
       {"e_eff", {"1", "effective coefficient of restitution"}},
       {"launch_angle", {"degree", "launch angle of the ball above the horizontal"}},
+      {"distance", {"m", "the batted ball's carry: from home plate to where it lands (flight.md)"}},
+      {"apex", {"m", "the batted ball's greatest height above the ground"}},
+      {"hang_time", {"s", "the batted ball's time in the air"}},
+      {"landing_angle", {"degree", "angle of the batted ball's path below the horizontal where it lands"}},
+      {"temperature", {"K", "air temperature"}},
+      {"pressure", {"Pa", "barometric pressure, reduced to sea level"}},
+      {"altitude", {"m", "elevation of the field above sea level"}},
+      {"humidity", {"percent", "relative humidity of the air"}},
+      {"wind_speed", {"m/s", "wind speed, horizontal"}},
+      {"wind_direction", {"degree", "where the wind blows toward: 0 out to centre field, positive toward right field"}},
       {"backspin", {"rpm", "backspin of the ball as it leaves the bat (negative: topspin)"}},
       {"sidespin", {"rpm", "sidespin of the ball as it leaves the bat (0 in the plane of the swing)"}},
       {"undercut", {"m", "offset of the ball's centre above the bat's axis (negative: below)"}},
@@ -188,6 +198,10 @@ double scalar_value(const ImpactResult& r, const std::string& name) {
   if (name == "vf_van_zandt") return r.vf_van_zandt;
   if (name == "e_eff") return r.e_eff;
   if (name == "launch_angle") return r.launch.angle;
+  if (name == "distance") return r.distance;
+  if (name == "apex") return r.apex;
+  if (name == "hang_time") return r.hang_time;
+  if (name == "landing_angle") return r.landing_angle;
   if (name == "backspin") return r.launch.backspin;
   if (name == "sidespin") return r.launch.sidespin;
   if (name == "e_a") return r.rig.e_a;

@@ -43,7 +43,7 @@ struct ImpactEnergy {
 
 // The ball as it leaves the bat: what its flight starts from (docs/oblique.md). NaN where there
 // was no collision.
-struct Launch {
+struct BallLaunch {
   double speed = std::numeric_limits<double>::quiet_NaN();     // m/s, the exit velocity's magnitude
   double angle = std::numeric_limits<double>::quiet_NaN();     // degrees above the horizontal
   double backspin = std::numeric_limits<double>::quiet_NaN();  // rpm, positive lifts the ball
@@ -85,7 +85,13 @@ struct ImpactResult {
   RigMeasures rig;
   int certified = -1;  // a certification study's point: 1 when the bat passes every rule, else 0
   ImpactEnergy energy;
-  Launch launch;  // speed, angle and spins the ball leaves with (every collision of a bat)
+  BallLaunch launch;  // speed, angle and spins the ball leaves with (every collision of a bat)
+  // Its flight from that launch (flight.hpp), where a study asks it: m, m, s, degrees below the
+  // horizontal. NaN otherwise.
+  double distance = std::numeric_limits<double>::quiet_NaN();
+  double apex = std::numeric_limits<double>::quiet_NaN();
+  double hang_time = std::numeric_limits<double>::quiet_NaN();
+  double landing_angle = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> mode_energy;  // J per kept vibrational mode (of the held bat when pivoted)
   std::vector<int> modes_kept;      // vibrational mode numbers kept (1 = the first)
   double modes_error = 0;           // modes = auto: estimated relative vf error of the dropped ones

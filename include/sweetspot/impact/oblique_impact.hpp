@@ -28,7 +28,7 @@
 namespace sweetspot {
 
 // The launch of a head-on impact: vf along the swing's line (tilt 0), no spin.
-Launch head_on_launch(double vf);
+BallLaunch head_on_launch(double vf);
 
 // R + R_bat(z): how far the ball's centre may lie off the bat's axis and still touch it.
 double contact_reach(const ModalBasis& basis, const ImpactScene& scene);

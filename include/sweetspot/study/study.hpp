@@ -67,6 +67,7 @@
 #include <string_view>
 #include <vector>
 
+#include "sweetspot/flight/air.hpp"
 #include "sweetspot/bat/bat_design.hpp"
 #include "sweetspot/bat/bat_file.hpp"
 #include "sweetspot/bat/modes.hpp"
@@ -131,6 +132,8 @@ struct Study {
   ImpactScene base;                  // impact; wall: its ball, ball_speed and integrator
   double omega_tau = 0;              // toy
   double swing_exponent = default_swing_exponent;  // equal effort, unless an axis
+  Air air;                                         // the batted ball's, unless an axis
+  bool flight = false;                             // a flight output is asked
   std::size_t standard = 0;                        // certification: its standard, and the rig's
   double rig_e0 = std::numeric_limits<double>::quiet_NaN();          // e0 and ball speed where
   double rig_ball_speed = std::numeric_limits<double>::quiet_NaN();  // the study overrides them
@@ -188,6 +191,10 @@ struct GridPoint {
   const BatDesign* design_spec = nullptr;
   int slices = 0;       // 0: the profile's own
   BeamTheory theory = BeamTheory::timoshenko;
+  // The batted ball's flight from the impact's launch (flight.hpp), computed only when a flight
+  // output is asked, in this air.
+  bool flight = false;
+  Air air;
   std::vector<std::size_t> coords;  // one per axis
 };
 
