@@ -338,7 +338,8 @@ TEST_CASE("A study's distance is the flight of each impact's launch, in the stud
 TEST_CASE("A study refuses air that is not air, naming the key", "[flight][study]") {
   for (const auto& [scene, words] : std::vector<std::pair<std::string, std::string>>{
            {"humidity = 150\n", "humidity"}, {"temperature = -5\n", "temperature"}, {"pressure = 0\n", "pressure"},
-           {"altitude = 20000\n", "altitude"}, {"wind_speed = -1\n", "wind_speed"}}) {
+           {"altitude = 20000\n", "altitude"}, {"wind_speed = -1\n", "wind_speed"},
+           {"[output]\nsweet_spot_of = \"carry\"\n", "sweet_spot_of"}}) {
     const StudyDir d(1, scene);
     const std::string refusal = study_refusal(d.study);
     INFO(refusal);

@@ -84,6 +84,11 @@ Study load(const fs::path& file, std::string text, const SampledKeys* sampled) {
   if (study.kind == StudyKind::wall) check_wall_speeds(s), check_history_samples(s);
   study.outputs = read_outputs(top, doc, s, study.kind);
   study.sweet_spot_fraction = read_sweet_spot_fraction(top, doc);
+  study.sweet_spot_of = read_sweet_spot_of(top, doc);
+  // The sweet spot of the carry needs the carry at every point.
+  if (study.sweet_spot_of == "distance" && !std::ranges::count(study.outputs, "distance") &&
+      std::ranges::any_of(study.outputs, [](const std::string& o) { return o.starts_with("sweet_spot_"); }))
+    study.outputs.push_back("distance");
 
   GridPoint base;
   // The library's defaults (exact modal stepping, modes = auto: README, "Numerics"), or N2000's

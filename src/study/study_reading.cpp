@@ -410,7 +410,7 @@ bool every_point_pivoted(const Settings& s) {
 std::vector<std::string> read_outputs(const Where& top, const toml::table& doc, const Settings& s, StudyKind kind) {
   const toml::table* table = subtable(top, doc, "output");
   const Where section{top.file, "output", 0};
-  if (table) reject_unknown(section, *table, {"variables", "sweet_spot_fraction"});
+  if (table) reject_unknown(section, *table, {"variables", "sweet_spot_fraction", "sweet_spot_of"});
   if (!table || !table->contains("variables")) return default_outputs(kind);
   const toml::node& node = *table->get("variables");
   const Where at = section.child("variables", node);
@@ -445,6 +445,17 @@ std::vector<std::string> read_outputs(const Where& top, const toml::table& doc, 
       !std::ranges::count(outputs, "vf"))
     outputs.insert(outputs.begin(), "vf");
   return outputs;
+}
+
+std::string read_sweet_spot_of(const Where& top, const toml::table& doc) {
+  const toml::table* output = doc.get_as<toml::table>("output");
+  const toml::node* node = output ? output->get("sweet_spot_of") : nullptr;
+  if (!node) return Study{}.sweet_spot_of;
+  const std::optional<std::string> of = node->value<std::string>();
+  if (!of || (*of != "vf" && *of != "distance"))
+    reject(Where{top.file, "output", 0}.child("sweet_spot_of", *node), describe(*node),
+           "expected \"vf\" (the exit speed, the default) or \"distance\" (the flight's carry)");
+  return *of;
 }
 
 double read_sweet_spot_fraction(const Where& top, const toml::table& doc) {

@@ -440,7 +440,7 @@ void add_sweet_spots(const Study& study, const OutputLayout& layout, const std::
   if (!asked("sweet_spot_z") && !asked("sweet_spot_vf") && !asked("sweet_spot_width")) return;
   const std::size_t zk = static_cast<std::size_t>(std::ranges::find(study.axes, "z", &Axis::name) - study.axes.begin());
   const Axis& z = study.axes[zk];
-  const int vf = layout.offsets[std::ranges::find(layout.names, "vf") - layout.names.begin()];
+  const int vf = layout.offsets[std::ranges::find(layout.names, study.sweet_spot_of) - layout.names.begin()];
   std::size_t inner = 1;  // points between neighbours along z: the axes after it
   for (std::size_t k = zk + 1; k < study.axes.size(); ++k) inner *= study.axes[k].size();
   const std::size_t lines = study.points() / z.size();
@@ -461,10 +461,13 @@ void add_sweet_spots(const Study& study, const OutputLayout& layout, const std::
   for (const Axis& axis : study.axes)
     if (axis.name != "z") dims.push_back(dataset_name(axis.name));
   for (auto [name, values] : {std::pair{"sweet_spot_z", &at}, {"sweet_spot_vf", &peak}, {"sweet_spot_width", &width}})
-    if (asked(name)) d.variables.push_back(output_variable(name, dims, std::move(*values)));
+    if (asked(name))  // the carry's peak is a distance
+      d.variables.push_back(output_variable(name, dims, std::move(*values),
+                                            study.sweet_spot_of == "distance" && values == &peak ? "m" : nullptr));
   std::ostringstream fraction;
   fraction << study.sweet_spot_fraction;
   d.variables.back().text_attributes.push_back({"sweet_spot_fraction", fraction.str()});
+  d.variables.back().text_attributes.push_back({"sweet_spot_of", study.sweet_spot_of});
 }
 
 }  // namespace

@@ -87,6 +87,8 @@ StudyKind read_kind(const Where& top, const toml::table& doc);
 std::vector<Setting> read_settings(const Where& top, const toml::table& doc, std::string_view section, StudyKind kind);
 std::vector<std::string> read_outputs(const Where& top, const toml::table& doc, const Settings& s, StudyKind kind);
 double read_sweet_spot_fraction(const Where& top, const toml::table& doc);
+// [output] sweet_spot_of: "vf" (the default) or "distance".
+std::string read_sweet_spot_of(const Where& top, const toml::table& doc);
 
 // ---- Checks across keys (study_checks.cpp) ----
 void check_grid_size(const Settings& s, const Where& top);

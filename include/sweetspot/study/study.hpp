@@ -44,6 +44,8 @@
 //            sweet_spot_z, sweet_spot_vf, sweet_spot_width: v_f reduced along a z axis of at least
 //            3 points (sweet_spot.hpp), over the other axes; vf is then stored too.
 //            sweet_spot_fraction (default 0.01): how near the peak v_f the sweet spot's zone is.
+//            sweet_spot_of (default "vf"): "distance" reduces the flight's carry instead, which
+//            is then stored too.
 //            Always, over the bat dimensions: what a designer checks of each bat (bat_properties.hpp).
 //            "mode_energy" adds a mode dimension of length base.vibrational_modes, so it needs
 //            one mode count >= 1 for the whole study: modes a number in [scene] (or 18 under
@@ -141,6 +143,7 @@ struct Study {
   std::vector<Axis> axes;            // in the order written
   std::vector<std::string> outputs;  // in the order written
   double sweet_spot_fraction = 0.01;  // [output]: the sweet spot's zone is within this of the peak vf
+  std::string sweet_spot_of = "vf";   // [output]: what the sweet spot reduces: "vf" or "distance"
   // An uncertainty study (sweetspot/uncertainty/): the keys drawn from distributions, each with
   // its value in every sample (labels empty). The study's first axis is then `sample` (0, 1, ...),
   // along which they all move together; empty for any other study.
