@@ -19,7 +19,9 @@
 #include "program.hpp"
 #include "refusal.hpp"
 #include "sweetspot/bat/bat_design_text.hpp"
+#include "sweetspot/impact/batted_flight.hpp"
 #include "sweetspot/impact/certification.hpp"
+#include "sweetspot/impact/equal_effort.hpp"
 #include "sweetspot/impact/formulas.hpp"
 #include "sweetspot/optimize/optimizer.hpp"
 #include "sweetspot/study/journal.hpp"
@@ -454,6 +456,42 @@ TEST_CASE("optimize at a stated accuracy scores each design as certify --accurac
   require_refused(refused("accuracy = 0"), {"model.accuracy", "1e-7 to 0.1"});
   require_refused(refused("accuracy = 1e-3\nslices = 100"), {"model.accuracy", "slices or accuracy"});
   require_refused(refused("modes = 5\naccuracy = 1e-3"), {"model.accuracy", "fixed number of modes"});
+}
+
+TEST_CASE("optimize's peak_distance is the longest flight of the scan's impacts", "[optimize]") {
+  TempDir dir;
+  const std::string problem_text =
+      "bat = \"" + maple + "\"\n[free]\nbarrel_diameter = { min = 0.0603, max = 0.0667 }\n"
+      "[player]\ncenter = 0.09\nomega = 51\nball_speed = 40\nundercut = \"0.5 in\"\nswing_tilt = 10\n"
+      "friction = 0.5\n[objective]\nmaximize = \"peak_distance\"\nz = { start = 0.60, stop = 0.80, step = 0.02 }\n";
+  const OptimizationProblem problem = load_optimization(dir.write("opt.toml", problem_text));
+  const DesignEvaluation e = evaluate_design(problem, {0.0655}, serial_map);
+  REQUIRE(e.status == EvaluationStatus::ok);
+  // Each scan point's impact flown in the calculator's air: the objective is their largest, or
+  // more where the golden section finds the peak between them.
+  const BatDesign design = design_at(problem, {0.0655});
+  const Bat bat = build_bat(design);
+  const ModalBasis basis = compute_modes(bat, BeamTheory::timoshenko);
+  ImpactScene scene;
+  scene.ball = problem.player.ball;
+  scene.ball_speed = problem.player.ball_speed;
+  scene.swing = equal_effort_swing(problem.player.swing, problem.player.reference_moi,
+                                   design_mass_properties(design).moment_of_inertia_about(0), problem.player.swing_exponent);
+  scene.oblique = problem.player.oblique;
+  double longest = 0;
+  for (double z = 0.60; z < 0.805; z += 0.02) {
+    scene.z = z;
+    const ImpactResult r = simulate_impact(basis, scene);
+    REQUIRE(r.status == CollisionStatus::ok);
+    CHECK(r.launch.angle > 10);  // the undercut lifts the ball above the swing's tilt
+    longest = std::max(longest, batted_flight(r.launch, Air{}).distance);
+  }
+  CHECK(e.objective >= longest * (1 - 1e-4));  // auto modes' tolerance against all modes here
+  CHECK(e.objective <= longest * 1.02);        // the peak between points lies near the best one
+  const auto bad = dir.write("bad.toml", std::string(problem_text).replace(problem_text.find("friction = 0.5"), 14,
+                                                                            "friction = -1"));
+  require_refused(run_program("optimize '" + bad.string() + "' -o '" + (dir.path / "bad.h5").string() + "'"),
+                  {"player.friction", "-1"});
 }
 
 TEST_CASE("optimize takes a lock on its best bat file, which outputs of one stem share", "[optimize][program]") {

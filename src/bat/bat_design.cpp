@@ -240,4 +240,6 @@ MassProperties design_mass_properties(const BatDesign& design) {
   return mass_properties(design_profile(design), design.length, design.material.density);
 }
 
+double largest_outer_diameter(const BatDesign& design) { return std::ranges::max(design_profile(design).outer); }
+
 }  // namespace sweetspot

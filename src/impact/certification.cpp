@@ -25,11 +25,6 @@ namespace {
 double scan_start(const BarrelScan& scan, double length) { return length - scan.far_from_end; }
 double scan_end(const BarrelScan& scan, double length) { return length - scan.near_end; }
 
-double largest_outer_diameter(const BatDesign& design) {
-  const Profile profile = design_profile(design);
-  return *std::ranges::max_element(profile.outer);
-}
-
 // The modes the scan's hits ask with `auto`: the widest auto_mode_request over its points (as an
 // optimisation's design_modes asks) times held_reach; or the lowest `count`. The held bat's modes
 // are taken over the solved ones, and converge more slowly than the free ones (the pivot's

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "sweetspot/impact/bat_test_rig.hpp"
+#include "sweetspot/impact/batted_flight.hpp"
 #include "sweetspot/impact/equal_effort.hpp"
 #include "sweetspot/impact/error_estimates.hpp"
 #include "sweetspot/impact/impact.hpp"
@@ -93,6 +94,16 @@ double batted_ball_speed(const ModalBasis& basis, ImpactScene scene, double z) {
   return r.vf;
 }
 
+// The batted ball's carry from the impact at z in the trajectory calculator's air (flight.hpp).
+double carry(const ModalBasis& basis, ImpactScene scene, double z) {
+  scene.z = z;
+  const ImpactResult r = simulate_impact(basis, scene);
+  if (r.status != CollisionStatus::ok)
+    throw std::runtime_error(point_name("the impact", z) + " ended " + to_string(r.status) +
+                             (r.message.empty() ? "" : ": " + r.message));
+  return batted_flight(r.launch, Air{}).distance;
+}
+
 double objective_value(const OptimizationProblem& problem, const ModalBasis& basis, const ImpactScene& scene,
                        const PointMap& map) {
   const ObjectiveSpec& o = problem.objective;
@@ -100,6 +111,10 @@ double objective_value(const OptimizationProblem& problem, const ModalBasis& bas
   switch (o.kind) {
     case ObjectiveKind::peak_bbs:
       return mapped_scan_maximum(bbs, o.z_from, o.z_to, o.z_step, o.tolerance, map, "the impact").value;
+    case ObjectiveKind::peak_distance: {
+      const auto distance = [&](double z) { return carry(basis, scene, z); };
+      return mapped_scan_maximum(distance, o.z_from, o.z_to, o.z_step, o.tolerance, map, "the impact").value;
+    }
     case ObjectiveKind::sweet_spot_width: {
       const std::vector<double> z = scan_points(o.z_from, o.z_to, o.z_step);
       const double width = sweet_spot(z, values_at(z, bbs, map, "the impact"), o.fraction).width;
@@ -125,11 +140,6 @@ double rig_maximum(const OptimizationProblem& problem, const ModalBasis& basis, 
   return mapped_scan_maximum(measure, length - scan.far_from_end, length - scan.near_end, scan.step, scan.tolerance,
                              map, "the rig's hit")
       .value;
-}
-
-double largest_outer_diameter(const BatDesign& design) {
-  const Profile profile = design_profile(design);
-  return *std::ranges::max_element(profile.outer);
 }
 
 double shape_quantity(Quantity q, const BatDesign& design, const MassProperties& exact) {
@@ -257,6 +267,7 @@ DesignEvaluation evaluate_design(const OptimizationProblem& problem, const std::
     scene.integrator.damping_loss = false;  // the objective is a speed: no energy balance
     scene.ball_speed = problem.player.ball_speed;
     scene.swing = design_swing(problem.player, exact);
+    scene.oblique = problem.player.oblique;
     scene.vibrational_modes = problem.model.vibrational_modes;
     scene.accuracy = problem.model.accuracy;
     const Scores s = problem.model.accuracy > 0 ? scores_within_accuracy(problem, design, scene, map, e)

@@ -32,7 +32,9 @@ std::string quantity_units(Quantity q) {
   return "1";
 }
 
-std::string objective_units(ObjectiveKind kind) { return kind == ObjectiveKind::sweet_spot_width ? "m" : "m s-1"; }
+std::string objective_units(ObjectiveKind kind) {
+  return kind == ObjectiveKind::sweet_spot_width || kind == ObjectiveKind::peak_distance ? "m" : "m s-1";
+}
 
 std::string objective_long_name(const ObjectiveSpec& o) {
   switch (o.kind) {
@@ -40,6 +42,7 @@ std::string objective_long_name(const ObjectiveSpec& o) {
     case ObjectiveKind::sweet_spot_width:
       return "sweet-spot width: length of the zone within " + std::to_string(o.fraction) + " of the peak speed";
     case ObjectiveKind::mean_bbs: return "batted-ball speed averaged over the player's impact points";
+    case ObjectiveKind::peak_distance: return "longest carry of the batted ball over the impact scan";
   }
   return "";
 }

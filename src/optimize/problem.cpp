@@ -7,6 +7,7 @@ const char* to_string(ObjectiveKind kind) {
     case ObjectiveKind::peak_bbs: return "peak_bbs";
     case ObjectiveKind::sweet_spot_width: return "sweet_spot_width";
     case ObjectiveKind::mean_bbs: return "mean_bbs";
+    case ObjectiveKind::peak_distance: return "peak_distance";
   }
   return "?";
 }

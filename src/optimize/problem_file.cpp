@@ -105,7 +105,8 @@ std::vector<FreeParameter> read_free(const Where& top, const toml::table& doc, c
 Player read_player(const Where& top, const toml::table& doc, OptimizationProblem& problem) {
   const toml::table& t = table_key(top, doc, "player", true);
   const Where at{top.file, "player", doc.get("player")->source().begin.line};
-  reject_unknown(at, t, {"swing", "reference_bat", "swing_exponent", "center", "cm_speed", "omega", "ball_speed", "e0"});
+  reject_unknown(at, t, {"swing", "reference_bat", "swing_exponent", "center", "cm_speed", "omega", "ball_speed", "e0",
+                         "undercut", "swing_tilt", "pitch_spin", "friction"});
   Player p;
   const std::string swing = string_key(at, t, "swing", "equal_effort", "\"equal_effort\" or \"given\"");
   if (swing != "equal_effort" && swing != "given")
@@ -131,6 +132,11 @@ Player read_player(const Where& top, const toml::table& doc, OptimizationProblem
   }
   p.ball.e0 = number_key(at, t, "e0", p.ball.e0, [](double v) { return in_range(ball_cor_range, v); },
                          range_text(ball_cor_range));
+  // Where the bat meets the ball (docs/oblique.md): head-on unless given.
+  p.oblique.undercut = number_key(at, t, "undercut", 0, valid_undercut, undercut_expected, Dimension::length);
+  p.oblique.swing_tilt = number_key(at, t, "swing_tilt", 0, valid_swing_tilt, swing_tilt_expected);
+  p.oblique.pitch_spin = number_key(at, t, "pitch_spin", 0, valid_pitch_spin, pitch_spin_expected);
+  p.oblique.friction = number_key(at, t, "friction", 0, valid_friction, friction_expected);
   if (!p.equal_effort) {
     for (const char* key : {"reference_bat", "swing_exponent"})
       if (const toml::node* node = t.get(key))

@@ -109,9 +109,10 @@ ObjectiveSpec read_objective(const Where& top, const toml::table& doc, double le
   const toml::table& t = table_key(top, doc, "objective", true);
   const Where at{top.file, "objective", doc.get("objective")->source().begin.line};
   ObjectiveSpec o;
-  const std::string kind = string_key(at, t, "maximize", "", "\"peak_bbs\", \"sweet_spot_width\" or \"mean_bbs\"");
-  if (kind == "peak_bbs") {
-    o.kind = ObjectiveKind::peak_bbs;
+  const std::string kind =
+      string_key(at, t, "maximize", "", "\"peak_bbs\", \"peak_distance\", \"sweet_spot_width\" or \"mean_bbs\"");
+  if (kind == "peak_bbs" || kind == "peak_distance") {
+    o.kind = kind == "peak_bbs" ? ObjectiveKind::peak_bbs : ObjectiveKind::peak_distance;
     reject_unknown(at, t, {"maximize", "z", "tolerance"});
     // The golden section narrows its bracket to the tolerance: below about 1e-12 m it would reach
     // the spacing of doubles near the bat and never end.
@@ -130,7 +131,7 @@ ObjectiveSpec read_objective(const Where& top, const toml::table& doc, double le
   } else {
     const toml::node* node = t.get("maximize");
     reject(node ? at.child("maximize", *node) : at.missing("maximize"), node ? describe(*node) : "",
-           "expected \"peak_bbs\", \"sweet_spot_width\" or \"mean_bbs\"");
+           "expected \"peak_bbs\", \"peak_distance\", \"sweet_spot_width\" or \"mean_bbs\"");
   }
   return o;
 }

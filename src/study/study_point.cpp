@@ -1,11 +1,10 @@
 #include "sweetspot/study/study_point.hpp"
 
 #include <cmath>
-#include <numbers>
 #include <sstream>
 #include <stdexcept>
 
-#include "sweetspot/flight/flight.hpp"
+#include "sweetspot/impact/batted_flight.hpp"
 #include "sweetspot/impact/certification.hpp"
 #include "sweetspot/impact/standards.hpp"
 #include "sweetspot/impact/toy_model.hpp"
@@ -41,22 +40,10 @@ ImpactResult certification_point(const GridPoint& point) {
   return r;
 }
 
-// The ball's launch as the flight takes it: the exit velocity in the plane of the swing, toward
-// centre field, from the calculator's 3 ft above the plate; spins in rad/s.
-Launch launch_of(const BallLaunch& ball) {
-  constexpr double rad_per_s_per_rpm = 2 * std::numbers::pi / 60;
-  Launch launch;
-  launch.speed = ball.speed;
-  launch.angle = ball.angle;
-  launch.backspin = ball.backspin * rad_per_s_per_rpm;
-  launch.sidespin = ball.sidespin * rad_per_s_per_rpm;
-  return launch;
-}
-
 // The batted ball's flight from the impact's launch, in `air` (the study's keys: checked). A
 // ball driven into the ground at once has no flight: distance 0.
 void add_flight(const Air& air, ImpactResult& r) {
-  const FlightResult f = simulate_flight(launch_of(r.launch), air);
+  const FlightResult f = batted_flight(r.launch, air);
   r.distance = f.distance, r.apex = f.apex, r.hang_time = f.hang_time, r.landing_angle = f.landing_angle;
 }
 

@@ -87,7 +87,7 @@ void add_pass_probabilities(const UncertaintyStudy& u, Dataset& d) {
     if (!std::isfinite(values[i])) continue;  // a failed point
     const std::size_t design = study.sampled_designs ? i : 0;
     const BatDesign& bat = study.design_specs[design];
-    const double barrel = std::ranges::max(design_profile(bat).outer);
+    const double barrel = largest_outer_diameter(bat);
     const std::vector<RuleCheck> checks =
         rule_checks(standard, values[i], barrel, bat_drop(bat.length, study.design_mass[design].mass), bat.length);
     if (rules.empty())

@@ -75,4 +75,7 @@ Profile design_profile(const BatDesign& design);
 // what a designer weighs and swings. mass kg; balance point (CM) m from the knob; MOI about the CM.
 MassProperties design_mass_properties(const BatDesign& design);
 
+// The designed shape's largest outer diameter, m: the barrel diameter the rules bound.
+double largest_outer_diameter(const BatDesign& design);
+
 }  // namespace sweetspot

@@ -32,12 +32,14 @@ struct Player {
   double swing_exponent = 0;
   double ball_speed = 0;     // m/s, the pitch
   Ball ball;                 // the pitched ball: the file's [ball] (N2000's by default), [player] e0 over it
+  ObliqueImpact oblique;     // undercut, swing tilt, pitch spin and friction (head-on by default)
 };
 
 enum class ObjectiveKind {
   peak_bbs,          // the largest batted-ball speed over the z scan, located between scan points
   sweet_spot_width,  // the length of the zone where the speed stays within `fraction` of its peak
-  mean_bbs           // the speed averaged over the player's spread of impact points
+  mean_bbs,          // the speed averaged over the player's spread of impact points
+  peak_distance      // the longest carry of the batted ball over the z scan (the calculator's air)
 };
 const char* to_string(ObjectiveKind kind);
 
