@@ -83,25 +83,24 @@ Swing design_swing(const Player& player, const MassProperties& exact) {
                             player.swing_exponent);
 }
 
-// The batted-ball speed (the flexible model's v_f) at z; throws naming the status unless the
-// impact ends ok.
-double batted_ball_speed(const ModalBasis& basis, ImpactScene scene, double z) {
+// The impact at z; throws naming the status unless it ends ok.
+ImpactResult impact_at(const ModalBasis& basis, ImpactScene scene, double z) {
   scene.z = z;
-  const ImpactResult r = simulate_impact(basis, scene);
+  ImpactResult r = simulate_impact(basis, scene);
   if (r.status != CollisionStatus::ok)
     throw std::runtime_error(point_name("the impact", z) + " ended " + to_string(r.status) +
                              (r.message.empty() ? "" : ": " + r.message));
-  return r.vf;
+  return r;
 }
 
-// The batted ball's carry from the impact at z in the trajectory calculator's air (flight.hpp).
-double carry(const ModalBasis& basis, ImpactScene scene, double z) {
-  scene.z = z;
-  const ImpactResult r = simulate_impact(basis, scene);
-  if (r.status != CollisionStatus::ok)
-    throw std::runtime_error(point_name("the impact", z) + " ended " + to_string(r.status) +
-                             (r.message.empty() ? "" : ": " + r.message));
-  return batted_flight(r.launch, Air{}).distance;
+// The batted-ball speed (the flexible model's v_f) at z.
+double batted_ball_speed(const ModalBasis& basis, const ImpactScene& scene, double z) {
+  return impact_at(basis, scene, z).vf;
+}
+
+// The batted ball's carry from the impact at z, in the trajectory calculator's air (flight.hpp).
+double carry(const ModalBasis& basis, const ImpactScene& scene, double z) {
+  return batted_flight(impact_at(basis, scene, z).launch, Air{}).distance;
 }
 
 double objective_value(const OptimizationProblem& problem, const ModalBasis& basis, const ImpactScene& scene,
