@@ -18,15 +18,9 @@ module_dir, program, source, build, work = sys.argv[1:6]
 sys.path.insert(0, module_dir)
 import numpy as np  # noqa: E402
 import sweetspot  # noqa: E402
+from python_checks import check, finish  # noqa: E402
 
 BAT = f"{source}/studies/bats/r161.toml"
-failures = []
-
-
-def check(condition, what):
-    if not condition:
-        failures.append(what)
-        print("FAIL:", what)
 
 
 def same(a, b):
@@ -387,7 +381,4 @@ run = subprocess.run([sys.executable, "-c", "import sweetspot; print(sweetspot._
                      env=os.environ | {"PYTHONPATH": site}, capture_output=True, text=True, cwd=work)
 check(run.returncode == 0 and run.stdout.startswith(site), f"installed package: {run.stdout} {run.stderr}")
 
-if failures:
-    print(f"{len(failures)} failures")
-    sys.exit(1)
-print("python module: all checks passed")
+finish("python module: all checks passed")

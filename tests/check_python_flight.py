@@ -13,23 +13,8 @@ module_dir, program = sys.argv[1:3]
 sys.path.insert(0, module_dir)
 import numpy as np  # noqa: E402
 import sweetspot  # noqa: E402
+from python_checks import check, finish, refused  # noqa: E402
 
-failures = []
-
-
-def check(condition, what):
-    if not condition:
-        failures.append(what)
-        print("FAIL:", what)
-
-
-def refused(call, *fragments):
-    try:
-        call()
-    except ValueError as e:
-        message = str(e)
-        return "\n" not in message and all(f in message for f in fragments)
-    return False
 
 
 # The program and the module compute the same flight from the same words.
@@ -66,6 +51,4 @@ check(refused(lambda: sweetspot.flight(40, 30, temperature="70 mph"), "temperatu
       "temperature of the wrong dimension")
 check(refused(lambda: sweetspot.flight("40 ft", 30), "speed"), "speed of the wrong dimension")
 
-if failures:
-    sys.exit(f"{len(failures)} failure(s)")
-print("ok")
+finish("ok")

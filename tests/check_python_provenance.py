@@ -20,15 +20,9 @@ import numpy as np  # noqa: E402
 import xarray as xr  # noqa: E402
 
 import sweetspot  # noqa: E402
+from python_checks import check, finish  # noqa: E402
 
 BAT = f"{source}/studies/bats/r161.toml"
-failures = []
-
-
-def check(condition, what):
-    if not condition:
-        failures.append(what)
-        print("FAIL:", what)
 
 
 def same_values(a, b):
@@ -177,7 +171,4 @@ for name in ("impacts", "impact", "certify", "scene_of", "bat_of", "impacts_like
     doc = inspect.getdoc(getattr(sweetspot, name))
     check("Returns" in doc or "Returns:" in doc, f"{name}'s docstring says what it returns")
 
-if failures:
-    print(f"{len(failures)} failures")
-    sys.exit(1)
-print("python provenance: all checks passed")
+finish("python provenance: all checks passed")

@@ -10,24 +10,9 @@ module_dir, source = sys.argv[1:3]
 sys.path.insert(0, module_dir)
 import numpy as np  # noqa: E402
 import sweetspot  # noqa: E402
+from python_checks import check, finish, refused  # noqa: E402
 
 BAT = f"{source}/studies/bats/r161.toml"
-failures = []
-
-
-def check(condition, what):
-    if not condition:
-        failures.append(what)
-        print("FAIL:", what)
-
-
-def refused(call, *fragments):
-    try:
-        call()
-    except ValueError as e:
-        message = str(e)
-        return "\n" not in message and all(f in message for f in fragments)
-    return False
 
 
 def same_dict(a, b):
@@ -90,6 +75,4 @@ c_us = sweetspot.certify(alloy, ball_speed="136 mph", pivot="6 in", modes=6)
 check(c_si["bbcor"] == c_us["bbcor"] and c_si["z_max"] == c_us["z_max"], "certify with units")
 check(refused(lambda: sweetspot.certify(alloy, pivot="6 oz"), "pivot '6 oz': expected a length"), "pivot in oz")
 
-if failures:
-    sys.exit(f"{len(failures)} failure(s)")
-print("ok")
+finish("ok")
