@@ -23,29 +23,42 @@ using detail::ContactState;
 
 constexpr int max_contacts = 50;  // more than this is chatter, not a collision
 
-// Free flight: the ball coasts, every mode oscillates in closed form (rigid modes drift, damped
-// ones decay, and what they lose is added to the dissipated energy, y's last entry).
+// Mode i's coordinate and rate a time tau after the state y, free of force: a rigid mode drifts,
+// a damped one decays, an undamped one turns.
+struct ModeState {
+  double a, v;
+};
+ModeState free_mode(const ModalContact& body, const VectorXd& y, int i, double tau) {
+  const int n = body.count();
+  const double w = body.omega(i), a = y(2 + i), v = y(2 + n + i);
+  if (w == 0) return {a + v * tau, v};
+  if (const double zeta = body.damping(i); zeta != 0) {
+    const detail::FreeEvolution e = detail::damped_free_evolution(w, zeta, tau);
+    return {e.aa * a + e.av * v, e.va * a + e.vv * v};
+  }
+  const double c = std::cos(w * tau), s = std::sin(w * tau);
+  return {a * c + v / w * s, -a * w * s + v * c};
+}
+
+// Free flight: the ball coasts and every mode moves free of force; what the damped ones lose is
+// added to the dissipated energy, y's last entry.
 void evolve_free(const ModalContact& body, const VectorXd& y, double tau, VectorXd& out) {
   const int n = body.count();
   out = y;
   out(0) = y(0) + y(1) * tau;
   for (int i = 0; i < n; ++i) {
-    const double w = body.omega(i), a = y(2 + i), v = y(2 + n + i);
-    if (w == 0) {
-      out(2 + i) = a + v * tau;
-      continue;
-    }
-    if (const double zeta = body.damping(i); zeta != 0) {
-      const detail::FreeEvolution e = detail::damped_free_evolution(w, zeta, tau);
-      out(2 + i) = e.aa * a + e.av * v;
-      out(2 + n + i) = e.va * a + e.vv * v;
-      if (out.size() > 2 + 2 * n) out(2 + 2 * n) += detail::free_decay_loss(w, a, v, out(2 + i), out(2 + n + i));
-      continue;
-    }
-    const double c = std::cos(w * tau), s = std::sin(w * tau);
-    out(2 + i) = a * c + v / w * s;
-    out(2 + n + i) = -a * w * s + v * c;
+    const ModeState m = free_mode(body, y, i, tau);
+    out(2 + i) = m.a, out(2 + n + i) = m.v;
+    if (body.damping(i) != 0 && out.size() > 2 + 2 * n)
+      out(2 + 2 * n) += detail::free_decay_loss(body.omega(i), y(2 + i), y(2 + n + i), m.a, m.v);
   }
+}
+
+// The compression a time tau after the state y, free of force (evolve_free's, without the state).
+double free_compression(const ModalContact& body, const VectorXd& y, double tau) {
+  double u = -(y(0) + y(1) * tau);
+  for (int i = 0; i < body.count(); ++i) u += body.psi(i) * free_mode(body, y, i, tau).a;
+  return u;
 }
 
 // Integral over [0, tau] of the cubic Hermite interpolant of F on a segment of length h.
@@ -269,16 +282,16 @@ class CollisionRun {
     const int n = body_.count();
     Eigen::ArrayXd a = y_.segment(2, n).array(), v = y_.segment(2 + n, n).array(), next_a(n);
     const auto psi = body_.psi.array();
-    double s = y_(0), tau = 0, previous = 0;
+    double s = y_(0), tau = 0, previous = 0, u_previous = 0;
     while (tau < end) {
       const double u = (psi * a).sum() - s;
       // At tau = 0 the ball has just been found to separate: the step to that root may leave a
       // trace of compression (1e-12 m), which is this contact ending, not the next one starting.
       if (u > 0 && tau > 0) {
-        move_to_touch(previous, tau);
+        move_to_touch(previous, tau, u_previous, u);
         return true;
       }
-      previous = tau;
+      previous = tau, u_previous = u;
       const FreeRotations::Power& r = rotations.largest_within(std::max(-u / slope, FreeRotations::base_step));
       next_a = r.c * a + r.sn * v;
       v = r.cv * v - r.w2sn * a;
@@ -289,14 +302,27 @@ class CollisionRun {
     return false;
   }
 
-  // Bisection for the instant of the next touch in (lo, hi] after the separation state y_.
-  void move_to_touch(double lo, double hi) {
-    VectorXd trial;
+  // The instant of the next touch in (lo, hi] after the separation state y_, where the compression
+  // rises through 0: Illinois regula falsi (as ExactStepper::locate), which keeps the bracket and
+  // needs about a dozen evaluations where bisection took 50, each a sine and cosine per mode.
+  // The compressions at the ends come with them; the state moves to the end inside the contact, hi.
+  void move_to_touch(double lo, double hi, double u_lo, double u_hi) {
+    int side = 0;
     for (int iteration = 0; iteration < 200 && hi - lo > 1e-15 * (t_ + hi); ++iteration) {
-      const double mid = (lo + hi) / 2;
-      evolve_free(body_, y_, mid, trial);
-      (state_.compression(trial) > 0 ? hi : lo) = mid;
+      double tau = u_lo < 0 && u_hi > 0 ? hi - u_hi * (hi - lo) / (u_hi - u_lo) : (lo + hi) / 2;
+      if (!(tau > lo && tau < hi)) tau = (lo + hi) / 2;
+      const double u = free_compression(body_, y_, tau);
+      if (u > 0) {
+        hi = tau, u_hi = u;
+        if (side == 1) u_lo /= 2;
+        side = 1;
+      } else {
+        lo = tau, u_lo = u;
+        if (side == -1) u_hi /= 2;
+        side = -1;
+      }
     }
+    VectorXd trial;
     evolve_free(body_, y_, hi, trial);
     y_ = trial;
     if (keeps_samples()) samples_.push_back({t_ + lo, 0.0, 0.0});  // the force stays zero over the gap
