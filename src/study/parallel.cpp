@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 #include <ranges>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -169,9 +170,15 @@ class ModalCache {
   }
   int solves() const { return solves_; }
   double solve_seconds() const { return solve_seconds_; }
-  // Before a chunk: forgets every basis once more than cached_models are kept.
+  // Before a chunk: forgets every basis once they come from more than cached_models models (a bat
+  // at a slicing holds its rigid basis and a few partial ones, one per half-octave of `auto`'s
+  // reach; counting those apart made a study at a stated accuracy, whose ladder holds each bat at
+  // three slicings or more, solve its bases anew at every chunk).
   void make_room() {
-    if (cache_.size() + errors_.size() <= cached_models) return;
+    std::set<Model> models;
+    for (const Key& key : std::views::keys(cache_)) models.insert(model_of_key(key));
+    for (const Key& key : std::views::keys(errors_)) models.insert(model_of_key(key));
+    if (models.size() <= cached_models) return;
     cache_.clear();
     errors_.clear();
     complete_from_.clear();
@@ -189,6 +196,7 @@ class ModalCache {
   }
 
   static Model model_of(const GridPoint& p) { return std::make_tuple(p.design, p.slices, p.theory); }
+  static Model model_of_key(const Key& k) { return std::make_tuple(std::get<0>(k), std::get<1>(k), std::get<2>(k)); }
   static Key key_of(const GridPoint& p, ModeRequest request) {
     return std::make_tuple(p.design, p.slices, p.theory, request.vibrational, request.below_omega);
   }
