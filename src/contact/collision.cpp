@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <unordered_map>
@@ -225,7 +226,7 @@ class CollisionRun {
       } else if (law.expanding() && state_.compression(next) <= 0) {
         h = stepper_.locate(y_, h, law, detail::ContactEvent::separation, next);
         separated = true;
-      } else if (law.expanding() && state_.compression(next) > detail::reloading_compression(state_, law)) {
+      } else if (law.expanding() && reloads(h, law, next)) {
         h = stepper_.locate(y_, h, law, detail::ContactEvent::reloading, next);
         law.resume_compression();
       }
@@ -240,6 +241,27 @@ class CollisionRun {
     result_.peak_force = std::max(result_.peak_force, law.f_max());
     result_.impulse += ball_.mass * (y_(1) - v_start);
     result_.dissipated += law.loop_energy();
+    return true;
+  }
+
+  // Whether the expanding ball is pressed past its maximum compression again within the step from
+  // y_ to `next`, of length h. The bat's ringing can press it there for a few us only, inside a
+  // step whose ends both lie below: where the compression rises at the step's start and falls at
+  // its end, the cubic Hermite of u through both ends tells whether it peaked above, and the step
+  // is made again to that peak, which then ends past the event (h and `next` as locate expects
+  // them). Missing such a reload loses its hysteresis loop: up to 2e-4 of v_f at 150 m/s near the
+  // handle, at steps of 14 us.
+  bool reloads(double& h, const ContactForce& law, VectorXd& next) {
+    const double level = detail::reloading_compression(state_, law), u1 = state_.compression(next);
+    if (u1 > level) return true;
+    const double u0 = state_.compression(y_), d0 = h * state_.compression_rate(y_), d1 = h * state_.compression_rate(next);
+    const std::optional<double> peak = detail::hermite_peak(u0, d0, u1, d1, level);
+    if (!peak) return false;
+    VectorXd pressed(y_.size());
+    stepper_.step(y_, *peak * h, law, pressed);
+    if (!(state_.compression(pressed) > level)) return false;  // the cubic overshot: no reload
+    h *= *peak;
+    next.swap(pressed);
     return true;
   }
 

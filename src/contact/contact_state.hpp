@@ -5,6 +5,7 @@
 // integrated with the rest. Without damping y is exactly what it always was.
 #include <Eigen/Dense>
 #include <array>
+#include <optional>
 #include <cmath>
 #include <vector>
 
@@ -199,6 +200,24 @@ inline double event_rate(const ContactState& state, ContactEvent event, const Ei
     case ContactEvent::reloading: break;
   }
   return -state.compression_rate(y);
+}
+
+// Where inside (0, 1) the cubic Hermite through (u0, d0) at s = 0 and (u1, d1) at s = 1 (d: the
+// slopes in s) peaks above `level`, if it rises at the start, falls at the end and does: its
+// slope, a quadratic, changes sign once in between.
+inline std::optional<double> hermite_peak(double u0, double d0, double u1, double d1, double level) {
+  if (!(d0 > 0 && d1 < 0)) return std::nullopt;
+  const double a = 6 * (u0 - u1) + 3 * (d0 + d1), b = 6 * (u1 - u0) - 4 * d0 - 2 * d1;  // slope a s^2 + b s + d0
+  double s = -d0 / b;  // a = 0: linear
+  if (a != 0) {
+    const double root = std::sqrt(std::max(b * b - 4 * a * d0, 0.0));
+    const double first = (-b - root) / (2 * a), second = (-b + root) / (2 * a);
+    s = first > 0 && first < 1 ? first : second;
+  }
+  if (!(s > 0 && s < 1)) return std::nullopt;
+  const double s2 = s * s, s3 = s2 * s;
+  const double value = (2 * s3 - 3 * s2 + 1) * u0 + (s3 - 2 * s2 + s) * d0 + (-2 * s3 + 3 * s2) * u1 + (s3 - s2) * d1;
+  return value > level ? std::optional(s) : std::nullopt;
 }
 
 // Illinois regula falsi for the step h* in (0, h] at which the event value of step(y, h*) crosses
