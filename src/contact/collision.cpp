@@ -254,7 +254,8 @@ class CollisionRun {
   bool reloads(double& h, const ContactForce& law, VectorXd& next) {
     const double level = detail::reloading_compression(state_, law), u1 = state_.compression(next);
     if (u1 > level) return true;
-    const double u0 = state_.compression(y_), d0 = h * state_.compression_rate(y_), d1 = h * state_.compression_rate(next);
+    const double u0 = state_.compression(y_), d0 = h * state_.compression_rate(y_);
+    const double d1 = h * state_.compression_rate(next);
     const std::optional<double> peak = detail::hermite_peak(u0, d0, u1, d1, level);
     if (!peak) return false;
     VectorXd pressed(y_.size());
