@@ -208,6 +208,8 @@ class CollisionRun {
         return fail(CollisionStatus::no_separation,
                     format("the ball did not separate within %g s of touching (contact %g)", options_.max_contact_time,
                            result_.contacts));
+      // The step's start: the last step's end, whose u and u' its stepper left known (no pass).
+      const double u_start = state_.compression(y_), du_start = state_.compression_rate(y_);
       const detail::StepOutcome outcome = stepper_.attempt(y_, h, law, next);
       if (!outcome.accepted && outcome.next_h > 0) {  // a NaN proposal (from a NaN state) fails below
         h = outcome.next_h;
@@ -226,7 +228,7 @@ class CollisionRun {
       } else if (law.expanding() && state_.compression(next) <= 0) {
         h = stepper_.locate(y_, h, law, detail::ContactEvent::separation, next);
         separated = true;
-      } else if (law.expanding() && reloads(h, law, next)) {
+      } else if (law.expanding() && reloads(h, law, u_start, du_start, next)) {
         h = stepper_.locate(y_, h, law, detail::ContactEvent::reloading, next);
         law.resume_compression();
       }
@@ -245,18 +247,17 @@ class CollisionRun {
   }
 
   // Whether the expanding ball is pressed past its maximum compression again within the step from
-  // y_ to `next`, of length h. The bat's ringing can press it there for a few us only, inside a
+  // y_ (compression u0, rate du0) to `next`, of length h. The bat's ringing can press it there for a few us only, inside a
   // step whose ends both lie below: where the compression rises at the step's start and falls at
   // its end, the cubic Hermite of u through both ends tells whether it peaked above, and the step
   // is made again to that peak, which then ends past the event (h and `next` as locate expects
   // them). Missing such a reload loses its hysteresis loop: up to 2e-4 of v_f at 150 m/s near the
   // handle, at steps of 14 us.
-  bool reloads(double& h, const ContactForce& law, VectorXd& next) {
+  bool reloads(double& h, const ContactForce& law, double u0, double du0, VectorXd& next) {
     const double level = detail::reloading_compression(state_, law), u1 = state_.compression(next);
     if (u1 > level) return true;
-    const double u0 = state_.compression(y_), d0 = h * state_.compression_rate(y_);
-    const double d1 = h * state_.compression_rate(next);
-    const std::optional<double> peak = detail::hermite_peak(u0, d0, u1, d1, level);
+    const std::optional<double> peak =
+        detail::hermite_peak(u0, h * du0, u1, h * state_.compression_rate(next), level);
     if (!peak) return false;
     VectorXd pressed(y_.size());
     stepper_.step(y_, *peak * h, law, pressed);
