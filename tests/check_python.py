@@ -72,6 +72,27 @@ for args, kwargs in scenes:
     for key in expected:
         check(same(expected[key], got.get(key)), f"{' '.join(args)}: {key} {expected[key]!r} != {got.get(key)!r}")
 
+# 1b. impact()'s error estimates are made when first read (they cost several impacts): every way
+# of reading a dict's values gives the program's, whichever is first, and nothing else.
+args, kwargs = scenes[0]
+expected = program_json(args)
+estimates = ("slicing_error", "step_error", "total_error")
+readings = {"r[key]": lambda r: r["step_error"], "get": lambda r: r.get("total_error"), "items": lambda r: dict(r.items()),
+            "values": lambda r: list(r.values()), "dict(r)": dict, "{**r}": lambda r: {**r}, "f(**r)": lambda r: (lambda **k: k)(**r),
+            "update": lambda r: {}.update(r), "copy": lambda r: r.copy(), "json": lambda r: json.dumps(r, default=lambda v: v.tolist()),
+            "repr": repr, "==": lambda r: r == {}, "|": lambda r: r | {}, "pop": lambda r: r.pop("contacts")}
+for name, read in readings.items():
+    got = sweetspot.impact(bat, **kwargs)
+    read(got)
+    check(all(same(expected[k], dict.__getitem__(got, k)) for k in estimates),
+          f"estimates after {name}: {[dict.__getitem__(got, k) for k in estimates]}")
+got = sweetspot.impact(bat, **kwargs)
+check(same(expected, json.loads(json.dumps({k: v for k, v in got.items() if k not in ("mode_energy", "modes_kept")}))
+                       | {k: expected[k] for k in ("mode_energy", "modes_kept")}), "a Result through json")
+got = sweetspot.impact(bat, **kwargs)
+got["total_error"] = -1.0
+check(got["total_error"] == -1.0 and same(expected["slicing_error"], got["slicing_error"]), "a value set stays set")
+
 # 2. impacts: broadcasting (ball_speed down, z across) and equality with single impacts.
 z = np.array([0.5, 0.6, 0.7, 0.75, 0.8])
 v = np.array([30.0, 40.0, 50.0])

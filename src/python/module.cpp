@@ -99,6 +99,32 @@ ImpactResult run_impact_with_errors(BatHandle& bat, SceneArgs args) {
   return checked(simulate_impact_with_errors(*basis, finer_bases, args.scene));
 }
 
+// impact()'s error estimates without a stated accuracy, made when the result's slicing_error,
+// step_error or total_error is first read: they cost the same impact again at twice and four times
+// the step and on the bat at twice and four times its slices (the bat's modes solved there on the
+// first use), four to five times the impact itself, which a caller reading vf alone need not pay.
+// The bat and the resolved scene are kept, so the estimates are those of the call's impact, bit for
+// bit (the impact is deterministic), whenever they are read.
+class LaterEstimates {
+ public:
+  LaterEstimates(std::shared_ptr<BatHandle> bat, SceneArgs args) : bat_(std::move(bat)), args_(std::move(args)) {}
+
+  py::dict operator()() const {
+    ImpactResult r;
+    {
+      py::gil_scoped_release release;
+      r = run_impact_with_errors(*bat_, args_);
+    }
+    py::dict d;
+    d["slicing_error"] = r.slicing_error, d["step_error"] = r.step_error, d["total_error"] = r.total_error;
+    return d;
+  }
+
+ private:
+  std::shared_ptr<BatHandle> bat_;
+  SceneArgs args_;
+};
+
 // The result under the names of `sweetspot impact --json`, in its order; NaN where JSON has null.
 py::dict barrel_dict(const BarrelCalibration& b) {
   py::dict d;
@@ -370,15 +396,19 @@ outer_diameter and inner_diameter (per slice, m).)");
   bind_bat_design(m, bat);
   bind_quantity_arguments(m);
 
-  // The result, and the radius of the ball the scene resolved (impact() warns past it).
-  m.def("_impact", [](BatHandle& bat, const py::dict& args) {
+  // The result, the radius of the ball the scene resolved (impact() warns past it), and the error
+  // estimates to make when first read (None at a stated accuracy, whose ladder makes them at once).
+  py::class_<LaterEstimates>(m, "_LaterEstimates").def("__call__", &LaterEstimates::operator());
+  m.def("_impact", [](const std::shared_ptr<BatHandle>& bat, const py::dict& args) {
     const SceneArgs scene = scene_args(args);
+    const bool later = !(scene.scene.accuracy > 0);
     ImpactResult r;
     {
       py::gil_scoped_release release;
-      r = run_impact_with_errors(bat, scene);
+      r = later ? run_impact(*bat, scene) : run_impact_with_errors(*bat, scene);
     }
-    return py::make_tuple(result_dict(r, bat.bat()), scene.scene.ball.radius);
+    py::object estimates = later ? py::cast(LaterEstimates(bat, scene)) : py::none();
+    return py::make_tuple(result_dict(r, bat->bat()), scene.scene.ball.radius, estimates);
   });
   m.def("_max_threads", &max_threads);
   bind_flight(m);

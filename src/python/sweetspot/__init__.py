@@ -87,14 +87,65 @@ def _real(name, value, dimension=None, arrays=False):
     return float(array) if array.ndim == 0 else array.astype(float)
 
 
+_ESTIMATES = ("slicing_error", "step_error", "total_error")  # impact()'s, made when first read
+_LATER = object()  # a Result's value that is made when first read
+
+
 class Result(dict):
     """What impact() and certify() return: a dict with the keys of the program's --json, and
     `attrs`, a dict of the provenance an impacts() dataset carries as its attributes (the resolved
-    scene as scene_*, the bat, program_version, git_commit, Conventions)."""
+    scene as scene_*, the bat, program_version, git_commit, Conventions).
 
-    def __init__(self, values, attrs):
+    impact()'s error estimates cost four to five times the impact: they are made when first read, by
+    any way a dict's values are read (r[key], get, items, values, copies, dict(r), json, ==), and
+    are the same values, bit for bit, whenever that is."""
+
+    def __init__(self, values, attrs, later=None):
         super().__init__(values)
         self._attrs = attrs  # the dict, or a function that makes it when first read (impact())
+        self._later = later  # a function giving the values stored as _LATER, or None
+        if later is not None:
+            for key in _ESTIMATES:
+                dict.__setitem__(self, key, _LATER)
+
+    def _complete(self):
+        """The values made when first read, in their places (a key set or deleted since stays so)."""
+        if self._later is not None:
+            values = self._later()
+            self._later = None
+            for key, value in values.items():
+                if dict.get(self, key) is _LATER:
+                    dict.__setitem__(self, key, value)
+
+    def __getitem__(self, key):
+        value = dict.__getitem__(self, key)
+        if value is _LATER:
+            self._complete()
+            value = dict.__getitem__(self, key)
+        return value
+
+    # Every other way of reading values completes them first. __iter__ is dict's own, but defined
+    # here so that dict(r), {**r}, f(**r) and d.update(r) read through keys() and __getitem__
+    # instead of the dict's storage.
+    def __iter__(self):
+        return dict.__iter__(self)
+
+    def _completing(method):
+        """dict's method, after completing this Result (and another one it is given)."""
+        def read(self, *args, **kwargs):
+            self._complete()
+            for other in args:
+                if isinstance(other, Result):
+                    other._complete()
+            return method(self, *args, **kwargs)
+        read.__name__, read.__doc__ = method.__name__, method.__doc__
+        return read
+
+    get, items, values, copy = _completing(dict.get), _completing(dict.items), _completing(dict.values), _completing(dict.copy)
+    pop, popitem, setdefault = _completing(dict.pop), _completing(dict.popitem), _completing(dict.setdefault)
+    __repr__, __eq__, __ne__ = _completing(dict.__repr__), _completing(dict.__eq__), _completing(dict.__ne__)
+    __or__, __ror__ = _completing(dict.__or__), _completing(dict.__ror__)
+    del _completing
 
     @property
     def attrs(self):
@@ -347,7 +398,9 @@ def impact(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=No
     energy, mode_energy, modes_kept, modes_error, slicing_error, step_error, total_error, contacts),
     NaN where the JSON has null. slicing_error, modes_error and step_error estimate each source of
     the relative vf error against the continuous bat (its slices, the dropped modes, the time step),
-    total_error their sum; the slicing's costs the bat's modes at twice its slices. accuracy (the
+    total_error their sum. Without a stated accuracy they are made when first read (the same values):
+    they cost the impact again at twice and four times the step and on the bat at twice and four
+    times its slices, four to five times the impact itself. accuracy (the
     total relative vf error, 1e-7 to 0.1) chooses the slices, the modes and the step to meet it
     (slices_used, modes_kept, step_used say what it chose; status "inaccurate" where the bat
     cannot be cut finely enough); step_accuracy chooses the step alone.
@@ -370,12 +423,13 @@ def impact(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=No
                   mode_tolerance, accuracy, step_accuracy, integrator, dt, tolerance, window, theory, n2000, ball,
                   oblique=dict(undercut=undercut, swing_tilt=swing_tilt, pitch_spin=pitch_spin, friction=friction))
     _check_bat(bat)
-    result, radius = _impact(bat, args)
+    result, radius, estimates = _impact(bat, args)
     if result["u_max"] > radius:
         warnings.warn(f"the ball compressed {1e3 * result['u_max']:.3g} mm, past its radius "
                       f"{1e3 * radius:.3g} mm: the force law is not meant for that", RuntimeWarning, stacklevel=2)
-    # The provenance costs more than the impact: made when first read.
-    return Result(result, lambda: _record(bat, args))
+    # The provenance costs more than the impact, the error estimates four to five times it (without
+    # a stated accuracy): each made when first read.
+    return Result(result, lambda: _record(bat, args), estimates)
 
 
 def _attrs(name):
