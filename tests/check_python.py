@@ -89,6 +89,24 @@ for name, read in readings.items():
 got = sweetspot.impact(bat, **kwargs)
 check(same(expected, json.loads(json.dumps({k: v for k, v in got.items() if k not in ("mode_energy", "modes_kept")}))
                        | {k: expected[k] for k in ("mode_energy", "modes_kept")}), "a Result through json")
+# impact() reads plain floats and ints in C++ at once and has the package check anything else
+# first (numpy numbers, units): the same scene either way, the same result and record, bit for bit.
+plain = sweetspot.impact(bat, z=0.7, ball_speed=40, cm_speed=10, omega=40, e0=0.5, dt=1e-5)
+checked = sweetspot.impact(bat, z=np.float64(0.7), ball_speed="40 m/s", cm_speed=np.int64(10), omega=40.0,
+                           e0=np.float64(0.5), dt=np.float64(1e-5))
+
+
+def identical(a, b):
+    """The same keys in the same order, the same bits (NaN too)."""
+    if isinstance(a, dict):
+        return isinstance(b, dict) and list(a) == list(b) and all(identical(a[k], b[k]) for k in a)
+    if isinstance(a, str):
+        return a == b
+    return np.asarray(a).dtype == np.asarray(b).dtype and np.asarray(a).tobytes() == np.asarray(b).tobytes()
+
+
+check(identical(plain, checked), "plain numbers and checked ones give the same result")
+check(plain.attrs == checked.attrs, "plain numbers and checked ones give the same record")
 got = sweetspot.impact(bat, **kwargs)
 got["total_error"] = -1.0
 check(got["total_error"] == -1.0 and same(expected["slicing_error"], got["slicing_error"]), "a value set stays set")

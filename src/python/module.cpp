@@ -12,6 +12,7 @@
 #include <exception>
 #include <set>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -45,8 +46,46 @@ const std::filesystem::path& shipped_bats() {
   return dir;
 }
 
-py::array_t<double> array(const std::vector<double>& v) { return py::array_t<double>(v.size(), v.data()); }
-py::array_t<double> array(const Eigen::VectorXd& v) { return py::array_t<double>(v.size(), v.data()); }
+// A numpy array of the values, made once and filled (array_t's constructor from a pointer makes a
+// view and then its copy).
+template <class T>
+py::array_t<T> array(const T* values, std::size_t n) {
+  py::array_t<T> a(static_cast<py::ssize_t>(n));
+  std::copy(values, values + n, a.mutable_data());
+  return a;
+}
+py::array_t<double> array(const std::vector<double>& v) { return array(v.data(), v.size()); }
+py::array_t<double> array(const Eigen::VectorXd& v) { return array(v.data(), static_cast<std::size_t>(v.size())); }
+
+// A dict filled under names made once and kept (interned): a result's names are the same on every
+// call, and making and hashing each anew cost as much as the rest of the result's dict.
+class NamedDict {
+ public:
+  struct Slot {
+    py::dict& dict;
+    PyObject* key;
+    template <class T>
+    void operator=(T&& value) const {
+      if (PyDict_SetItem(dict.ptr(), key, py::detail::object_or_cast(std::forward<T>(value)).ptr()) != 0)
+        throw py::error_already_set();
+    }
+  };
+  NamedDict() = default;
+  explicit NamedDict(py::dict into) : dict(std::move(into)) {}
+  Slot operator[](const char* name) { return {dict, interned(name)}; }
+  py::dict dict;
+
+  // By the literal's address (a name spelt twice is made twice); called with the GIL held.
+  static PyObject* interned(const char* name) {
+    static std::unordered_map<const char*, PyObject*> names;  // kept for the process's life
+    auto [it, added] = names.try_emplace(name, nullptr);
+    if (added && !(it->second = PyUnicode_InternFromString(name))) {
+      names.erase(it);
+      throw py::error_already_set();
+    }
+    return it->second;
+  }
+};
 
 // The bat's basis for the scene: the rigid basis, the request it asks for, the basis of that
 // request, both cached on the bat (as the program's `impact` and a study's point solve it).
@@ -127,17 +166,24 @@ class LaterEstimates {
 
 // The result under the names of `sweetspot impact --json`, in its order; NaN where JSON has null.
 py::dict barrel_dict(const BarrelCalibration& b) {
-  py::dict d;
+  NamedDict d;
   const double nan = std::nan("");
   d["load"] = b.load == WallLoad::point ? "point" : "patch";
   d["calibrated"] = b.calibrated();
   d["hoop_frequency_measured"] = b.hoop_frequency > 0 ? b.hoop_frequency : nan;
   d["compression_measured"] = b.compression > 0 ? b.compression : nan;
-  return d;
+  return d.dict;
 }
 
-py::dict result_dict(const ImpactResult& r, const Bat& bat) {
-  py::dict d;
+// The value impact()'s Result holds where it makes a value when first read (sweetspot.Result).
+py::handle later_marker() {
+  static const py::handle marker = py::module_::import("builtins").attr("object")().release();  // kept
+  return marker;
+}
+
+// `into` (empty), or a new dict, filled; with `estimates_later`, the error estimates later_marker().
+py::dict result_dict(const ImpactResult& r, const Bat& bat, py::dict into = {}, bool estimates_later = false) {
+  NamedDict d(std::move(into));
   d["status"] = to_string(r.status);
   if (!r.message.empty()) d["message"] = r.message;
   d["z"] = r.z, d["vf"] = r.vf, d["e_eff"] = r.e_eff, d["contact_time"] = r.contact_time;
@@ -147,23 +193,52 @@ py::dict result_dict(const ImpactResult& r, const Bat& bat) {
   d["barrel_compliance"] = r.barrel_compliance, d["barrel_compression_eff"] = r.barrel_compression_eff;
   d["e_a"] = r.rig.e_a, d["bbcor"] = r.rig.bbcor;
   d["besr"] = r.rig.besr, d["bpf"] = r.rig.bpf;
-  py::dict e;
+  NamedDict e;
   e["initial"] = r.energy.initial, e["ball"] = r.energy.ball, e["bat_translation"] = r.energy.bat_translation;
   e["bat_rotation"] = r.energy.bat_rotation, e["vibration"] = r.energy.vibration;
   e["ball_dissipated"] = r.energy.ball_dissipated, e["barrel"] = r.energy.barrel,
   e["damped"] = r.energy.damped, e["residual"] = r.energy.residual;
   e["ball_spin"] = r.energy.ball_spin, e["bat_tangential"] = r.energy.bat_tangential;
   e["friction"] = r.energy.friction;
-  d["energy"] = e;
+  d["energy"] = e.dict;
   d["launch_angle"] = r.launch.angle, d["backspin"] = r.launch.backspin, d["sidespin"] = r.launch.sidespin;
   d["mode_energy"] = array(r.mode_energy);
-  d["modes_kept"] = py::array_t<int>(r.modes_kept.size(), r.modes_kept.data());
+  d["modes_kept"] = array(r.modes_kept.data(), r.modes_kept.size());
   d["modes_error"] = r.modes_error;
-  d["slicing_error"] = r.slicing_error, d["step_error"] = r.step_error, d["total_error"] = r.total_error;
+  if (estimates_later)
+    d["slicing_error"] = later_marker(), d["step_error"] = later_marker(), d["total_error"] = later_marker();
+  else
+    d["slicing_error"] = r.slicing_error, d["step_error"] = r.step_error, d["total_error"] = r.total_error;
   d["slices_used"] = r.slices_used, d["step_used"] = r.step_used;
   d["contacts"] = r.contacts;
   if (bat.hollow()) d["barrel"] = barrel_dict(bat.material.barrel);
-  return d;
+  return d.dict;
+}
+
+// An empty instance of `type`, a subclass of dict (the package's Result), without its __init__:
+// impact() fills it in place instead of copying a dict into it.
+py::dict empty_instance(const py::type& type) {
+  auto* t = reinterpret_cast<PyTypeObject*>(type.ptr());
+  if (!PyType_IsSubtype(t, &PyDict_Type)) throw py::type_error("impact: expected a subclass of dict");
+  auto made = py::reinterpret_steal<py::object>(t->tp_new(t, py::tuple().ptr(), nullptr));
+  if (!made) throw py::error_already_set();
+  return made;
+}
+
+// sweetspot.impact's call (below): the result as a `result_type`, its ball's compression u_max and
+// radius (impact() warns past it). Without a stated accuracy its error estimates are made when
+// first read: the result's `_later` makes them (LaterEstimates).
+py::tuple impact_call(const std::shared_ptr<BatHandle>& bat, const SceneArgs& scene, const py::type& result_type) {
+  const bool later = !(scene.scene.accuracy > 0);
+  ImpactResult r;
+  {
+    py::gil_scoped_release release;
+    r = later ? run_impact(*bat, scene) : run_impact_with_errors(*bat, scene);
+  }
+  py::dict result = result_dict(r, bat->bat(), empty_instance(result_type), later);
+  if (later && PyObject_SetAttr(result.ptr(), NamedDict::interned("_later"), py::cast(LaterEstimates(bat, scene)).ptr()))
+    throw py::error_already_set();
+  return py::make_tuple(std::move(result), r.u_max, scene.scene.ball.radius);
 }
 
 // The scalar outputs of a study dataset that `impacts` gives, in the order of its variables.
@@ -396,19 +471,18 @@ outer_diameter and inner_diameter (per slice, m).)");
   bind_bat_design(m, bat);
   bind_quantity_arguments(m);
 
-  // The result, the radius of the ball the scene resolved (impact() warns past it), and the error
-  // estimates to make when first read (None at a stated accuracy, whose ladder makes them at once).
+  // impact(): see impact_call. _impact takes the arguments as they were given and gives None where
+  // the package must check and convert one first (plain_scene_args); _impact_checked takes them as
+  // the package made them.
   py::class_<LaterEstimates>(m, "_LaterEstimates").def("__call__", &LaterEstimates::operator());
-  m.def("_impact", [](const std::shared_ptr<BatHandle>& bat, const py::dict& args) {
-    const SceneArgs scene = scene_args(args);
-    const bool later = !(scene.scene.accuracy > 0);
-    ImpactResult r;
-    {
-      py::gil_scoped_release release;
-      r = later ? run_impact(*bat, scene) : run_impact_with_errors(*bat, scene);
-    }
-    py::object estimates = later ? py::cast(LaterEstimates(bat, scene)) : py::none();
-    return py::make_tuple(result_dict(r, bat->bat()), scene.scene.ball.radius, estimates);
+  m.attr("_LATER") = later_marker();
+  m.def("_impact", [](const std::shared_ptr<BatHandle>& bat, const py::tuple& values, const py::type& result_type) -> py::object {
+    const std::optional<SceneArgs> scene = plain_scene_args(values);
+    if (!scene) return py::none();
+    return impact_call(bat, *scene, result_type);
+  });
+  m.def("_impact_checked", [](const std::shared_ptr<BatHandle>& bat, const py::dict& args, const py::type& result_type) {
+    return impact_call(bat, scene_args(args), result_type);
   });
   m.def("_max_threads", &max_threads);
   bind_flight(m);
@@ -426,6 +500,7 @@ outer_diameter and inner_diameter (per slice, m).)");
     return names;
   });
   m.def("_point_arguments", [] { return point_arguments(); });
+  m.def("_scene_arguments", [] { return scene_arguments(); });
   m.def("_scene_record", [](const py::dict& scalars, const std::set<std::string>& per_point) {
     return scene_record(scene_args(scalars, per_point), per_point);
   });

@@ -26,9 +26,9 @@ from pathlib import Path
 
 import numpy as np
 
-from ._sweetspot import (Bat, __version__, _ball, _certify, _describe, _flight, _git_commit, _impact, _impacts,
-                         _max_slices, _max_threads, _min_slices, _point_arguments, _scene_record, _si,
-                         _status_names)
+from ._sweetspot import (_LATER, Bat, __version__, _ball, _certify, _describe, _flight, _git_commit, _impact,
+                         _impact_checked, _impacts, _max_slices, _max_threads, _min_slices, _point_arguments,
+                         _scene_arguments, _scene_record, _si, _status_names)
 
 __all__ = ["Bat", "Result", "ball", "impact", "impacts", "run_study", "certify", "flight", "scene_of", "bat_of",
            "impacts_like", "__version__"]
@@ -87,10 +87,6 @@ def _real(name, value, dimension=None, arrays=False):
     return float(array) if array.ndim == 0 else array.astype(float)
 
 
-_ESTIMATES = ("slicing_error", "step_error", "total_error")  # impact()'s, made when first read
-_LATER = object()  # a Result's value that is made when first read
-
-
 class Result(dict):
     """What impact() and certify() return: a dict with the keys of the program's --json, and
     `attrs`, a dict of the provenance an impacts() dataset carries as its attributes (the resolved
@@ -100,13 +96,14 @@ class Result(dict):
     any way a dict's values are read (r[key], get, items, values, copies, dict(r), json, ==), and
     are the same values, bit for bit, whenever that is."""
 
-    def __init__(self, values, attrs, later=None):
+    # impact() fills its Result in C++ and sets these: the provenance as a function that makes it
+    # (when attrs is first read), and a function giving the values it stored as _LATER.
+    _attrs = None
+    _later = None
+
+    def __init__(self, values, attrs):
         super().__init__(values)
-        self._attrs = attrs  # the dict, or a function that makes it when first read (impact())
-        self._later = later  # a function giving the values stored as _LATER, or None
-        if later is not None:
-            for key in _ESTIMATES:
-                dict.__setitem__(self, key, _LATER)
+        self._attrs = attrs  # the dict, or a function that makes it when first read
 
     def _complete(self):
         """The values made when first read, in their places (a key set or deleted since stays so)."""
@@ -365,6 +362,8 @@ def flight(speed, angle=0.0, *, direction=0.0, backspin=0.0, sidespin=0.0, heigh
 
 
 _POINT = tuple(_point_arguments())  # z, ball_speed, cm_speed, center, omega, e0, ball_mass, ...
+assert _scene_arguments() == [*_POINT, "ball", "pivot", "modes", "mode_tolerance", "accuracy", "step_accuracy",
+                              "integrator", "dt", "tolerance", "window", "theory", "n2000"]  # impact()'s order
 
 
 def _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, pivot, modes,
@@ -419,17 +418,38 @@ def impact(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=No
 
     Returns: a Result, the dict above with `attrs` (the resolved scene as scene_*, the bat, the
     program's version and commit); ``impact(bat, **scene_of(result))`` computes it again bit for bit."""
-    args = _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, pivot, modes,
+    # As given, in the order of _scene_arguments: plain numbers are read in C++ at once, anything
+    # else (a unit, a numpy number, a path) checked and converted by _impact_scene first.
+    given = (z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, undercut, swing_tilt,
+             pitch_spin, friction, ball, pivot, modes, mode_tolerance, accuracy, step_accuracy, integrator, dt,
+             tolerance, window, theory, n2000)
+    called = _impact(bat, given, Result) if isinstance(bat, Bat) else None
+    if called is None:
+        args = _impact_scene(given)
+        _check_bat(bat)
+        called = _impact_checked(bat, args, Result)
+    result, u_max, radius = called
+    if u_max > radius:
+        warnings.warn(f"the ball compressed {1e3 * u_max:.3g} mm, past its radius "
+                      f"{1e3 * radius:.3g} mm: the force law is not meant for that", RuntimeWarning, stacklevel=2)
+    # The provenance costs more than the impact, the error estimates (result._later, without a
+    # stated accuracy) four to five times it: each made when first read.
+    result._attrs = functools.partial(_impact_record, bat, given)
+    return result
+
+
+def _impact_scene(given):
+    """impact()'s arguments (as it passes them to _impact) checked, as _scene gives them."""
+    (z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, undercut, swing_tilt, pitch_spin,
+     friction, ball, pivot, modes, mode_tolerance, accuracy, step_accuracy, integrator, dt, tolerance, window, theory,
+     n2000) = given
+    return _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, pivot, modes,
                   mode_tolerance, accuracy, step_accuracy, integrator, dt, tolerance, window, theory, n2000, ball,
                   oblique=dict(undercut=undercut, swing_tilt=swing_tilt, pitch_spin=pitch_spin, friction=friction))
-    _check_bat(bat)
-    result, radius, estimates = _impact(bat, args)
-    if result["u_max"] > radius:
-        warnings.warn(f"the ball compressed {1e3 * result['u_max']:.3g} mm, past its radius "
-                      f"{1e3 * radius:.3g} mm: the force law is not meant for that", RuntimeWarning, stacklevel=2)
-    # The provenance costs more than the impact, the error estimates four to five times it (without
-    # a stated accuracy): each made when first read.
-    return Result(result, lambda: _record(bat, args), estimates)
+
+
+def _impact_record(bat, given):
+    return _record(bat, _impact_scene(given))
 
 
 def _attrs(name):
