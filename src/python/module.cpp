@@ -12,13 +12,14 @@
 #include <exception>
 #include <set>
 #include <string>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
 #include "bat_design_bindings.hpp"
 #include "bat_handle.hpp"
 #include "flight_bindings.hpp"
+#include "python_values.hpp"
+#include "result_dict.hpp"
 #include "scene_args.hpp"
 #include "scene_record.hpp"
 #include "sweetspot/ball/ball_file.hpp"
@@ -45,47 +46,6 @@ const std::filesystem::path& shipped_bats() {
   }();
   return dir;
 }
-
-// A numpy array of the values, made once and filled (array_t's constructor from a pointer makes a
-// view and then its copy).
-template <class T>
-py::array_t<T> array(const T* values, std::size_t n) {
-  py::array_t<T> a(static_cast<py::ssize_t>(n));
-  std::copy(values, values + n, a.mutable_data());
-  return a;
-}
-py::array_t<double> array(const std::vector<double>& v) { return array(v.data(), v.size()); }
-py::array_t<double> array(const Eigen::VectorXd& v) { return array(v.data(), static_cast<std::size_t>(v.size())); }
-
-// A dict filled under names made once and kept (interned): a result's names are the same on every
-// call, and making and hashing each anew cost as much as the rest of the result's dict.
-class NamedDict {
- public:
-  struct Slot {
-    py::dict& dict;
-    PyObject* key;
-    template <class T>
-    void operator=(T&& value) const {
-      if (PyDict_SetItem(dict.ptr(), key, py::detail::object_or_cast(std::forward<T>(value)).ptr()) != 0)
-        throw py::error_already_set();
-    }
-  };
-  NamedDict() = default;
-  explicit NamedDict(py::dict into) : dict(std::move(into)) {}
-  Slot operator[](const char* name) { return {dict, interned(name)}; }
-  py::dict dict;
-
-  // By the literal's address (a name spelt twice is made twice); called with the GIL held.
-  static PyObject* interned(const char* name) {
-    static std::unordered_map<const char*, PyObject*> names;  // kept for the process's life
-    auto [it, added] = names.try_emplace(name, nullptr);
-    if (added && !(it->second = PyUnicode_InternFromString(name))) {
-      names.erase(it);
-      throw py::error_already_set();
-    }
-    return it->second;
-  }
-};
 
 // The bat's basis for the scene: the rigid basis, the request it asks for, the basis of that
 // request, both cached on the bat (as the program's `impact` and a study's point solve it).
@@ -164,57 +124,6 @@ class LaterEstimates {
   SceneArgs args_;
 };
 
-// The result under the names of `sweetspot impact --json`, in its order; NaN where JSON has null.
-py::dict barrel_dict(const BarrelCalibration& b) {
-  NamedDict d;
-  const double nan = std::nan("");
-  d["load"] = b.load == WallLoad::point ? "point" : "patch";
-  d["calibrated"] = b.calibrated();
-  d["hoop_frequency_measured"] = b.hoop_frequency > 0 ? b.hoop_frequency : nan;
-  d["compression_measured"] = b.compression > 0 ? b.compression : nan;
-  return d.dict;
-}
-
-// The value impact()'s Result holds where it makes a value when first read (sweetspot.Result).
-py::handle later_marker() {
-  static const py::handle marker = py::module_::import("builtins").attr("object")().release();  // kept
-  return marker;
-}
-
-// `into` (empty), or a new dict, filled; with `estimates_later`, the error estimates later_marker().
-py::dict result_dict(const ImpactResult& r, const Bat& bat, py::dict into = {}, bool estimates_later = false) {
-  NamedDict d(std::move(into));
-  d["status"] = to_string(r.status);
-  if (!r.message.empty()) d["message"] = r.message;
-  d["z"] = r.z, d["vf"] = r.vf, d["e_eff"] = r.e_eff, d["contact_time"] = r.contact_time;
-  d["collision_time"] = r.collision_time, d["u_max"] = r.u_max, d["peak_force"] = r.peak_force;
-  d["impulse"] = r.impulse, d["bat_speed"] = r.bat_speed, d["hoop_frequency"] = r.hoop_frequency;
-  d["barrel_compression"] = r.barrel_compression, d["barrel_phi"] = r.barrel_phi;
-  d["barrel_compliance"] = r.barrel_compliance, d["barrel_compression_eff"] = r.barrel_compression_eff;
-  d["e_a"] = r.rig.e_a, d["bbcor"] = r.rig.bbcor;
-  d["besr"] = r.rig.besr, d["bpf"] = r.rig.bpf;
-  NamedDict e;
-  e["initial"] = r.energy.initial, e["ball"] = r.energy.ball, e["bat_translation"] = r.energy.bat_translation;
-  e["bat_rotation"] = r.energy.bat_rotation, e["vibration"] = r.energy.vibration;
-  e["ball_dissipated"] = r.energy.ball_dissipated, e["barrel"] = r.energy.barrel,
-  e["damped"] = r.energy.damped, e["residual"] = r.energy.residual;
-  e["ball_spin"] = r.energy.ball_spin, e["bat_tangential"] = r.energy.bat_tangential;
-  e["friction"] = r.energy.friction;
-  d["energy"] = e.dict;
-  d["launch_angle"] = r.launch.angle, d["backspin"] = r.launch.backspin, d["sidespin"] = r.launch.sidespin;
-  d["mode_energy"] = array(r.mode_energy);
-  d["modes_kept"] = array(r.modes_kept.data(), r.modes_kept.size());
-  d["modes_error"] = r.modes_error;
-  if (estimates_later)
-    d["slicing_error"] = later_marker(), d["step_error"] = later_marker(), d["total_error"] = later_marker();
-  else
-    d["slicing_error"] = r.slicing_error, d["step_error"] = r.step_error, d["total_error"] = r.total_error;
-  d["slices_used"] = r.slices_used, d["step_used"] = r.step_used;
-  d["contacts"] = r.contacts;
-  if (bat.hollow()) d["barrel"] = barrel_dict(bat.material.barrel);
-  return d.dict;
-}
-
 // An empty instance of `type`, a subclass of dict (the package's Result), without its __init__:
 // impact() fills it in place instead of copying a dict into it.
 py::dict empty_instance(const py::type& type) {
@@ -236,7 +145,7 @@ py::tuple impact_call(const std::shared_ptr<BatHandle>& bat, const SceneArgs& sc
     r = later ? run_impact(*bat, scene) : run_impact_with_errors(*bat, scene);
   }
   py::dict result = result_dict(r, bat->bat(), empty_instance(result_type), later);
-  if (later && PyObject_SetAttr(result.ptr(), NamedDict::interned("_later"), py::cast(LaterEstimates(bat, scene)).ptr()))
+  if (later && PyObject_SetAttr(result.ptr(), "_later"_key, py::cast(LaterEstimates(bat, scene)).ptr()))
     throw py::error_already_set();
   return py::make_tuple(std::move(result), r.u_max, scene.scene.ball.radius);
 }
