@@ -159,7 +159,8 @@ const std::vector<std::string> impacts_outputs = {
     "energy_damped", "barrel_compression", "slicing_error", "total_error", "slices_used",
     "launch_angle", "backspin", "sidespin", "energy_ball_spin", "energy_bat_tangential", "energy_friction"};
 
-void fill_row(const ImpactResult& r, double* row) {
+// Point i of the output columns (impacts_outputs' order).
+void fill_point(const ImpactResult& r, double* const* columns, py::ssize_t i) {
   const double values[] = {r.vf,
                            r.e_eff,
                            r.bat_speed,
@@ -193,7 +194,7 @@ void fill_row(const ImpactResult& r, double* row) {
                            r.energy.ball_spin,
                            r.energy.bat_tangential,
                            r.energy.friction};
-  std::copy(std::begin(values), std::end(values), row);
+  for (std::size_t k = 0; k < std::size(values); ++k) columns[k][i] = values[k];
 }
 
 // The most threads impacts runs on: 4 per processor. More only contend for the same cores, and
@@ -229,47 +230,54 @@ py::dict run_impacts(BatHandle& bat, const py::dict& scalars, const py::dict& ar
   std::vector<std::pair<int, const double*>> data;
   for (const auto& [which, column] : columns) data.emplace_back(which, column.data());
 
-  for (py::ssize_t i = 0; i < n; ++i) {  // every point's ball in its ranges before any point runs
-    ImpactScene scene = base.scene;
-    for (const auto& [which, values] : data) set_point_argument(scene, which, values[i]);
-    check_point_ranges(scene);
+  {  // every point's ball in its ranges before any point runs
+    ImpactScene scene = base.scene;  // every point sets the same fields
+    for (py::ssize_t i = 0; i < n; ++i) {
+      for (const auto& [which, values] : data) set_point_argument(scene, which, values[i]);
+      check_point_ranges(scene);
+    }
   }
-  const std::size_t width = impacts_outputs.size();
-  std::vector<double> rows(static_cast<std::size_t>(n) * width);
-  std::vector<int> status(n), contacts(n), kept(n);
+  // The output columns, made first and filled in place by the points (no GIL needed to write them).
+  py::dict out;
+  std::vector<double*> outputs;
+  for (const std::string& name : impacts_outputs) {
+    py::array_t<double> column(n);
+    outputs.push_back(column.mutable_data());
+    out[py::str(name)] = std::move(column);
+  }
+  py::array_t<int> status_column(n), contacts_column(n), kept_column(n);
+  int* const status = status_column.mutable_data();
+  int* const contacts = contacts_column.mutable_data();
+  int* const kept = kept_column.mutable_data();
   std::vector<std::string> errors(n);
   {
     py::gil_scoped_release release;
     if (threads == 0) threads = omp_get_max_threads();
-#pragma omp parallel for schedule(dynamic) num_threads(threads)
-    for (py::ssize_t i = 0; i < n; ++i) {
-      try {
-        SceneArgs args = base;
-        for (const auto& [which, values] : data) set_point_argument(args.scene, which, values[i]);
-        const ImpactResult r = run_impact(bat, args);
-        fill_row(r, &rows[i * width]);
-        status[i] = static_cast<int>(r.status), contacts[i] = r.contacts;
-        kept[i] = static_cast<int>(r.modes_kept.size());
-      } catch (const InputError& e) {
-        errors[i] = e.what();
-      } catch (const std::exception& e) {  // not bad input: the point fails, as a study's would
-        std::fill_n(&rows[i * width], width, std::nan(""));
-        status[i] = static_cast<int>(CollisionStatus::failed), contacts[i] = -1, kept[i] = -1;
+#pragma omp parallel num_threads(threads)
+    {
+      SceneArgs args = base;  // each thread's; every point sets the same fields
+#pragma omp for schedule(dynamic)
+      for (py::ssize_t i = 0; i < n; ++i) {
+        try {
+          for (const auto& [which, values] : data) set_point_argument(args.scene, which, values[i]);
+          const ImpactResult r = run_impact(bat, args);
+          fill_point(r, outputs.data(), i);
+          status[i] = static_cast<int>(r.status), contacts[i] = r.contacts;
+          kept[i] = static_cast<int>(r.modes_kept.size());
+        } catch (const InputError& e) {
+          errors[i] = e.what();
+        } catch (const std::exception& e) {  // not bad input: the point fails, as a study's would
+          for (double* output : outputs) output[i] = std::nan("");
+          status[i] = static_cast<int>(CollisionStatus::failed), contacts[i] = -1, kept[i] = -1;
+        }
       }
     }
   }
   for (const std::string& e : errors)
     if (!e.empty()) throw InputError(e);
-  py::dict out;
-  for (std::size_t k = 0; k < width; ++k) {
-    py::array_t<double> column(n);
-    double* p = column.mutable_data();
-    for (py::ssize_t i = 0; i < n; ++i) p[i] = rows[i * width + k];
-    out[py::str(impacts_outputs[k])] = column;
-  }
-  out["status"] = py::array_t<int>(n, status.data());
-  out["contacts"] = py::array_t<int>(n, contacts.data());
-  out["modes_kept"] = py::array_t<int>(n, kept.data());
+  out["status"] = std::move(status_column);
+  out["contacts"] = std::move(contacts_column);
+  out["modes_kept"] = std::move(kept_column);
   return out;
 }
 
