@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <string_view>
@@ -78,9 +79,18 @@ std::string text(const std::string& name, const py::handle& value, const std::st
   throw InputError(name + " " + py::repr(value).cast<std::string>() + ": expected " + expected);
 }
 
-// A point argument: a quantity where it has a dimension, else a plain number.
-double point_number(const std::string& name, const py::handle& value) {
-  const std::optional<Dimension> dimension = point_argument_dimension(name);
+// Each point argument's dimension, in point_arguments()' order (none: e0, k1, a, swing_tilt in
+// degrees, pitch_spin in rpm, friction).
+constexpr std::optional<Dimension> point_dimensions[] = {
+    Dimension::length, Dimension::speed, Dimension::speed, Dimension::length, Dimension::angular_speed,
+    std::nullopt,      Dimension::mass,  Dimension::length, std::nullopt,     std::nullopt,
+    Dimension::length, std::nullopt,     std::nullopt,      std::nullopt};
+static_assert(std::size(point_dimensions) == arg::ball, "one per point argument");
+
+// Point argument k: a quantity where it has a dimension, else a plain number.
+double point_number(int k, const py::handle& value) {
+  const std::string& name = point_arguments()[k];
+  const std::optional<Dimension> dimension = point_dimensions[k];
   return dimension ? quantity_argument(name, value, *dimension) : number(name, value);
 }
 
@@ -135,11 +145,9 @@ double number(const std::string& name, const py::handle& value) {
 }
 
 std::optional<Dimension> point_argument_dimension(const std::string& name) {
-  if (name == "z" || name == "center" || name == "ball_radius" || name == "undercut") return Dimension::length;
-  if (name == "ball_speed" || name == "cm_speed") return Dimension::speed;
-  if (name == "omega") return Dimension::angular_speed;
-  if (name == "ball_mass") return Dimension::mass;
-  return std::nullopt;
+  const auto& names = point_arguments();
+  const auto it = std::find(names.begin(), names.end(), name);
+  return it == names.end() ? std::nullopt : point_dimensions[it - names.begin()];
 }
 
 double quantity_argument(const std::string& name, const py::handle& value, Dimension dimension) {
@@ -217,7 +225,7 @@ SceneArgs scene_from(const SceneValues& values, const std::set<std::string>& per
   }
   const auto& names = point_arguments();
   for (std::size_t k = 0; k < names.size(); ++k)
-    if (has(static_cast<int>(k))) set_point_argument(s, static_cast<int>(k), point_number(names[k], get(static_cast<int>(k))));
+    if (has(static_cast<int>(k))) set_point_argument(s, static_cast<int>(k), point_number(static_cast<int>(k), get(static_cast<int>(k))));
   check_point_ranges(s, per_point);
   if (!given(arg::z)) throw InputError("impact: z is required");
   if (!given(arg::ball_speed)) throw InputError("impact: ball_speed is required");
