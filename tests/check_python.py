@@ -5,6 +5,7 @@ bat files' bats, and certify equals `sweetspot certify --json`.
 
     /usr/bin/python3 tests/check_python.py MODULE_DIR PROGRAM SOURCE_DIR BUILD_DIR WORK_DIR
 """
+import copy
 import json
 import math
 import os
@@ -80,7 +81,8 @@ estimates = ("slicing_error", "step_error", "total_error")
 readings = {"r[key]": lambda r: r["step_error"], "get": lambda r: r.get("total_error"), "items": lambda r: dict(r.items()),
             "values": lambda r: list(r.values()), "dict(r)": dict, "{**r}": lambda r: {**r}, "f(**r)": lambda r: (lambda **k: k)(**r),
             "update": lambda r: {}.update(r), "copy": lambda r: r.copy(), "json": lambda r: json.dumps(r, default=lambda v: v.tolist()),
-            "repr": repr, "==": lambda r: r == {}, "|": lambda r: r | {}, "pop": lambda r: r.pop("contacts")}
+            "repr": repr, "==": lambda r: r == {}, "|": lambda r: r | {}, "pop": lambda r: r.pop("contacts"),
+            "copy.copy": copy.copy, "copy.deepcopy": copy.deepcopy}
 for name, read in readings.items():
     got = sweetspot.impact(bat, **kwargs)
     read(got)

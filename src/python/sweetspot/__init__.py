@@ -434,7 +434,7 @@ def impact(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=No
                       f"{1e3 * radius:.3g} mm: the force law is not meant for that", RuntimeWarning, stacklevel=2)
     # The provenance costs more than the impact, the error estimates (result._later, without a
     # stated accuracy) four to five times it: each made when first read.
-    result._attrs = functools.partial(_impact_record, bat, given)
+    result._attrs = lambda: _impact_record(bat, given)  # a closure, which copy.deepcopy leaves as it is
     return result
 
 
