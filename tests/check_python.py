@@ -5,6 +5,7 @@ bat files' bats, and certify equals `sweetspot certify --json`.
 
     /usr/bin/python3 tests/check_python.py MODULE_DIR PROGRAM SOURCE_DIR BUILD_DIR WORK_DIR
 """
+import copy
 import json
 import math
 import os
@@ -71,6 +72,46 @@ for args, kwargs in scenes:
     check(list(expected) == list(got), f"keys {list(expected)} != {list(got)}")
     for key in expected:
         check(same(expected[key], got.get(key)), f"{' '.join(args)}: {key} {expected[key]!r} != {got.get(key)!r}")
+
+# 1b. impact()'s error estimates are made when first read (they cost several impacts): every way
+# of reading a dict's values gives the program's, whichever is first, and nothing else.
+args, kwargs = scenes[0]
+expected = program_json(args)
+estimates = ("slicing_error", "step_error", "total_error")
+readings = {"r[key]": lambda r: r["step_error"], "get": lambda r: r.get("total_error"), "items": lambda r: dict(r.items()),
+            "values": lambda r: list(r.values()), "dict(r)": dict, "{**r}": lambda r: {**r}, "f(**r)": lambda r: (lambda **k: k)(**r),
+            "update": lambda r: {}.update(r), "copy": lambda r: r.copy(), "json": lambda r: json.dumps(r, default=lambda v: v.tolist()),
+            "repr": repr, "==": lambda r: r == {}, "|": lambda r: r | {}, "pop": lambda r: r.pop("contacts"),
+            "copy.copy": copy.copy, "copy.deepcopy": copy.deepcopy}
+for name, read in readings.items():
+    got = sweetspot.impact(bat, **kwargs)
+    read(got)
+    check(all(same(expected[k], dict.__getitem__(got, k)) for k in estimates),
+          f"estimates after {name}: {[dict.__getitem__(got, k) for k in estimates]}")
+got = sweetspot.impact(bat, **kwargs)
+check(same(expected, json.loads(json.dumps({k: v for k, v in got.items() if k not in ("mode_energy", "modes_kept")}))
+                       | {k: expected[k] for k in ("mode_energy", "modes_kept")}), "a Result through json")
+# impact() reads plain floats and ints in C++ at once and has the package check anything else
+# first (numpy numbers, units): the same scene either way, the same result and record, bit for bit.
+plain = sweetspot.impact(bat, z=0.7, ball_speed=40, cm_speed=10, omega=40, e0=0.5, dt=1e-5)
+checked = sweetspot.impact(bat, z=np.float64(0.7), ball_speed="40 m/s", cm_speed=np.int64(10), omega=40.0,
+                           e0=np.float64(0.5), dt=np.float64(1e-5))
+
+
+def identical(a, b):
+    """The same keys in the same order, the same bits (NaN too)."""
+    if isinstance(a, dict):
+        return isinstance(b, dict) and list(a) == list(b) and all(identical(a[k], b[k]) for k in a)
+    if isinstance(a, str):
+        return a == b
+    return np.asarray(a).dtype == np.asarray(b).dtype and np.asarray(a).tobytes() == np.asarray(b).tobytes()
+
+
+check(identical(plain, checked), "plain numbers and checked ones give the same result")
+check(plain.attrs == checked.attrs, "plain numbers and checked ones give the same record")
+got = sweetspot.impact(bat, **kwargs)
+got["total_error"] = -1.0
+check(got["total_error"] == -1.0 and same(expected["slicing_error"], got["slicing_error"]), "a value set stays set")
 
 # 2. impacts: broadcasting (ball_speed down, z across) and equality with single impacts.
 z = np.array([0.5, 0.6, 0.7, 0.75, 0.8])

@@ -18,6 +18,8 @@
 #include "bat_design_bindings.hpp"
 #include "bat_handle.hpp"
 #include "flight_bindings.hpp"
+#include "python_values.hpp"
+#include "result_dict.hpp"
 #include "scene_args.hpp"
 #include "scene_record.hpp"
 #include "sweetspot/ball/ball_file.hpp"
@@ -44,9 +46,6 @@ const std::filesystem::path& shipped_bats() {
   }();
   return dir;
 }
-
-py::array_t<double> array(const std::vector<double>& v) { return py::array_t<double>(v.size(), v.data()); }
-py::array_t<double> array(const Eigen::VectorXd& v) { return py::array_t<double>(v.size(), v.data()); }
 
 // The bat's basis for the scene: the rigid basis, the request it asks for, the basis of that
 // request, both cached on the bat (as the program's `impact` and a study's point solve it).
@@ -99,45 +98,56 @@ ImpactResult run_impact_with_errors(BatHandle& bat, SceneArgs args) {
   return checked(simulate_impact_with_errors(*basis, finer_bases, args.scene));
 }
 
-// The result under the names of `sweetspot impact --json`, in its order; NaN where JSON has null.
-py::dict barrel_dict(const BarrelCalibration& b) {
-  py::dict d;
-  const double nan = std::nan("");
-  d["load"] = b.load == WallLoad::point ? "point" : "patch";
-  d["calibrated"] = b.calibrated();
-  d["hoop_frequency_measured"] = b.hoop_frequency > 0 ? b.hoop_frequency : nan;
-  d["compression_measured"] = b.compression > 0 ? b.compression : nan;
-  return d;
+// impact()'s error estimates without a stated accuracy, made when the result's slicing_error,
+// step_error or total_error is first read: they cost the same impact again at twice and four times
+// the step and on the bat at twice and four times its slices (the bat's modes solved there on the
+// first use), four to five times the impact itself, which a caller reading vf alone need not pay.
+// The bat and the resolved scene are kept, so the estimates are those of the call's impact, bit for
+// bit (the impact is deterministic), whenever they are read.
+class LaterEstimates {
+ public:
+  LaterEstimates(std::shared_ptr<BatHandle> bat, SceneArgs args) : bat_(std::move(bat)), args_(std::move(args)) {}
+
+  py::dict operator()() const {
+    ImpactResult r;
+    {
+      py::gil_scoped_release release;
+      r = run_impact_with_errors(*bat_, args_);
+    }
+    py::dict d;
+    d["slicing_error"] = r.slicing_error, d["step_error"] = r.step_error, d["total_error"] = r.total_error;
+    return d;
+  }
+
+ private:
+  std::shared_ptr<BatHandle> bat_;
+  SceneArgs args_;
+};
+
+// An empty instance of `type`, a subclass of dict (the package's Result), without its __init__:
+// impact() fills it in place instead of copying a dict into it.
+py::dict empty_instance(const py::type& type) {
+  auto* t = reinterpret_cast<PyTypeObject*>(type.ptr());
+  if (!PyType_IsSubtype(t, &PyDict_Type)) throw py::type_error("impact: expected a subclass of dict");
+  auto made = py::reinterpret_steal<py::object>(t->tp_new(t, py::tuple().ptr(), nullptr));
+  if (!made) throw py::error_already_set();
+  return made;
 }
 
-py::dict result_dict(const ImpactResult& r, const Bat& bat) {
-  py::dict d;
-  d["status"] = to_string(r.status);
-  if (!r.message.empty()) d["message"] = r.message;
-  d["z"] = r.z, d["vf"] = r.vf, d["e_eff"] = r.e_eff, d["contact_time"] = r.contact_time;
-  d["collision_time"] = r.collision_time, d["u_max"] = r.u_max, d["peak_force"] = r.peak_force;
-  d["impulse"] = r.impulse, d["bat_speed"] = r.bat_speed, d["hoop_frequency"] = r.hoop_frequency;
-  d["barrel_compression"] = r.barrel_compression, d["barrel_phi"] = r.barrel_phi;
-  d["barrel_compliance"] = r.barrel_compliance, d["barrel_compression_eff"] = r.barrel_compression_eff;
-  d["e_a"] = r.rig.e_a, d["bbcor"] = r.rig.bbcor;
-  d["besr"] = r.rig.besr, d["bpf"] = r.rig.bpf;
-  py::dict e;
-  e["initial"] = r.energy.initial, e["ball"] = r.energy.ball, e["bat_translation"] = r.energy.bat_translation;
-  e["bat_rotation"] = r.energy.bat_rotation, e["vibration"] = r.energy.vibration;
-  e["ball_dissipated"] = r.energy.ball_dissipated, e["barrel"] = r.energy.barrel,
-  e["damped"] = r.energy.damped, e["residual"] = r.energy.residual;
-  e["ball_spin"] = r.energy.ball_spin, e["bat_tangential"] = r.energy.bat_tangential;
-  e["friction"] = r.energy.friction;
-  d["energy"] = e;
-  d["launch_angle"] = r.launch.angle, d["backspin"] = r.launch.backspin, d["sidespin"] = r.launch.sidespin;
-  d["mode_energy"] = array(r.mode_energy);
-  d["modes_kept"] = py::array_t<int>(r.modes_kept.size(), r.modes_kept.data());
-  d["modes_error"] = r.modes_error;
-  d["slicing_error"] = r.slicing_error, d["step_error"] = r.step_error, d["total_error"] = r.total_error;
-  d["slices_used"] = r.slices_used, d["step_used"] = r.step_used;
-  d["contacts"] = r.contacts;
-  if (bat.hollow()) d["barrel"] = barrel_dict(bat.material.barrel);
-  return d;
+// sweetspot.impact's call (below): the result as a `result_type`, its ball's compression u_max and
+// radius (impact() warns past it). Without a stated accuracy its error estimates are made when
+// first read: the result's `_later` makes them (LaterEstimates).
+py::tuple impact_call(const std::shared_ptr<BatHandle>& bat, const SceneArgs& scene, const py::type& result_type) {
+  const bool later = !(scene.scene.accuracy > 0);
+  ImpactResult r;
+  {
+    py::gil_scoped_release release;
+    r = later ? run_impact(*bat, scene) : run_impact_with_errors(*bat, scene);
+  }
+  py::dict result = result_dict(r, bat->bat(), empty_instance(result_type), later);
+  if (later && PyObject_SetAttr(result.ptr(), "_later"_key, py::cast(LaterEstimates(bat, scene)).ptr()))
+    throw py::error_already_set();
+  return py::make_tuple(std::move(result), r.u_max, scene.scene.ball.radius);
 }
 
 // The scalar outputs of a study dataset that `impacts` gives, in the order of its variables.
@@ -149,7 +159,8 @@ const std::vector<std::string> impacts_outputs = {
     "energy_damped", "barrel_compression", "slicing_error", "total_error", "slices_used",
     "launch_angle", "backspin", "sidespin", "energy_ball_spin", "energy_bat_tangential", "energy_friction"};
 
-void fill_row(const ImpactResult& r, double* row) {
+// Point i of the output columns (impacts_outputs' order).
+void fill_point(const ImpactResult& r, double* const* columns, py::ssize_t i) {
   const double values[] = {r.vf,
                            r.e_eff,
                            r.bat_speed,
@@ -183,7 +194,7 @@ void fill_row(const ImpactResult& r, double* row) {
                            r.energy.ball_spin,
                            r.energy.bat_tangential,
                            r.energy.friction};
-  std::copy(std::begin(values), std::end(values), row);
+  for (std::size_t k = 0; k < std::size(values); ++k) columns[k][i] = values[k];
 }
 
 // The most threads impacts runs on: 4 per processor. More only contend for the same cores, and
@@ -219,47 +230,54 @@ py::dict run_impacts(BatHandle& bat, const py::dict& scalars, const py::dict& ar
   std::vector<std::pair<int, const double*>> data;
   for (const auto& [which, column] : columns) data.emplace_back(which, column.data());
 
-  for (py::ssize_t i = 0; i < n; ++i) {  // every point's ball in its ranges before any point runs
-    ImpactScene scene = base.scene;
-    for (const auto& [which, values] : data) set_point_argument(scene, which, values[i]);
-    check_point_ranges(scene);
+  {  // every point's ball in its ranges before any point runs
+    ImpactScene scene = base.scene;  // every point sets the same fields
+    for (py::ssize_t i = 0; i < n; ++i) {
+      for (const auto& [which, values] : data) set_point_argument(scene, which, values[i]);
+      check_point_ranges(scene);
+    }
   }
-  const std::size_t width = impacts_outputs.size();
-  std::vector<double> rows(static_cast<std::size_t>(n) * width);
-  std::vector<int> status(n), contacts(n), kept(n);
+  // The output columns, made first and filled in place by the points (no GIL needed to write them).
+  py::dict out;
+  std::vector<double*> outputs;
+  for (const std::string& name : impacts_outputs) {
+    py::array_t<double> column(n);
+    outputs.push_back(column.mutable_data());
+    out[py::str(name)] = std::move(column);
+  }
+  py::array_t<int> status_column(n), contacts_column(n), kept_column(n);
+  int* const status = status_column.mutable_data();
+  int* const contacts = contacts_column.mutable_data();
+  int* const kept = kept_column.mutable_data();
   std::vector<std::string> errors(n);
   {
     py::gil_scoped_release release;
     if (threads == 0) threads = omp_get_max_threads();
-#pragma omp parallel for schedule(dynamic) num_threads(threads)
-    for (py::ssize_t i = 0; i < n; ++i) {
-      try {
-        SceneArgs args = base;
-        for (const auto& [which, values] : data) set_point_argument(args.scene, which, values[i]);
-        const ImpactResult r = run_impact(bat, args);
-        fill_row(r, &rows[i * width]);
-        status[i] = static_cast<int>(r.status), contacts[i] = r.contacts;
-        kept[i] = static_cast<int>(r.modes_kept.size());
-      } catch (const InputError& e) {
-        errors[i] = e.what();
-      } catch (const std::exception& e) {  // not bad input: the point fails, as a study's would
-        std::fill_n(&rows[i * width], width, std::nan(""));
-        status[i] = static_cast<int>(CollisionStatus::failed), contacts[i] = -1, kept[i] = -1;
+#pragma omp parallel num_threads(threads)
+    {
+      SceneArgs args = base;  // each thread's; every point sets the same fields
+#pragma omp for schedule(dynamic)
+      for (py::ssize_t i = 0; i < n; ++i) {
+        try {
+          for (const auto& [which, values] : data) set_point_argument(args.scene, which, values[i]);
+          const ImpactResult r = run_impact(bat, args);
+          fill_point(r, outputs.data(), i);
+          status[i] = static_cast<int>(r.status), contacts[i] = r.contacts;
+          kept[i] = static_cast<int>(r.modes_kept.size());
+        } catch (const InputError& e) {
+          errors[i] = e.what();
+        } catch (const std::exception& e) {  // not bad input: the point fails, as a study's would
+          for (double* output : outputs) output[i] = std::nan("");
+          status[i] = static_cast<int>(CollisionStatus::failed), contacts[i] = -1, kept[i] = -1;
+        }
       }
     }
   }
   for (const std::string& e : errors)
     if (!e.empty()) throw InputError(e);
-  py::dict out;
-  for (std::size_t k = 0; k < width; ++k) {
-    py::array_t<double> column(n);
-    double* p = column.mutable_data();
-    for (py::ssize_t i = 0; i < n; ++i) p[i] = rows[i * width + k];
-    out[py::str(impacts_outputs[k])] = column;
-  }
-  out["status"] = py::array_t<int>(n, status.data());
-  out["contacts"] = py::array_t<int>(n, contacts.data());
-  out["modes_kept"] = py::array_t<int>(n, kept.data());
+  out["status"] = std::move(status_column);
+  out["contacts"] = std::move(contacts_column);
+  out["modes_kept"] = std::move(kept_column);
   return out;
 }
 
@@ -370,15 +388,18 @@ outer_diameter and inner_diameter (per slice, m).)");
   bind_bat_design(m, bat);
   bind_quantity_arguments(m);
 
-  // The result, and the radius of the ball the scene resolved (impact() warns past it).
-  m.def("_impact", [](BatHandle& bat, const py::dict& args) {
-    const SceneArgs scene = scene_args(args);
-    ImpactResult r;
-    {
-      py::gil_scoped_release release;
-      r = run_impact_with_errors(bat, scene);
-    }
-    return py::make_tuple(result_dict(r, bat.bat()), scene.scene.ball.radius);
+  // impact(): see impact_call. _impact takes the arguments as they were given and gives None where
+  // the package must check and convert one first (plain_scene_args); _impact_checked takes them as
+  // the package made them.
+  py::class_<LaterEstimates>(m, "_LaterEstimates").def("__call__", &LaterEstimates::operator());
+  m.attr("_LATER") = later_marker();
+  m.def("_impact", [](const std::shared_ptr<BatHandle>& bat, const py::tuple& values, const py::type& result_type) -> py::object {
+    const std::optional<SceneArgs> scene = plain_scene_args(values);
+    if (!scene) return py::none();
+    return impact_call(bat, *scene, result_type);
+  });
+  m.def("_impact_checked", [](const std::shared_ptr<BatHandle>& bat, const py::dict& args, const py::type& result_type) {
+    return impact_call(bat, scene_args(args), result_type);
   });
   m.def("_max_threads", &max_threads);
   bind_flight(m);
@@ -396,6 +417,7 @@ outer_diameter and inner_diameter (per slice, m).)");
     return names;
   });
   m.def("_point_arguments", [] { return point_arguments(); });
+  m.def("_scene_arguments", [] { return scene_arguments(); });
   m.def("_scene_record", [](const py::dict& scalars, const std::set<std::string>& per_point) {
     return scene_record(scene_args(scalars, per_point), per_point);
   });

@@ -2,6 +2,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <algorithm>
+#include <array>
+#include <optional>
+#include <string_view>
 #include <tuple>
 
 #include <pybind11/stl.h>
@@ -18,13 +22,38 @@ namespace sweetspot::python {
 
 namespace {
 
-const std::set<std::string>& known_arguments() {
-  static const std::set<std::string> names = {
-      "z",  "ball_speed", "cm_speed",    "center", "omega",          "e0",       "ball_mass", "ball_radius",
-      "k1", "a",          "pivot",       "modes",  "mode_tolerance", "accuracy", "integrator", "dt",
-      "tolerance", "window", "theory", "n2000", "ball", "step_accuracy", "undercut", "swing_tilt", "pitch_spin",
-      "friction"};
-  return names;
+// Indices into scene_arguments(): the point arguments first (0 to 13), then these.
+namespace arg {
+enum : int {
+  z = 0,
+  ball_speed = 1,
+  cm_speed = 2,
+  center = 3,
+  ball = 14,
+  pivot,
+  modes,
+  mode_tolerance,
+  accuracy,
+  step_accuracy,
+  integrator,
+  dt,
+  tolerance,
+  window,
+  theory,
+  n2000,
+  count
+};
+}  // namespace arg
+
+// Each argument's value (a null handle or None where not given), by index into scene_arguments().
+using SceneValues = std::array<py::handle, arg::count>;
+
+// The index of an argument's name, or -1.
+int argument_index(std::string_view name) {
+  const auto& names = scene_arguments();
+  for (std::size_t k = 0; k < names.size(); ++k)
+    if (names[k] == name) return static_cast<int>(k);
+  return -1;
 }
 
 bool is_numpy(const py::handle& value, const char* type) {
@@ -50,9 +79,18 @@ std::string text(const std::string& name, const py::handle& value, const std::st
   throw InputError(name + " " + py::repr(value).cast<std::string>() + ": expected " + expected);
 }
 
-// A point argument: a quantity where it has a dimension, else a plain number.
-double point_number(const std::string& name, const py::handle& value) {
-  const std::optional<Dimension> dimension = point_argument_dimension(name);
+// Each point argument's dimension, in point_arguments()' order (none: e0, k1, a, swing_tilt in
+// degrees, pitch_spin in rpm, friction).
+constexpr std::optional<Dimension> point_dimensions[] = {
+    Dimension::length, Dimension::speed, Dimension::speed, Dimension::length, Dimension::angular_speed,
+    std::nullopt,      Dimension::mass,  Dimension::length, std::nullopt,     std::nullopt,
+    Dimension::length, std::nullopt,     std::nullopt,      std::nullopt};
+static_assert(std::size(point_dimensions) == arg::ball, "one per point argument");
+
+// Point argument k: a quantity where it has a dimension, else a plain number.
+double point_number(int k, const py::handle& value) {
+  const std::string& name = point_arguments()[k];
+  const std::optional<Dimension> dimension = point_dimensions[k];
   return dimension ? quantity_argument(name, value, *dimension) : number(name, value);
 }
 
@@ -107,11 +145,9 @@ double number(const std::string& name, const py::handle& value) {
 }
 
 std::optional<Dimension> point_argument_dimension(const std::string& name) {
-  if (name == "z" || name == "center" || name == "ball_radius" || name == "undercut") return Dimension::length;
-  if (name == "ball_speed" || name == "cm_speed") return Dimension::speed;
-  if (name == "omega") return Dimension::angular_speed;
-  if (name == "ball_mass") return Dimension::mass;
-  return std::nullopt;
+  const auto& names = point_arguments();
+  const auto it = std::find(names.begin(), names.end(), name);
+  return it == names.end() ? std::nullopt : point_dimensions[it - names.begin()];
 }
 
 double quantity_argument(const std::string& name, const py::handle& value, Dimension dimension) {
@@ -167,65 +203,73 @@ int parse_modes(const py::handle& value) {
                    ": expected a number of vibrational modes (0, 1, 2, ...), 'all' or 'auto'");
 }
 
-SceneArgs scene_args(const py::dict& args, const std::set<std::string>& per_point) {
+namespace {
+
+// The scene of the arguments' values; `per_point` names those given as arrays instead.
+SceneArgs scene_from(const SceneValues& values, const std::set<std::string>& per_point) {
+  std::array<bool, arg::count> varies{};
+  for (const std::string& name : per_point)
+    if (const int k = argument_index(name); k >= 0) varies[k] = true;
   SceneArgs out;
   ImpactScene& s = out.scene;
-  std::set<std::string> given = per_point;
-  for (const auto& [key, value] : args) {
-    const std::string name = key.cast<std::string>();
-    if (!known_arguments().contains(name)) throw py::type_error("unexpected keyword argument '" + name + "'");
-    if (!value.is_none()) given.insert(name);
-  }
-  auto has = [&](const char* name) { return given.contains(name) && !per_point.contains(name); };
-  auto get = [&](const char* name) { return args[name]; };
+  const auto given = [&](int k) { return varies[k] || (values[k] && !values[k].is_none()); };
+  const auto has = [&](int k) { return given(k) && !varies[k]; };
+  const auto get = [&](int k) { return values[k]; };
 
   // The named ball first: the ball's values given beside it (and per point) override its own.
-  if (has("ball")) {
-    if (!py::isinstance<py::str>(get("ball")))
-      throw InputError("ball " + py::str(get("ball")).cast<std::string>() +
+  if (has(arg::ball)) {
+    if (!py::isinstance<py::str>(get(arg::ball)))
+      throw InputError("ball " + py::str(get(arg::ball)).cast<std::string>() +
                        ": expected a preset's name or a TOML file with a [ball] table");
-    s.ball = load_ball(get("ball").cast<std::string>(), "ball").ball;
+    s.ball = load_ball(get(arg::ball).cast<std::string>(), "ball").ball;
   }
   const auto& names = point_arguments();
   for (std::size_t k = 0; k < names.size(); ++k)
-    if (has(names[k].c_str()))
-      set_point_argument(s, static_cast<int>(k), point_number(names[k], get(names[k].c_str())));
+    if (has(static_cast<int>(k))) set_point_argument(s, static_cast<int>(k), point_number(static_cast<int>(k), get(static_cast<int>(k))));
   check_point_ranges(s, per_point);
-  if (!given.contains("z")) throw InputError("impact: z is required");
-  if (!given.contains("ball_speed")) throw InputError("impact: ball_speed is required");
-  const bool cm = given.contains("cm_speed"), center = given.contains("center");
+  if (!given(arg::z)) throw InputError("impact: z is required");
+  if (!given(arg::ball_speed)) throw InputError("impact: ball_speed is required");
+  const bool cm = given(arg::cm_speed), center = given(arg::center);
   if (!cm && !center) throw InputError("impact: give the swing as cm_speed or as center");
   if (cm && center) throw InputError("impact: cm_speed excludes center: give the swing as one of them");
   s.swing.about_center = center;
 
-  if (has("theory")) out.theory = parse_beam_theory(text("theory", get("theory"), "\"timoshenko\" or \"euler-bernoulli\""));
-  if (has("pivot")) s.pivoted = flag("pivot", get("pivot"));
-  if (has("mode_tolerance")) s.mode_tolerance = number("mode_tolerance", get("mode_tolerance"));
+  if (has(arg::theory)) out.theory = parse_beam_theory(text("theory", get(arg::theory), "\"timoshenko\" or \"euler-bernoulli\""));
+  if (has(arg::pivot)) s.pivoted = flag("pivot", get(arg::pivot));
+  if (has(arg::mode_tolerance)) s.mode_tolerance = number("mode_tolerance", get(arg::mode_tolerance));
   // As a study's keys and --accuracy, --step-accuracy: each in its range, neither beside what it
   // chooses itself.
-  if (has("accuracy")) {
-    s.accuracy = number("accuracy", get("accuracy"));
+  if (has(arg::accuracy)) {
+    s.accuracy = number("accuracy", get(arg::accuracy));
     if (!(s.accuracy >= min_accuracy && s.accuracy <= max_accuracy))
-      throw InputError("accuracy " + py::repr(get("accuracy")).cast<std::string>() + ": expected " + accuracy_expected);
+      throw InputError("accuracy " + py::repr(get(arg::accuracy)).cast<std::string>() + ": expected " + accuracy_expected);
   }
-  if (has("step_accuracy")) {
-    s.step_accuracy = number("step_accuracy", get("step_accuracy"));
+  if (has(arg::step_accuracy)) {
+    s.step_accuracy = number("step_accuracy", get(arg::step_accuracy));
     if (!(std::isfinite(s.step_accuracy) && s.step_accuracy > 0))
-      throw InputError("step_accuracy " + py::repr(get("step_accuracy")).cast<std::string>() + ": expected " +
+      throw InputError("step_accuracy " + py::repr(get(arg::step_accuracy)).cast<std::string>() + ": expected " +
                        step_accuracy_expected);
   }
-  for (const AccuracyExclusion& pair : accuracy_exclusions)
-    if (has(pair.given) && has(pair.accuracy))
+  // The pairs' indices (-1: no argument here, as "slices"), found once.
+  static const auto pairs = [] {
+    std::vector<std::pair<int, int>> indices;
+    for (const AccuracyExclusion& pair : accuracy_exclusions)
+      indices.emplace_back(argument_index(pair.given), argument_index(pair.accuracy));
+    return indices;
+  }();
+  for (std::size_t p = 0; p < pairs.size(); ++p)
+    if (const AccuracyExclusion& pair = accuracy_exclusions[p];
+        pairs[p].first >= 0 && pairs[p].second >= 0 && has(pairs[p].first) && has(pairs[p].second))
       throw InputError(std::string("impact: ") + pair.given + " excludes " + pair.accuracy + " (which chooses " +
                        pair.chooses + "): give one of them");
-  if (has("tolerance")) s.integrator.tolerance = number("tolerance", get("tolerance"));
-  if (has("window")) s.integrator.window = number("window", get("window"));
+  if (has(arg::tolerance)) s.integrator.tolerance = number("tolerance", get(arg::tolerance));
+  if (has(arg::window)) s.integrator.window = number("window", get(arg::window));
   // As the program's --n2000: RK4 at 5 us and 18 modes unless integrator, dt or modes say otherwise.
-  const bool n2000 = has("n2000") && flag("n2000", get("n2000"));
-  if (n2000 && !has("integrator")) s.integrator = with_n2000_settings(s.integrator);
-  if (has("integrator"))
-    s.integrator.method = parse_method(text("integrator", get("integrator"), "\"exact\", \"rk4\" or \"dopri\""));
-  if (has("dt")) s.integrator.dt = number("dt", get("dt"));
+  const bool n2000 = has(arg::n2000) && flag("n2000", get(arg::n2000));
+  if (n2000 && !has(arg::integrator)) s.integrator = with_n2000_settings(s.integrator);
+  if (has(arg::integrator))
+    s.integrator.method = parse_method(text("integrator", get(arg::integrator), "\"exact\", \"rk4\" or \"dopri\""));
+  if (has(arg::dt)) s.integrator.dt = number("dt", get(arg::dt));
   else s.integrator.dt = default_step(s.integrator.method);
   if (!(s.integrator.dt >= finest_step)) {
     char text[160];
@@ -233,8 +277,43 @@ SceneArgs scene_args(const py::dict& args, const std::set<std::string>& per_poin
                   "steps per contact)", s.integrator.dt, finest_step);
     throw InputError(text);
   }
-  s.vibrational_modes = has("modes") ? parse_modes(get("modes")) : n2000 ? n2000_modes : auto_modes;
+  s.vibrational_modes = has(arg::modes) ? parse_modes(get(arg::modes)) : n2000 ? n2000_modes : auto_modes;
   return out;
+}
+
+}  // namespace
+
+SceneArgs scene_args(const py::dict& args, const std::set<std::string>& per_point) {
+  SceneValues values;
+  for (const auto& [key, value] : args) {
+    const std::string name = key.cast<std::string>();
+    const int k = argument_index(name);
+    if (k < 0) throw py::type_error("unexpected keyword argument '" + name + "'");
+    values[k] = value;
+  }
+  return scene_from(values, per_point);
+}
+
+std::optional<SceneArgs> plain_scene_args(const py::tuple& given) {
+  if (given.size() != arg::count) throw py::type_error("impact: expected " + std::to_string(arg::count) + " arguments");
+  SceneValues values;
+  std::array<py::object, arg::count> floats;  // the ints as floats, held while the scene is read
+  for (int k = 0; k < arg::count; ++k) {
+    PyObject* value = given[k].ptr();
+    values[k] = value;
+    const bool number = k < arg::ball || (k >= arg::mode_tolerance && k != arg::integrator && k <= arg::window);
+    if (value == Py_None || (number ? PyFloat_CheckExact(value) : k != arg::ball || PyUnicode_CheckExact(value)))
+      continue;
+    if (!number || !PyLong_CheckExact(value)) return std::nullopt;
+    const double x = PyLong_AsDouble(value);  // rounded to nearest, as float(value)
+    if (x == -1 && PyErr_Occurred()) {  // too large for a double: the package says so
+      PyErr_Clear();
+      return std::nullopt;
+    }
+    floats[k] = py::float_(x);
+    values[k] = floats[k];
+  }
+  return scene_from(values, {});
 }
 
 }  // namespace sweetspot::python

@@ -57,8 +57,28 @@ struct SceneArgs {
   BeamTheory theory = BeamTheory::timoshenko;
 };
 
+// Every keyword argument of sweetspot.impact and sweetspot.impacts: the point arguments (in
+// point_arguments()' order), then these.
+inline const std::vector<std::string>& scene_arguments() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all = point_arguments();
+    for (const char* other : {"ball", "pivot", "modes", "mode_tolerance", "accuracy", "step_accuracy", "integrator",
+                              "dt", "tolerance", "window", "theory", "n2000"})
+      all.emplace_back(other);
+    return all;
+  }();
+  return names;
+}
+
 // `args`: keyword -> value (None: not given); `per_point`: the point arguments given as arrays
 // instead, which count as given. Throws InputError for bad values, TypeError for unknown names.
 SceneArgs scene_args(const pybind11::dict& args, const std::set<std::string>& per_point = {});
+
+// impact()'s arguments as a tuple in scene_arguments()' order, when every number among them is a
+// plain float, int or None and `ball` a str or None: the scene scene_args makes of them after the
+// package's checks (which turn those ints into the same floats). Nothing when any is something
+// else (a string with a unit, a numpy number, an array, a path): the package checks and converts
+// it first, with its messages.
+std::optional<SceneArgs> plain_scene_args(const pybind11::tuple& values);
 
 }  // namespace sweetspot::python

@@ -26,9 +26,9 @@ from pathlib import Path
 
 import numpy as np
 
-from ._sweetspot import (Bat, __version__, _ball, _certify, _describe, _flight, _git_commit, _impact, _impacts,
-                         _max_slices, _max_threads, _min_slices, _point_arguments, _scene_record, _si,
-                         _status_names)
+from ._sweetspot import (_LATER, Bat, __version__, _ball, _certify, _describe, _flight, _git_commit, _impact,
+                         _impact_checked, _impacts, _max_slices, _max_threads, _min_slices, _point_arguments,
+                         _scene_arguments, _scene_record, _si, _status_names)
 
 __all__ = ["Bat", "Result", "ball", "impact", "impacts", "run_study", "certify", "flight", "scene_of", "bat_of",
            "impacts_like", "__version__"]
@@ -90,11 +90,59 @@ def _real(name, value, dimension=None, arrays=False):
 class Result(dict):
     """What impact() and certify() return: a dict with the keys of the program's --json, and
     `attrs`, a dict of the provenance an impacts() dataset carries as its attributes (the resolved
-    scene as scene_*, the bat, program_version, git_commit, Conventions)."""
+    scene as scene_*, the bat, program_version, git_commit, Conventions).
+
+    impact()'s error estimates cost four to five times the impact: they are made when first read, by
+    any way a dict's values are read (r[key], get, items, values, copies, dict(r), json, ==), and
+    are the same values, bit for bit, whenever that is."""
+
+    # impact() fills its Result in C++ and sets these: the provenance as a function that makes it
+    # (when attrs is first read), and a function giving the values it stored as _LATER.
+    _attrs = None
+    _later = None
 
     def __init__(self, values, attrs):
         super().__init__(values)
-        self._attrs = attrs  # the dict, or a function that makes it when first read (impact())
+        self._attrs = attrs  # the dict, or a function that makes it when first read
+
+    def _complete(self):
+        """The values made when first read, in their places (a key set or deleted since stays so)."""
+        if self._later is not None:
+            values = self._later()
+            self._later = None
+            for key, value in values.items():
+                if dict.get(self, key) is _LATER:
+                    dict.__setitem__(self, key, value)
+
+    def __getitem__(self, key):
+        value = dict.__getitem__(self, key)
+        if value is _LATER:
+            self._complete()
+            value = dict.__getitem__(self, key)
+        return value
+
+    # Every other way of reading values completes them first. __iter__ is dict's own, but defined
+    # here so that dict(r), {**r}, f(**r) and d.update(r) read through keys() and __getitem__
+    # instead of the dict's storage.
+    def __iter__(self):
+        return dict.__iter__(self)
+
+    def _completing(method):
+        """dict's method, after completing this Result (and another one it is given)."""
+        def read(self, *args, **kwargs):
+            self._complete()
+            for other in args:
+                if isinstance(other, Result):
+                    other._complete()
+            return method(self, *args, **kwargs)
+        read.__name__, read.__doc__ = method.__name__, method.__doc__
+        return read
+
+    get, items, values, copy = _completing(dict.get), _completing(dict.items), _completing(dict.values), _completing(dict.copy)
+    pop, popitem, setdefault = _completing(dict.pop), _completing(dict.popitem), _completing(dict.setdefault)
+    __repr__, __eq__, __ne__ = _completing(dict.__repr__), _completing(dict.__eq__), _completing(dict.__ne__)
+    __or__, __ror__ = _completing(dict.__or__), _completing(dict.__ror__)
+    del _completing
 
     @property
     def attrs(self):
@@ -314,6 +362,8 @@ def flight(speed, angle=0.0, *, direction=0.0, backspin=0.0, sidespin=0.0, heigh
 
 
 _POINT = tuple(_point_arguments())  # z, ball_speed, cm_speed, center, omega, e0, ball_mass, ...
+assert _scene_arguments() == [*_POINT, "ball", "pivot", "modes", "mode_tolerance", "accuracy", "step_accuracy",
+                              "integrator", "dt", "tolerance", "window", "theory", "n2000"]  # impact()'s order
 
 
 def _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, pivot, modes,
@@ -347,7 +397,9 @@ def impact(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=No
     energy, mode_energy, modes_kept, modes_error, slicing_error, step_error, total_error, contacts),
     NaN where the JSON has null. slicing_error, modes_error and step_error estimate each source of
     the relative vf error against the continuous bat (its slices, the dropped modes, the time step),
-    total_error their sum; the slicing's costs the bat's modes at twice its slices. accuracy (the
+    total_error their sum. Without a stated accuracy they are made when first read (the same values):
+    they cost the impact again at twice and four times the step and on the bat at twice and four
+    times its slices, four to five times the impact itself. accuracy (the
     total relative vf error, 1e-7 to 0.1) chooses the slices, the modes and the step to meet it
     (slices_used, modes_kept, step_used say what it chose; status "inaccurate" where the bat
     cannot be cut finely enough); step_accuracy chooses the step alone.
@@ -366,16 +418,38 @@ def impact(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=No
 
     Returns: a Result, the dict above with `attrs` (the resolved scene as scene_*, the bat, the
     program's version and commit); ``impact(bat, **scene_of(result))`` computes it again bit for bit."""
-    args = _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, pivot, modes,
+    # As given, in the order of _scene_arguments: plain numbers are read in C++ at once, anything
+    # else (a unit, a numpy number, a path) checked and converted by _impact_scene first.
+    given = (z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, undercut, swing_tilt,
+             pitch_spin, friction, ball, pivot, modes, mode_tolerance, accuracy, step_accuracy, integrator, dt,
+             tolerance, window, theory, n2000)
+    called = _impact(bat, given, Result) if isinstance(bat, Bat) else None
+    if called is None:
+        args = _impact_scene(given)
+        _check_bat(bat)
+        called = _impact_checked(bat, args, Result)
+    result, u_max, radius = called
+    if u_max > radius:
+        warnings.warn(f"the ball compressed {1e3 * u_max:.3g} mm, past its radius "
+                      f"{1e3 * radius:.3g} mm: the force law is not meant for that", RuntimeWarning, stacklevel=2)
+    # The provenance costs more than the impact, the error estimates (result._later, without a
+    # stated accuracy) four to five times it: each made when first read.
+    result._attrs = lambda: _impact_record(bat, given)  # a closure, which copy.deepcopy leaves as it is
+    return result
+
+
+def _impact_scene(given):
+    """impact()'s arguments (as it passes them to _impact) checked, as _scene gives them."""
+    (z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, undercut, swing_tilt, pitch_spin,
+     friction, ball, pivot, modes, mode_tolerance, accuracy, step_accuracy, integrator, dt, tolerance, window, theory,
+     n2000) = given
+    return _scene(z, ball_speed, cm_speed, center, omega, e0, ball_mass, ball_radius, k1, a, pivot, modes,
                   mode_tolerance, accuracy, step_accuracy, integrator, dt, tolerance, window, theory, n2000, ball,
                   oblique=dict(undercut=undercut, swing_tilt=swing_tilt, pitch_spin=pitch_spin, friction=friction))
-    _check_bat(bat)
-    result, radius = _impact(bat, args)
-    if result["u_max"] > radius:
-        warnings.warn(f"the ball compressed {1e3 * result['u_max']:.3g} mm, past its radius "
-                      f"{1e3 * radius:.3g} mm: the force law is not meant for that", RuntimeWarning, stacklevel=2)
-    # The provenance costs more than the impact: made when first read.
-    return Result(result, lambda: _record(bat, args))
+
+
+def _impact_record(bat, given):
+    return _record(bat, _impact_scene(given))
 
 
 def _attrs(name):
