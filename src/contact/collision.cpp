@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -62,6 +63,15 @@ double free_compression(const ModalContact& body, const VectorXd& y, double tau)
   return u;
 }
 
+// The time u + rate t + max_acceleration t^2 / 2 takes to rise from u < 0 to 0 (0 unless u < 0).
+double time_to_reach(double u, double rate, double max_acceleration) {
+  if (!(u < 0)) return 0;
+  if (!(max_acceleration > 0)) return rate > 0 ? -u / rate : std::numeric_limits<double>::infinity();
+  // The positive root, in the form without cancellation for the sign of the rate.
+  const double root = std::sqrt(rate * rate - 2 * max_acceleration * u);
+  return rate <= 0 ? (root - rate) / max_acceleration : -2 * u / (rate + root);
+}
+
 // Integral over [0, tau] of the cubic Hermite interpolant of F on a segment of length h.
 double hermite_integral(const ForceSample& p, const ForceSample& q, double tau) {
   if (q.t <= p.t) return 0;  // a touch found right at separation leaves two samples at one time
@@ -96,13 +106,40 @@ struct FreeRotations {
   }
 };
 
-// The damped modes' entries of a rotation: their free evolution (damped_mode.hpp).
-void damp_rotation(const FreeRotations& r, FreeRotations::Power& p) {
-  for (Eigen::Index i = 0; i < r.damping.size(); ++i) {
-    if (r.damping(i) == 0) continue;
-    const detail::FreeEvolution e = detail::damped_free_evolution(r.omega(i), r.damping(i), p.step);
-    p.c(i) = e.aa, p.sn(i) = e.av, p.w2sn(i) = -e.va, p.cv(i) = e.vv;
+// One mode's rotations over each of the powers' steps. A thread keeps them by frequency and
+// damping: `auto` keeps a different set of a bat's modes at nearly every impact, so a set's
+// rotations are mostly new while each mode's are not (a sine and cosine per power and mode).
+struct ModeRotations {
+  static constexpr int powers = 14;  // 1 us, 2 us, ... 8.192 ms
+  double c[powers], sn[powers], w2sn[powers], cv[powers];
+};
+
+const ModeRotations& mode_rotations(double w, double zeta) {
+  struct Key {
+    double w, zeta;
+    bool operator==(const Key&) const = default;
+  };
+  struct Hash {
+    std::size_t operator()(const Key& k) const { return std::hash<double>()(k.w) * 31 + std::hash<double>()(k.zeta); }
+  };
+  thread_local std::unordered_map<Key, ModeRotations, Hash> memo;
+  if (memo.size() > 50000) memo.clear();  // bounded: about 23 MB per thread
+  const auto [it, inserted] = memo.try_emplace(Key{w, zeta});
+  if (!inserted) return it->second;
+  ModeRotations& m = it->second;
+  double step = FreeRotations::base_step;
+  for (int k = 0; k < ModeRotations::powers; ++k, step *= 2) {
+    if (zeta != 0) {  // damped_mode.hpp
+      const detail::FreeEvolution e = detail::damped_free_evolution(w, zeta, step);
+      m.c[k] = e.aa, m.sn[k] = e.av, m.w2sn[k] = -e.va, m.cv[k] = e.vv;
+      continue;
+    }
+    const double sine = std::sin(w * step), cosine = std::cos(w * step);
+    m.c[k] = m.cv[k] = cosine;
+    m.sn[k] = w == 0 ? step : sine / w;
+    m.w2sn[k] = w * sine;
   }
+  return m;
 }
 
 const FreeRotations& free_rotations(const ModalContact& body) {
@@ -119,14 +156,22 @@ const FreeRotations& free_rotations(const ModalContact& body) {
         it->second.damping.size() == damping.size() && (it->second.damping == damping).all())
       return it->second;
   if (stored > 4'000'000) cache.clear(), stored = 0;  // doubles held: about 40 MB per thread at most
+  const int n = body.count();
   FreeRotations r;
   r.omega = omega.array();
   r.damping = damping;
-  for (double step = FreeRotations::base_step; step <= 8.2e-3; step *= 2) {
-    const Eigen::ArrayXd sine = (omega.array() * step).sin(), cosine = (omega.array() * step).cos();
-    r.powers.push_back({step, cosine, (omega.array() == 0).select(step, sine / omega.array()), omega.array() * sine,
-                        cosine});
-    damp_rotation(r, r.powers.back());
+  r.powers.resize(ModeRotations::powers);
+  for (int k = 0; k < ModeRotations::powers; ++k) {
+    FreeRotations::Power& p = r.powers[k];
+    p.step = FreeRotations::base_step * std::exp2(k);
+    p.c.resize(n), p.sn.resize(n), p.w2sn.resize(n), p.cv.resize(n);
+  }
+  for (int i = 0; i < n; ++i) {
+    const ModeRotations& m = mode_rotations(omega(i), body.damping(i));
+    for (int k = 0; k < ModeRotations::powers; ++k) {
+      FreeRotations::Power& p = r.powers[k];
+      p.c(i) = m.c[k], p.sn(i) = m.sn[k], p.w2sn(i) = m.w2sn[k], p.cv(i) = m.cv[k];
+    }
   }
   stored += 4 * r.powers.size() * omega.size();
   return cache.emplace(key, std::move(r))->second;
@@ -281,11 +326,13 @@ class CollisionRun {
 
   // Follows ball and body for the window after a separation. True if they touch again; then the
   // state is moved to the moment of touch. The compression is the rigid part, linear in time,
-  // plus vibrations bounded by sum |psi_n| A_n (amplitude A_n) and changing no faster than
-  // sum |psi_n| omega_n A_n: samples skip ahead as far as these bounds allow, and the scan ends
-  // once the rigid part alone keeps the ball clear.
+  // plus vibrations bounded by sum |psi_n| A_n (amplitude A_n), changing no faster than
+  // sum |psi_n| omega_n A_n and accelerating no faster than M = sum |psi_n| omega_n^2 A_n (1 + 2
+  // zeta_n): from a sample's u < 0 and u', the ball cannot touch within the larger of -u over the
+  // speed bound and the time u + u' t + M t^2 / 2 takes to reach 0. Samples skip ahead that far,
+  // and the scan ends once the rigid part alone keeps the ball clear.
   bool free_flight() {
-    double u0_rigid = -y_(0), rate_rigid = -y_(1), bound = 0, speed_bound = 0;
+    double u0_rigid = -y_(0), rate_rigid = -y_(1), bound = 0, speed_bound = 0, acceleration_bound = 0;
     for (int i = 0; i < body_.count(); ++i) {
       const double w = body_.omega(i), psi = body_.psi(i), a = y_(2 + i), v = y_(2 + body_.count() + i);
       if (w == 0) {
@@ -294,6 +341,7 @@ class CollisionRun {
         const double amplitude = std::sqrt(a * a + v / w * (v / w));  // not hypot: no overflow here, and 5x cheaper
         bound += std::abs(psi) * amplitude;
         speed_bound += std::abs(psi) * w * amplitude;
+        acceleration_bound += std::abs(psi) * w * w * amplitude * (1 + 2 * body_.damping(i));
       }
     }
     double end = options_.window;
@@ -316,7 +364,8 @@ class CollisionRun {
         return true;
       }
       previous = tau, u_previous = u;
-      const FreeRotations::Power& r = rotations.largest_within(std::max(-u / slope, FreeRotations::base_step));
+      const double clear = std::max(-u / slope, time_to_reach(u, (psi * v).sum() - y_(1), acceleration_bound));
+      const FreeRotations::Power& r = rotations.largest_within(std::max(clear, FreeRotations::base_step));
       next_a = r.c * a + r.sn * v;
       v = r.cv * v - r.w2sn * a;
       a.swap(next_a);
