@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <cstdint>
 #include <unordered_map>
+#include <vector>
 #include <cmath>
 
 #include "contact/damped_mode.hpp"
@@ -133,10 +136,14 @@ Basis basis_in_s(double past_ratio) {
 }
 
 Basis interpolant_basis(double past_ratio, double h) {
-  // The cubic's (every event step's) is made once: an LU of its conditions per step cost more
-  // than the step.
-  static const Basis cubic = basis_in_s(0);
-  Basis b = past_ratio > 0 ? basis_in_s(past_ratio) : cubic;
+  // Each past ratio's basis is made once per thread (a run meets a few: 0, every event step's,
+  // 1/2 and 1 of split and nominal steps): an LU of its conditions per response cost more than
+  // the modes' responses of a small set.
+  thread_local std::unordered_map<double, Basis> in_s;
+  if (in_s.size() > 64) in_s.clear();  // a stepper halving its steps meets more
+  const auto [it, inserted] = in_s.try_emplace(past_ratio);
+  if (inserted) it->second = basis_in_s(past_ratio);
+  Basis b = it->second;
   for (int k = 0; k < powers; ++k) b.col(k) /= std::pow(h, k);
   for (const Datum rate : {past_rate, start_rate, end_rate}) b.row(rate) *= h;
   return b;
@@ -228,15 +235,62 @@ const DampedCoefficients& memoized_damped_coefficients(double w, double zeta, do
   return it->second;
 }
 
+// A hash of a double's bits that costs a multiplication (std::hash<double> hashes its bytes).
+std::size_t bits_hash(double x) { return std::bit_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ull >> 7; }
+
+// Each undamped mode's response to a step whose length recurs, remembered by (omega, h, past
+// ratio) for this thread: `auto` keeps a different set of a bat's modes at nearly every impact,
+// so a set's responses are mostly new while each mode's are not. The modes not met before are
+// computed together (the kernel's result for a mode does not depend on the others: the same bits).
+void remembered_undamped_responses(const Eigen::ArrayXd& omega, double h, double past_ratio, const double* basis,
+                                   const ResponseColumns& out) {
+  struct Key {
+    double w, h, past_ratio;
+    bool operator==(const Key&) const = default;
+  };
+  struct Hash {
+    std::size_t operator()(const Key& k) const {
+      return (bits_hash(k.w) * 31 + bits_hash(k.h)) * 31 + bits_hash(k.past_ratio);
+    }
+  };
+  thread_local std::unordered_map<Key, ModeCoefficients, Hash> memo;
+  if (memo.size() > 100000) memo.clear();  // bounded: about 20 MB per thread
+  const auto column = [](int m, const ResponseColumns& r) -> double* {
+    if (m < free_count) return std::array{r.c, r.sn, r.w2sn, r.cv}[m];
+    return m < free_count + data_count ? r.d[m - free_count] : r.q[m - free_count - data_count];
+  };
+  std::vector<int> missing;
+  for (int i = 0; i < omega.size(); ++i) {
+    if (const auto it = memo.find(Key{omega(i), h, past_ratio}); it != memo.end()) {
+      for (int m = 0; m < free_count + 2 * data_count; ++m) column(m, out)[i] = it->second[m];
+    } else {
+      missing.push_back(i);
+    }
+  }
+  if (missing.empty()) return;
+  const int count = static_cast<int>(missing.size());
+  Eigen::ArrayXd w(count);
+  Eigen::ArrayXXd made(count, free_count + 2 * data_count);
+  for (int k = 0; k < count; ++k) w(k) = omega(missing[k]);
+  ResponseColumns into{made.col(0).data(), made.col(1).data(), made.col(2).data(), made.col(3).data(), {}, {}};
+  for (int j = 0; j < data_count; ++j)
+    into.d[j] = made.col(free_count + j).data(), into.q[j] = made.col(free_count + data_count + j).data();
+  undamped_responses(w.data(), count, h, basis, into);
+  for (int k = 0; k < count; ++k) {
+    ModeCoefficients& kept = memo[Key{w(k), h, past_ratio}];
+    for (int m = 0; m < free_count + 2 * data_count; ++m) kept[m] = column(m, out)[missing[k]] = made(k, m);
+  }
+}
+
 }  // namespace
 
 ModeResponse::ModeResponse(const Eigen::ArrayXd& w, const Eigen::ArrayXd& zeta, double step, double ball_mass,
-                           double past, bool with_quadrature, bool remember_damped) {
-  fill(w, zeta, step, ball_mass, past, with_quadrature, remember_damped);
+                           double past, bool with_quadrature, bool remember) {
+  fill(w, zeta, step, ball_mass, past, with_quadrature, remember);
 }
 
 void ModeResponse::fill(const Eigen::ArrayXd& w, const Eigen::ArrayXd& zeta, double step, double ball_mass,
-                        double past, bool with_quadrature, bool remember_damped) {
+                        double past, bool with_quadrature, bool remember) {
   h = step, past_ratio = past, omega = w, damping = zeta, quadrature = with_quadrature, this->ball_mass = ball_mass;
   damped.clear();
   const int n = static_cast<int>(omega.size());
@@ -252,13 +306,14 @@ void ModeResponse::fill(const Eigen::ArrayXd& w, const Eigen::ArrayXd& zeta, dou
     for (int k = 0; k < powers; ++k) basis[j * powers + k] = b(j, k);
   ResponseColumns columns{c.data(), sn.data(), w2sn.data(), cv.data(), {}, {}};
   for (int j = 0; j < data_count; ++j) columns.d[j] = d.col(j).data(), columns.q[j] = q.col(j).data();
-  undamped_responses(omega.data(), n, h, basis, columns);
+  if (remember) remembered_undamped_responses(omega, h, past_ratio, basis, columns);
+  else undamped_responses(omega.data(), n, h, basis, columns);
   for (int i = 0; damping.size() && i < n; ++i) {
     if (damping(i) != 0) {
       const DampedCoefficients computed =
-          remember_damped ? DampedCoefficients{} : damped_coefficients(omega(i), damping(i), h, b, quadrature);
+          remember ? DampedCoefficients{} : damped_coefficients(omega(i), damping(i), h, b, quadrature);
       const DampedCoefficients& m =
-          remember_damped ? memoized_damped_coefficients(omega(i), damping(i), h, past_ratio, b, quadrature) : computed;
+          remember ? memoized_damped_coefficients(omega(i), damping(i), h, past_ratio, b, quadrature) : computed;
       set_mode(i, m.end);
       if (quadrature) damped.push_back(m.quadrature), damped.back().mode = i;
     }

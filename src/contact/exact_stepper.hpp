@@ -50,15 +50,16 @@ struct ModeResponse {
   bool quadrature = true;
 
   // quadrature: the damped modes' dissipation quadrature too (CollisionOptions::damping_loss).
-  // remember_damped: take each damped mode's coefficients from (and add them to) this thread's
-  // memory, for the lengths that recur from impact to impact (a damped mode's closed forms cost
-  // an exponential and a sine and cosine at 9 times).
+  // remember: take each mode's coefficients from (and add them to) this thread's memory, for the
+  // lengths that recur from impact to impact: `auto` keeps a different set of modes at nearly
+  // every impact, and a damped mode's closed forms cost an exponential and a sine and cosine at 9
+  // times.
   ModeResponse(const Eigen::ArrayXd& omega, const Eigen::ArrayXd& damping, double h, double ball_mass,
-               double past_ratio, bool quadrature = true, bool remember_damped = false);
+               double past_ratio, bool quadrature = true, bool remember = false);
   ModeResponse() = default;
   // Computes the response anew in place: the arrays keep their memory when the size is the same.
   void fill(const Eigen::ArrayXd& omega, const Eigen::ArrayXd& damping, double h, double ball_mass, double past_ratio,
-            bool quadrature, bool remember_damped);
+            bool quadrature, bool remember);
 };
 
 // A response with the sums over the contact point's mode shapes that tie the ball's compression
