@@ -50,6 +50,8 @@ TEST_CASE("run and optimize refusals are one line of sweetspot's own among Open 
                                      "OMP_NUM_THREADS=1 mpirun -np 2 --oversubscribe --bind-to none " +
                                      SWEETSPOT_PROGRAM + " run " + missing + " -o " + dir / "out.h5");
   INFO(mpi.output);
-  CHECK_THAT(mpi.output, Catch::Contains("btl_tcp_if_include"));
+  // The provoked noise: Open MPI's warning, or, where its help system fails to print it (seen on a
+  // loaded machine), the ORTE_ERROR_LOG lines of that failure.
+  CHECK_THAT(mpi.output, Catch::Contains("btl_tcp_if_include") || Catch::Contains("ORTE_ERROR_LOG"));
   require_refused(mpi, {missing, "not found"});
 }
