@@ -13,6 +13,7 @@
 #include "contact/damped_mode.hpp"
 #include "contact/dopri_stepper.hpp"
 #include "contact/exact_stepper.hpp"
+#include "contact/thread_memory.hpp"
 #include "contact/rk4_stepper.hpp"
 #include "sweetspot/input_error.hpp"
 
@@ -114,19 +115,8 @@ struct ModeRotations {
   double c[powers], sn[powers], w2sn[powers], cv[powers];
 };
 
-const ModeRotations& mode_rotations(double w, double zeta) {
-  struct Key {
-    double w, zeta;
-    bool operator==(const Key&) const = default;
-  };
-  struct Hash {
-    std::size_t operator()(const Key& k) const { return std::hash<double>()(k.w) * 31 + std::hash<double>()(k.zeta); }
-  };
-  thread_local std::unordered_map<Key, ModeRotations, Hash> memo;
-  if (memo.size() > 50000) memo.clear();  // bounded: about 23 MB per thread
-  const auto [it, inserted] = memo.try_emplace(Key{w, zeta});
-  if (!inserted) return it->second;
-  ModeRotations& m = it->second;
+ModeRotations rotations_of(double w, double zeta) {
+  ModeRotations m;
   double step = FreeRotations::base_step;
   for (int k = 0; k < ModeRotations::powers; ++k, step *= 2) {
     if (zeta != 0) {  // damped_mode.hpp
@@ -140,6 +130,18 @@ const ModeRotations& mode_rotations(double w, double zeta) {
     m.w2sn[k] = w * sine;
   }
   return m;
+}
+
+const ModeRotations& mode_rotations(double w, double zeta) {
+  struct Key {
+    double w, zeta;
+    bool operator==(const Key&) const = default;
+  };
+  struct Hash {
+    std::size_t operator()(const Key& k) const { return detail::bits_hash(k.w, k.zeta); }
+  };
+  thread_local detail::ThreadMemory<Key, ModeRotations, Hash> memory(50000);  // about 23 MB per thread
+  return memory.get(Key{w, zeta}, [&] { return rotations_of(w, zeta); });
 }
 
 const FreeRotations& free_rotations(const ModalContact& body) {

@@ -2,14 +2,13 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
-#include <cstdint>
 #include <unordered_map>
 #include <vector>
 #include <cmath>
 
 #include "contact/damped_mode.hpp"
 #include "contact/mode_kernels.hpp"
+#include "contact/thread_memory.hpp"
 
 namespace sweetspot::detail {
 
@@ -139,11 +138,11 @@ Basis interpolant_basis(double past_ratio, double h) {
   // Each past ratio's basis is made once per thread (a run meets a few: 0, every event step's,
   // 1/2 and 1 of split and nominal steps): an LU of its conditions per response cost more than
   // the modes' responses of a small set.
-  thread_local std::unordered_map<double, Basis> in_s;
-  if (in_s.size() > 64) in_s.clear();  // a stepper halving its steps meets more
-  const auto [it, inserted] = in_s.try_emplace(past_ratio);
-  if (inserted) it->second = basis_in_s(past_ratio);
-  Basis b = it->second;
+  struct Hash {
+    std::size_t operator()(double ratio) const { return bits_hash(ratio); }
+  };
+  thread_local ThreadMemory<double, Basis, Hash> in_s(64);  // a stepper halving its steps meets more
+  Basis b = in_s.get(past_ratio, [&] { return basis_in_s(past_ratio); });
   for (int k = 0; k < powers; ++k) b.col(k) /= std::pow(h, k);
   for (const Datum rate : {past_rate, start_rate, end_rate}) b.row(rate) *= h;
   return b;
@@ -223,20 +222,12 @@ const DampedCoefficients& memoized_damped_coefficients(double w, double zeta, do
     bool operator==(const Key&) const = default;
   };
   struct Hash {
-    std::size_t operator()(const Key& k) const {
-      return (((std::hash<double>()(k.w) * 31 + std::hash<double>()(k.zeta)) * 31 + std::hash<double>()(k.h)) * 31 +
-              std::hash<double>()(k.past_ratio)) * 2 + k.quadrature;
-    }
+    std::size_t operator()(const Key& k) const { return bits_hash(k.w, k.zeta, k.h, k.past_ratio) * 2 + k.quadrature; }
   };
-  thread_local std::unordered_map<Key, DampedCoefficients, Hash> memo;
-  if (memo.size() > 20000) memo.clear();  // bounded: about 20 MB per thread
-  const auto [it, inserted] = memo.try_emplace(Key{w, zeta, h, past_ratio, quadrature});
-  if (inserted) it->second = damped_coefficients(w, zeta, h, b, quadrature);
-  return it->second;
+  thread_local ThreadMemory<Key, DampedCoefficients, Hash> memory(20000);  // about 20 MB per thread
+  return memory.get(Key{w, zeta, h, past_ratio, quadrature},
+                    [&] { return damped_coefficients(w, zeta, h, b, quadrature); });
 }
-
-// A hash of a double's bits that costs a multiplication (std::hash<double> hashes its bytes).
-std::size_t bits_hash(double x) { return std::bit_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ull >> 7; }
 
 // Each undamped mode's response to a step whose length recurs, remembered by (omega, h, past
 // ratio) for this thread: `auto` keeps a different set of a bat's modes at nearly every impact,
@@ -249,20 +240,17 @@ void remembered_undamped_responses(const Eigen::ArrayXd& omega, double h, double
     bool operator==(const Key&) const = default;
   };
   struct Hash {
-    std::size_t operator()(const Key& k) const {
-      return (bits_hash(k.w) * 31 + bits_hash(k.h)) * 31 + bits_hash(k.past_ratio);
-    }
+    std::size_t operator()(const Key& k) const { return bits_hash(k.w, k.h, k.past_ratio); }
   };
-  thread_local std::unordered_map<Key, ModeCoefficients, Hash> memo;
-  if (memo.size() > 100000) memo.clear();  // bounded: about 20 MB per thread
+  thread_local ThreadMemory<Key, ModeCoefficients, Hash> memory(100000);  // about 20 MB per thread
   const auto column = [](int m, const ResponseColumns& r) -> double* {
     if (m < free_count) return std::array{r.c, r.sn, r.w2sn, r.cv}[m];
     return m < free_count + data_count ? r.d[m - free_count] : r.q[m - free_count - data_count];
   };
   std::vector<int> missing;
   for (int i = 0; i < omega.size(); ++i) {
-    if (const auto it = memo.find(Key{omega(i), h, past_ratio}); it != memo.end()) {
-      for (int m = 0; m < free_count + 2 * data_count; ++m) column(m, out)[i] = it->second[m];
+    if (const ModeCoefficients* kept = memory.find(Key{omega(i), h, past_ratio})) {
+      for (int m = 0; m < free_count + 2 * data_count; ++m) column(m, out)[i] = (*kept)[m];
     } else {
       missing.push_back(i);
     }
@@ -277,7 +265,7 @@ void remembered_undamped_responses(const Eigen::ArrayXd& omega, double h, double
     into.d[j] = made.col(free_count + j).data(), into.q[j] = made.col(free_count + data_count + j).data();
   undamped_responses(w.data(), count, h, basis, into);
   for (int k = 0; k < count; ++k) {
-    ModeCoefficients& kept = memo[Key{w(k), h, past_ratio}];
+    ModeCoefficients& kept = memory.keep(Key{w(k), h, past_ratio});
     for (int m = 0; m < free_count + 2 * data_count; ++m) kept[m] = column(m, out)[missing[k]] = made(k, m);
   }
 }
