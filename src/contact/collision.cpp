@@ -378,30 +378,17 @@ class CollisionRun {
   }
 
   // The instant of the next touch in (lo, hi] after the separation state y_, where the compression
-  // rises through 0: Illinois regula falsi (as ExactStepper::locate), which keeps the bracket and
-  // needs about a dozen evaluations where bisection took 50, each a sine and cosine per mode.
-  // The compressions at the ends come with them; the state moves to the end inside the contact, hi.
+  // rises through 0: detail::falling_root on -u, each evaluation a sine and cosine per mode. The
+  // compressions at the ends come with them; the state moves to the end inside the contact, hi.
   void move_to_touch(double lo, double hi, double u_lo, double u_hi) {
-    int side = 0;
-    for (int iteration = 0; iteration < 200 && hi - lo > 1e-15 * (t_ + hi); ++iteration) {
-      double tau = u_lo < 0 && u_hi > 0 ? hi - u_hi * (hi - lo) / (u_hi - u_lo) : (lo + hi) / 2;
-      if (!(tau > lo && tau < hi)) tau = (lo + hi) / 2;
-      const double u = free_compression(body_, y_, tau);
-      if (u > 0) {
-        hi = tau, u_hi = u;
-        if (side == 1) u_lo /= 2;
-        side = 1;
-      } else {
-        lo = tau, u_lo = u;
-        if (side == -1) u_hi /= 2;
-        side = -1;
-      }
-    }
+    const auto clearance = [&](double tau) { return -free_compression(body_, y_, tau); };
+    const detail::Bracket touch = detail::falling_root(
+        clearance, lo, hi, -u_lo, -u_hi, [&](double a, double b) { return b - a <= 1e-15 * (t_ + b); }, 200);
     VectorXd trial;
-    evolve_free(body_, y_, hi, trial);
+    evolve_free(body_, y_, touch.hi, trial);
     y_ = trial;
-    if (keeps_samples()) samples_.push_back({t_ + lo, 0.0, 0.0});  // the force stays zero over the gap
-    t_ += hi;
+    if (keeps_samples()) samples_.push_back({t_ + touch.lo, 0.0, 0.0});  // the force stays zero over the gap
+    t_ += touch.hi;
   }
 
   // The force samples serve the collision time and the recorded profile: nothing else.

@@ -202,6 +202,40 @@ inline double event_rate(const ContactState& state, ContactEvent event, const Ei
   return -state.compression_rate(y);
 }
 
+// The cubic Hermite through (f0, d0) at s = 0 and (f1, d1) at s = 1 (d: the slopes in s), at s.
+inline double hermite(double s, double f0, double d0, double f1, double d1) {
+  const double s2 = s * s, s3 = s2 * s;
+  return (2 * s3 - 3 * s2 + 1) * f0 + (s3 - 2 * s2 + s) * d0 + (-2 * s3 + 3 * s2) * f1 + (s3 - s2) * d1;
+}
+
+// Illinois regula falsi for where f falls through zero in (lo, hi], given f(lo) = f_lo > 0 >=
+// f(hi) = f_hi: it keeps that bracket, and halving the weight of an end that stays put closes both
+// sides, in about a dozen evaluations where bisection takes 50 (bisection while the ends do not
+// bracket). Stops when done(lo, hi) or f is 0; returns the bracket.
+struct Bracket {
+  double lo, hi;
+};
+template <class F, class Done>
+Bracket falling_root(F f, double lo, double hi, double f_lo, double f_hi, Done done, int iterations) {
+  int side = 0;
+  for (int iteration = 0; iteration < iterations && !done(lo, hi); ++iteration) {
+    double x = f_lo > 0 && f_hi <= 0 ? hi - f_hi * (hi - lo) / (f_hi - f_lo) : (lo + hi) / 2;
+    if (!(x > lo && x < hi)) x = (lo + hi) / 2;
+    const double value = f(x);
+    if (value > 0) {
+      lo = x, f_lo = value;
+      if (side == 1) f_hi /= 2;
+      side = 1;
+    } else {
+      hi = x, f_hi = value;
+      if (side == -1) f_lo /= 2;
+      side = -1;
+      if (value == 0) break;
+    }
+  }
+  return {lo, hi};
+}
+
 // Where inside (0, 1) the cubic Hermite through (u0, d0) at s = 0 and (u1, d1) at s = 1 (d: the
 // slopes in s) peaks above `level`, if it rises at the start, falls at the end and does: its
 // slope, a quadratic, changes sign once in between.
@@ -215,38 +249,25 @@ inline std::optional<double> hermite_peak(double u0, double d0, double u1, doubl
     s = first > 0 && first < 1 ? first : second;
   }
   if (!(s > 0 && s < 1)) return std::nullopt;
-  const double s2 = s * s, s3 = s2 * s;
-  const double value = (2 * s3 - 3 * s2 + 1) * u0 + (s3 - 2 * s2 + s) * d0 + (-2 * s3 + 3 * s2) * u1 + (s3 - s2) * d1;
-  return value > level ? std::optional(s) : std::nullopt;
+  return hermite(s, u0, d0, u1, d1) > level ? std::optional(s) : std::nullopt;
 }
 
-// Illinois regula falsi for the step h* in (0, h] at which the event value of step(y, h*) crosses
-// zero, given it is > 0 at y and <= 0 at out = step(y, h). Leaves in `out` the state just past
-// the event (value <= 0) and returns h*. Suits steppers whose steps are cheap to repeat.
+// The step h* in (0, h] at which the event value of step(y, h*) crosses zero, given it is > 0 at y
+// and <= 0 at out = step(y, h), by falling_root over re-made steps. Leaves in `out` the state just
+// past the event (value <= 0) and returns h*. Suits steppers whose steps are cheap to repeat.
 template <class Stepper>
 double locate_by_restepping(Stepper& stepper, const ContactState& state, const Eigen::VectorXd& y, double h,
                             const ContactForce& law, ContactEvent event, Eigen::VectorXd& out) {
-  double lo = 0, hi = h, f_lo = event_value(state, event, y, law), f_hi = event_value(state, event, out, law);
-  int side = 0;
   Eigen::VectorXd trial(y.size());
-  for (int iteration = 0; iteration < 100 && hi - lo > 1e-15 * h; ++iteration) {
-    double mid = hi - f_hi * (hi - lo) / (f_hi - f_lo);
-    if (!(mid > lo && mid < hi)) mid = (lo + hi) / 2;
-    stepper.step(y, mid, law, trial);
-    const double f = event_value(state, event, trial, law);
-    if (f > 0) {
-      lo = mid, f_lo = f;
-      if (side == 1) f_hi /= 2;
-      side = 1;
-    } else {
-      hi = mid, f_hi = f, out = trial;
-      if (side == -1) f_lo /= 2;
-      side = -1;
-      if (f == 0) break;
-    }
-  }
-  if (hi == h) stepper.step(y, h, law, out);
-  return hi;
+  const auto value = [&](double step) {
+    stepper.step(y, step, law, trial);
+    return event_value(state, event, trial, law);
+  };
+  const Bracket root =
+      falling_root(value, 0.0, h, event_value(state, event, y, law), event_value(state, event, out, law),
+                   [h](double a, double b) { return b - a <= 1e-15 * h; }, 100);
+  stepper.step(y, root.hi, law, out);
+  return root.hi;
 }
 
 }  // namespace sweetspot::detail

@@ -431,31 +431,11 @@ double ExactStepper::locate(const Eigen::VectorXd& y, double h, const ContactFor
                             Eigen::VectorXd& out) {
   const double f0 = event_value(state_, event, y, law), d0 = event_rate(state_, event, y, law) * h;
   const double f1 = event_value(state_, event, out, law), d1 = event_rate(state_, event, out, law) * h;
-  const auto cubic = [&](double s) {
-    const double s2 = s * s, s3 = s2 * s;
-    return (2 * s3 - 3 * s2 + 1) * f0 + (s3 - 2 * s2 + s) * d0 + (-2 * s3 + 3 * s2) * f1 + (s3 - s2) * d1;
-  };
-  // Illinois regula falsi keeps a bracket with the cubic > 0 at `lo` and <= 0 at `hi`: a step
+  // The root of the cubic keeps a bracket with the cubic > 0 at `lo` and <= 0 at `hi`: a step
   // ending just short of separation would leave the ball touching, and the next contact would
-  // start at once. Halving the weight of an end that stays put closes both sides, in about a
-  // dozen evaluations (bisection takes 50).
-  double lo = 0, hi = 1, f_lo = f0, f_hi = f1;
-  int side = 0;
-  for (int iteration = 0; iteration < 100 && hi - lo > 1e-14; ++iteration) {
-    double s = hi - f_hi * (hi - lo) / (f_hi - f_lo);
-    if (!(s > lo && s < hi)) s = (lo + hi) / 2;
-    const double value = cubic(s);
-    if (value > 0) {
-      lo = s, f_lo = value;
-      if (side == 1) f_hi /= 2;
-      side = 1;
-    } else {
-      hi = s, f_hi = value;
-      if (side == -1) f_lo /= 2;
-      side = -1;
-      if (value == 0) break;
-    }
-  }
+  // start at once.
+  const auto cubic = [&](double s) { return hermite(s, f0, d0, f1, d1); };
+  const double hi = falling_root(cubic, 0.0, 1.0, f0, f1, [](double a, double b) { return b - a <= 1e-14; }, 100).hi;
   if (hi >= 1) return h;  // `out` already is the state at the end of the step
   // The event step ends on a 1/4096 grid of the step just past the root. Where it lands (within
   // h/4096, ~2 ns at 10 us) changes nothing that matters: the force is stationary there (F' = 0
