@@ -169,18 +169,22 @@ ImpactResult collision_result(const Collision& c) {
 
 namespace {
 
-// The collision of the scene's ball with the struck body as `g` sees it: at the scene's step, or
-// at the step its accuracy asks.
-Collision collide_scene(const ImpactScene& scene, const SceneGeometry& g) {
+// The collision of the scene's ball with the struck body as `g` sees it: at the scene's step, at
+// the step its accuracy asks, or at the step a coarser slicing checked for it.
+Collision collide_scene(const ImpactScene& scene, const SceneGeometry& g, CaughtAgain caught_again) {
   CollisionOptions options = scene.integrator;
-  if (scene.step_accuracy > 0)
+  const bool checked = scene.step_accuracy > 0 && scene.checked_step > 0 && options.method == Method::exact;
+  if (checked)
+    options.dt = scene.checked_step;
+  else if (scene.step_accuracy > 0)
     options = options_for_accuracy(options, scene.step_accuracy, scene.ball, scene.ball_speed + g.bat_speed, g.recoil,
                                    g.contact.count() ? g.contact.omega.maxCoeff() : 0.0);
   // Van Zandt and the force analyses drive the modes with the force profile.
   options.record_force |= scene.van_zandt_comparison || scene.histories || scene.force_response || scene.mode_response;
   options.find_collision_time |= scene.force_response;  // its omega grid is in units of 1/tau
-  return scene.step_accuracy > 0 ? collide_within(g.contact, scene.ball, scene.ball_speed, options, scene.step_accuracy)
-                            : collide(g.contact, scene.ball, scene.ball_speed, options);
+  return scene.step_accuracy > 0 && !checked
+             ? collide_within(g.contact, scene.ball, scene.ball_speed, options, scene.step_accuracy, caught_again)
+             : collide(g.contact, scene.ball, scene.ball_speed, options);
 }
 
 }  // namespace
@@ -208,9 +212,10 @@ namespace {
 constexpr double patch_phi_tolerance = 1e-4;
 constexpr int max_patch_runs = 6;
 
-Collision collide_with_patch(const ImpactScene& scene, const ModalBasis& basis, SceneGeometry& g) {
+Collision collide_with_patch(const ImpactScene& scene, const ModalBasis& basis, SceneGeometry& g,
+                             CaughtAgain caught_again = CaughtAgain::check) {
   const WallMode* wall = g.wall >= 0 ? basis.wall_at(g.z) : nullptr;
-  if (!wall || wall->load == WallLoad::point) return collide_scene(scene, g);
+  if (!wall || wall->load == WallLoad::point) return collide_scene(scene, g, caught_again);
   const Ball& ball = scene.ball;
   const double fraction = mean_compression_fraction(ball);
   const double v = scene.ball_speed + g.bat_speed, mu = ball.mass / (1 + g.recoil);
@@ -221,7 +226,7 @@ Collision collide_with_patch(const ImpactScene& scene, const ModalBasis& basis, 
     g.contact.residual_compliance = g.beam_compliance + load.compliance;
     g.wall_patch = load;
     g.wall_compression = compression;
-    Collision c = collide_scene(scene, g);
+    Collision c = collide_scene(scene, g, caught_again);
     if (run == max_patch_runs || !(c.u_max > 0) || !std::isfinite(c.u_max)) return c;
     const double next_compression = fraction * c.u_max;
     const PatchLoad next = patch_load(*wall, ball.radius, next_compression);
@@ -302,14 +307,16 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& stated)
   }
   const ImpactScene& scene = adjusted ? *adjusted : given;
   SceneGeometry g = scene_geometry(scene, basis);
-  Collision c = collide_with_patch(scene, basis, g);
+  const bool drops_solved = g.kept.size() < static_cast<std::size_t>(basis.count());
+  const bool reruns_if_caught_again = scene.vibrational_modes == auto_modes && drops_solved;
+  Collision c = collide_with_patch(scene, basis, g,
+                                   reruns_if_caught_again ? CaughtAgain::return_unchecked : CaughtAgain::check);
   // auto's estimate bounds what the dropped modes change over one pulse. A ball the bat's
   // vibration strikes again (a handle impact) sums their errors over the contacts, and the timing
   // of each later one can magnify them past it (up to 12x the tolerance on R161 and the torpedo):
   // the impact is then run again with every solved mode kept, the unsolved ones alone dropped,
   // and their estimate counted once per contact (README "Numerics").
-  const bool drops_solved = g.kept.size() < static_cast<std::size_t>(basis.count());
-  if (scene.vibrational_modes == auto_modes && c.contacts > 1 && drops_solved) {
+  if (reruns_if_caught_again && c.contacts > 1) {
     ImpactScene every_solved = scene;
     every_solved.mode_tolerance = 0;  // nothing solved is dropped
     g = scene_geometry(every_solved, basis);
