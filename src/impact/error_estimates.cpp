@@ -27,6 +27,10 @@ bool can_refine(int slices, BeamTheory theory, int times) {
   return finer <= max_slices && (theory != BeamTheory::euler_bernoulli || finer <= max_euler_bernoulli_slices);
 }
 
+int ladder_start(int slices, BeamTheory theory, double accuracy) {
+  return accuracy < 1e-3 && can_refine(slices, theory, 3) ? slicing_refinement * slices : slices;
+}
+
 Bat bat_with_slices(BatDesign design, int slices) {
   design.slices = slices;
   return build_bat(design);
@@ -67,18 +71,34 @@ ImpactScene scene_for_accuracy(ImpactScene scene) {
 }
 
 SlicingLadder::SlicingLadder(int slices, BeamTheory theory, const ImpactScene& scene)
-    : theory_(theory), accuracy_(scene.accuracy), ball_speed_(scene.ball_speed), next_slices_(slices) {}
+    : theory_(theory),
+      accuracy_(scene.accuracy),
+      ball_speed_(scene.ball_speed),
+      exact_(scene.integrator.method == Method::exact),
+      next_slices_(slices) {}
+
+// Its share, or what the modes and the step leave of the accuracy where they take less than theirs
+// (the step takes its share; `auto` often drops far less than its share allows).
+double SlicingLadder::slicing_allowance() const {
+  return std::max(accuracy_budget(accuracy_).slicing, accuracy_ - result_.modes_error - result_.step_error);
+}
+
+ImpactScene SlicingLadder::next_scene(ImpactScene scene) const {
+  scene.checked_step = checked_step_;
+  return scene;
+}
 
 bool SlicingLadder::add(ImpactResult r) {
   r.slices_used = next_slices_;
   vf_.push_back(r.vf);
   result_ = std::move(r);
   if (result_.status != CollisionStatus::ok) return true;
+  if (exact_ && vf_.size() == 1) checked_step_ = result_.step_used;
   const bool can_double = can_refine(next_slices_, theory_);
   next_slices_ *= slicing_refinement;
   if (vf_.size() < 3 && can_double) return false;  // three slicings at least
   add_slicing_error(result_, vf_, vf_.size() - 1, true, ball_speed_);
-  if (result_.slicing_error <= accuracy_budget(accuracy_).slicing) return true;
+  if (result_.slicing_error <= slicing_allowance()) return true;
   if (can_double) return false;
   char why[240];
   std::snprintf(why, sizeof why,
@@ -102,17 +122,17 @@ void SlicingLadder::stop(const std::string& why) {
 
 ImpactResult simulate_within_accuracy(const BasisAtSlices& basis_at, int slices, BeamTheory theory,
                                       const ImpactScene& scene) {
-  SlicingLadder ladder(slices, theory, scene);
+  SlicingLadder ladder(ladder_start(slices, theory, scene.accuracy), theory, scene);
   for (bool first = true;; first = false) {
     const ModalBasis* basis = nullptr;
     try {
       basis = &basis_at(ladder.next_slices());
-    } catch (const InputError& impractical) {  // the bat's own slicing's refusal is the user's
+    } catch (const InputError& impractical) {  // the first slicing's refusal is the user's
       if (first) throw;
       ladder.stop(impractical.what());
       return ladder.take_result();
     }
-    if (ladder.add(simulate_impact(*basis, scene))) return ladder.take_result();
+    if (ladder.add(simulate_impact(*basis, ladder.next_scene(scene)))) return ladder.take_result();
   }
 }
 

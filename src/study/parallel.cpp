@@ -278,6 +278,12 @@ int point_slices(const Study& study, const GridPoint& p) {
   return p.slices > 0 ? p.slices : study.designs[p.design].slices();
 }
 
+// A point at a stated accuracy first runs at the slicing its ladder starts at (ladder_start).
+GridPoint at_ladder_start(const Study& study, const GridPoint& p) {
+  if (p.kind != StudyKind::impact || !(p.scene.accuracy > 0)) return p;
+  return with_design_slices(p, ladder_start(point_slices(study, p), p.theory, p.scene.accuracy));
+}
+
 // The point at twice and four times its slices (as far as it can be cut), for the slicing error of
 // a point that asks for its estimates without a stated accuracy (error_estimates.hpp); their own
 // estimates are not asked. None for a point that asks no estimate or states an accuracy.
@@ -290,7 +296,7 @@ std::vector<GridPoint> finer_points(const Study& study, const GridPoint& p) {
   return finer;
 }
 
-// The chunk's points at a stated accuracy (`results` holds their first rung, at their own slices):
+// The chunk's points at a stated accuracy (`results` holds their first rung, at_ladder_start):
 // each climbs its SlicingLadder, a rung for every point at once, each rung's bases solved before
 // its impacts, as a chunk's are, so that any ranks and threads give the same results.
 void refine_to_accuracy(const Study& study, ModalCache& cache, const std::vector<GridPoint>& grid,
@@ -309,8 +315,10 @@ void refine_to_accuracy(const Study& study, ModalCache& cache, const std::vector
   }
   while (!pending.empty()) {
     std::vector<GridPoint> rung(pending.size());
-    for (std::size_t k = 0; k < pending.size(); ++k)
+    for (std::size_t k = 0; k < pending.size(); ++k) {
       rung[k] = with_design_slices(grid[pending[k]], ladders[k].next_slices());
+      rung[k].scene = ladders[k].next_scene(rung[k].scene);
+    }
     cache.prefetch(rung);
     std::vector<const ModalBasis*> bases(rung.size());
     std::vector<std::string> reasons(rung.size());
@@ -345,7 +353,7 @@ std::vector<double> compute_chunk(const Study& study, const OutputLayout& layout
   std::vector<const ModalBasis*> bases(points.size(), nullptr);  // none for the wall and the toy
   std::vector<std::string> reasons(points.size());  // why a point failed: first its modes', then its own
   cache.make_room();
-  for (std::size_t i = 0; i < points.size(); ++i) grid[i] = grid_point(study, points[i]);
+  for (std::size_t i = 0; i < points.size(); ++i) grid[i] = at_ladder_start(study, grid_point(study, points[i]));
   // The finer points of those asking for their slicing error, and their bases.
   std::vector<std::vector<GridPoint>> finer(points.size());
   std::vector<std::vector<const ModalBasis*>> finer_bases(points.size());

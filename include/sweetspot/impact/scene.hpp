@@ -127,6 +127,10 @@ struct ImpactScene {
   // Relative exit-speed error the integration may add; > 0 chooses the step (or tolerance) from
   // the scene's pulse (step_selection.hpp) instead of integrator.dt. 0: integrator as given.
   double step_accuracy = 0;
+  // With step_accuracy and exact stepping: a step already chosen and checked for that accuracy on
+  // this scene with the bat cut coarser (SlicingLadder), taken as is, with no model and no check
+  // run. 0: chosen here.
+  double checked_step = 0;
   // The total relative exit-speed error allowed (error_estimates.hpp), > 0 or 0 for none: it
   // shares itself among the sources (accuracy_budget): the modes' share is `auto`'s tolerance,
   // the step's chooses the step, and the slicing's is met by callers that hold the bat's design
