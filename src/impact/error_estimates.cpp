@@ -122,12 +122,12 @@ void SlicingLadder::stop(const std::string& why) {
 
 ImpactResult simulate_within_accuracy(const BasisAtSlices& basis_at, int slices, BeamTheory theory,
                                       const ImpactScene& scene) {
-  SlicingLadder ladder(ladder_start(slices, theory, scene.accuracy), theory, scene);
+  SlicingLadder ladder(slices, theory, scene);
   for (bool first = true;; first = false) {
     const ModalBasis* basis = nullptr;
     try {
       basis = &basis_at(ladder.next_slices());
-    } catch (const InputError& impractical) {  // the first slicing's refusal is the user's
+    } catch (const InputError& impractical) {  // the bat's own slicing's refusal is the user's
       if (first) throw;
       ladder.stop(impractical.what());
       return ladder.take_result();

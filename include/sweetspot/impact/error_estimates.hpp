@@ -59,13 +59,15 @@ inline constexpr double slicing_safety = 2;
 // Euler-Bernoulli solve's max_euler_bernoulli_slices).
 bool can_refine(int slices, BeamTheory theory, int times = 1);
 
-// The slicing a stated accuracy's ladder starts at, for a bat cut into `slices`: at accuracies
-// tighter than 1e-3, twice them where the bat can be cut three times finer still; else its own.
-// A bat's own slicing is often short of the slicing's second-order regime (R161, 40 m/s, 60.5 and
-// 78.5 cm: the first doubling moves v_f 9-13x what the second does, not 4x), and the estimate's
-// guard against such a chance agreement (slicing_error) then needs a fourth slicing, from which
-// the first serves nothing: at 1e-4, 55 % of the design study's points did. At 1e-3 and looser
-// the three from the bat's own slices mostly suffice, and their solves are cheaper.
+// The slicing a stated accuracy's ladder starts at where many impacts share each bat's solves (a
+// study's), for a bat cut into `slices`: at accuracies tighter than 1e-3, twice them where the
+// bat can be cut three times finer still; else its own. A bat's own slicing is often short of the
+// slicing's second-order regime (R161, 40 m/s, 50.5-78.5 cm: the first doubling moves v_f up to
+// 50x what the second does, not 4x), and the estimate's guard against such a chance agreement
+// (slicing_error) then needs a fourth slicing, from which the first serves nothing: at 1e-4, 55 %
+// of the design study's points did. At 1e-3 and looser the three from the bat's own slices mostly
+// suffice. A single impact starts at the bat's own slices: there a solve at eight times them
+// costs more than the impact it may save.
 int ladder_start(int slices, BeamTheory theory, double accuracy);
 
 // The scale errors are relative to (above).
