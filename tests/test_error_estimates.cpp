@@ -344,3 +344,23 @@ TEST_CASE("The program's impact reports every error estimate", "[error_estimates
     CHECK_THAT(run.output, Catch::Contains(name));
   CHECK_THAT(run.output, !Catch::Contains("\"total_error\": null"));
 }
+
+TEST_CASE("A finer slicing takes the step the first one checked, as is", "[error_estimates]") {
+  // SlicingLadder::next_scene hands the first slicing's step on: no model, no check run. A step
+  // that is not a positive finite number is refused, as dt is.
+  const ModalBasis basis = compute_modes(load_bat(source_path("studies/bats/r161.toml")), BeamTheory::timoshenko);
+  ImpactScene scene = high_impact();
+  scene.z = 0.605;
+  scene.step_accuracy = 1e-5;
+  const ImpactResult chosen = simulate_impact(basis, scene);
+  REQUIRE(chosen.status == CollisionStatus::ok);
+  scene.checked_step = 7e-6;  // not on the step grid: taken as given
+  const ImpactResult taken = simulate_impact(basis, scene);
+  CHECK(taken.step_used == 7e-6);
+  CHECK(chosen.step_used != taken.step_used);
+  CHECK(std::abs(taken.vf / chosen.vf - 1) <= 2e-5);  // both within 1e-5 of the continuum in time
+  for (const double bad : {-1e-6, std::numeric_limits<double>::infinity()}) {
+    scene.checked_step = bad;
+    CHECK_THROWS_WITH(simulate_impact(basis, scene), Catch::Contains("checked_step"));
+  }
+}
