@@ -38,7 +38,7 @@ CollisionOptions options_for_accuracy(CollisionOptions options, double accuracy,
 // halves, 8 times at most. Dormand-Prince, which controls its own error, runs once.
 // A caller that runs the impact again wherever the ball is caught again (auto modes, which then
 // keep every solved mode) asks for the first run that shows it, unchecked: checking a result that
-// is thrown away cost a third of a study's time at a stated accuracy near the handle.
+// is thrown away cost two runs more, or three.
 enum class CaughtAgain { check, return_unchecked };
 Collision collide_within(const ModalContact& body, const Ball& ball, double ball_speed, CollisionOptions options,
                          double accuracy, CaughtAgain caught_again = CaughtAgain::check);
