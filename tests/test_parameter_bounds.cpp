@@ -299,4 +299,15 @@ TEST_CASE("an auto estimate orders of magnitude past the tolerance fails the poi
   near.modes_error = 12 * scene.mode_tolerance;  // repeated contacts: within what impact.cpp allows
   flag_untrusted_modes_error(scene, near);
   CHECK(near.status == CollisionStatus::ok);
+  // A stated accuracy gives the modes its share (a quarter), not mode_tolerance: a ball caught
+  // four times near the handle at accuracy 1e-3 reported 1.02e-3 and was failed as untrusted.
+  scene.accuracy = 1e-3;
+  ImpactResult stated;
+  stated.modes_error = 1.02e-3;
+  flag_untrusted_modes_error(scene, stated);
+  CHECK(stated.status == CollisionStatus::ok);
+  stated.modes_error = 0.03;  // past 100 times the share
+  flag_untrusted_modes_error(scene, stated);
+  CHECK(stated.status == CollisionStatus::failed);
+  CHECK_THAT(stated.message, Catch::Contains("the accuracy's share"));
 }

@@ -20,7 +20,8 @@ ImpactResult simulate_point(const GridPoint& point, const ModalBasis* basis);
 inline constexpr double untrusted_modes_error = 100;
 
 // Marks an ok result of a scene with modes = auto whose modes_error exceeds untrusted_modes_error
-// times the scene's mode_tolerance as failed, saying why; leaves any other result as it is.
+// times the scene's mode_tolerance (at a stated accuracy, the modes' share of it) as failed,
+// saying why; leaves any other result as it is.
 void flag_untrusted_modes_error(const ImpactScene& scene, ImpactResult& r);
 
 }  // namespace sweetspot
