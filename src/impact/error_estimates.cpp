@@ -57,6 +57,10 @@ void add_slicing_error(ImpactResult& r, const std::vector<double>& vf, std::size
 
 AccuracyBudget accuracy_budget(double accuracy) { return {accuracy / 2, accuracy / 4, accuracy / 4}; }
 
+double auto_mode_tolerance(const ImpactScene& scene) {
+  return scene.accuracy > 0 ? accuracy_budget(scene.accuracy).modes : scene.mode_tolerance;
+}
+
 ImpactScene scene_for_accuracy(ImpactScene scene) {
   if (!(scene.accuracy > 0)) return scene;
   if (scene.vibrational_modes >= 0)
@@ -64,9 +68,8 @@ ImpactScene scene_for_accuracy(ImpactScene scene) {
                      ") cannot be held to an accuracy; expected modes = \"auto\" (the default) or \"all\"");
   if (scene.step_accuracy > 0)
     throw InputError("accuracy excludes step_accuracy (the accuracy chooses the step): give one of them");
-  const AccuracyBudget budget = accuracy_budget(scene.accuracy);
-  scene.mode_tolerance = budget.modes;
-  scene.step_accuracy = budget.step;
+  scene.mode_tolerance = auto_mode_tolerance(scene);
+  scene.step_accuracy = accuracy_budget(scene.accuracy).step;
   return scene;
 }
 

@@ -52,15 +52,14 @@ void add_flight(const Air& air, ImpactResult& r) {
 
 void flag_untrusted_modes_error(const ImpactScene& scene, ImpactResult& r) {
   if (r.status != CollisionStatus::ok || scene.vibrational_modes != auto_modes) return;
-  // A stated accuracy gives auto its modes' share instead (scene_for_accuracy).
-  const bool stated = scene.accuracy > 0;
-  const double tolerance = stated ? accuracy_budget(scene.accuracy).modes : scene.mode_tolerance;
+  const double tolerance = auto_mode_tolerance(scene);
   if (!(r.modes_error > untrusted_modes_error * tolerance) && !std::isnan(r.modes_error)) return;
   r.status = CollisionStatus::failed;
   std::ostringstream why;
   why << "modes = auto estimates a relative vf error of " << r.modes_error << " for the dropped modes, over "
-      << untrusted_modes_error << " times " << (stated ? "the accuracy's share for them, " : "mode_tolerance = ")
-      << tolerance << ": the modal model does not hold for this bat";
+      << untrusted_modes_error << " times "
+      << (scene.accuracy > 0 ? "the accuracy's share for them, " : "mode_tolerance = ") << tolerance
+      << ": the modal model does not hold for this bat";
   r.message = why.str();
 }
 

@@ -98,6 +98,10 @@ struct AccuracyBudget {
 };
 AccuracyBudget accuracy_budget(double accuracy);
 
+// The tolerance `auto` keeps the dropped modes within for the scene: its mode_tolerance, or at a
+// stated accuracy the modes' share (scene_for_accuracy).
+double auto_mode_tolerance(const ImpactScene& scene);
+
 // The least and largest total accuracy that may be asked: below 1e-7 the round-off that a second
 // contact magnifies (docs/numerics.md) is as large as the error asked; above 0.1 a result says
 // nothing.
