@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "bat/banded_eigensolver.hpp"
+#include "bat/beam_system.hpp"
 #include "n2000_scenes.hpp"
 #include "program.hpp"
 #include "sweetspot/bat/bat_file.hpp"
@@ -274,5 +276,28 @@ TEST_CASE("A partial solve of most of the modes is still the dense solve's", "[p
     const Eigen::MatrixXd gram = part.vectors.transpose() * beam_mass_matrix(bat, BeamTheory::timoshenko) * part.vectors;
     CHECK((gram - Eigen::MatrixXd::Identity(112, 112)).cwiseAbs().maxCoeff() < 1e-12);
     check_modes_match(part, full, bat.length);
+  }
+}
+
+TEST_CASE("The Sturm counts find as many eigenvalues below a shift as the dense solve does", "[partial_modes]") {
+  // Sylvester's law of inertia: K - x M has as many negative pivots as the pencil has eigenvalues
+  // below x. Shifts halfway (geometrically) between neighbouring dense eigenvalues, over the whole
+  // spectrum: Timoshenko's counts factor K - x M itself, Euler-Bernoulli's a tridiagonal form.
+  for (const Case& c : cases()) {
+    const Bat bat = resample(load_bat(source_path("studies/bats/" + c.bat + ".toml")), c.slices);
+    const ModalBasis full = compute_modes(bat, c.theory);
+    const bool timoshenko = c.theory == BeamTheory::timoshenko;
+    const BeamSystem system = timoshenko ? timoshenko_system(bat) : euler_bernoulli_system(bat);
+    INFO(c.bat << ", " << to_string(c.theory) << ", N = " << c.slices);
+    int wrong = 0;
+    for (int n = 2; n + 1 < full.count(); ++n) {
+      const double below = full.omega(n) * full.omega(n + 1);  // the geometric mean of w_n^2, w_(n+1)^2
+      if (full.omega(n + 1) / full.omega(n) - 1 < 1e-6) continue;  // closer than the dense solve's round-off
+      wrong += count_below(system, timoshenko, below) != n + 1;
+    }
+    CHECK(wrong == 0);
+    const double top = full.omega(full.count() - 1);
+    CHECK(count_below(system, timoshenko, 2 * top * top) == full.count());
+    CHECK(count_below(system, timoshenko, full.omega(2) * full.omega(2) / 2) == 2);
   }
 }

@@ -3,6 +3,7 @@
 #include <lapacke.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -23,38 +24,31 @@ void check(lapack_int info, const char* routine) {
                                           std::to_string(info) + ")");
 }
 
-// LAPACK's symmetric band storage, upper triangle: ab[kd + i - j + j (kd + 1)] = a(i, j) scale_i
-// scale_j.
-std::vector<double> symmetric_band(const Eigen::SparseMatrix<double>& a, const VectorXd& scale) {
+// LAPACK's symmetric band storage, upper triangle: ab[kd + i - j + j (kd + 1)] = a(i, j).
+std::vector<double> symmetric_band(const Eigen::SparseMatrix<double>& a) {
   const int n = static_cast<int>(a.rows());
   std::vector<double> ab((kd + 1) * n, 0.0);
   for (int j = 0; j < n; ++j)
-    for (int i = std::max(0, j - kd); i <= j; ++i) ab[kd + i - j + j * (kd + 1)] = a.coeff(i, j) * scale(i) * scale(j);
+    for (int i = std::max(0, j - kd); i <= j; ++i) ab[kd + i - j + j * (kd + 1)] = a.coeff(i, j);
   return ab;
 }
 
-// The pencil as a symmetric tridiagonal matrix with its eigenvalues: LAPACK reduces the banded
-// problem by rotations it does not accumulate (O(n^2 kd)), which is what makes this cheaper than
-// the dense solve. With M diagonal (Timoshenko) the problem is made standard by M^(-1/2) here;
-// otherwise by M's split Cholesky factor (dpbstf, dsbgst), as dsbgvx does. The _work routines:
+// Euler-Bernoulli's pencil (its consistent M is not diagonal) as a symmetric tridiagonal matrix
+// with its eigenvalues: made standard by M's split Cholesky factor (dpbstf, dsbgst), then reduced
+// by rotations LAPACK does not accumulate (dsbtrd, O(n^2 kd)), as dsbgvx does. The _work routines:
 // no NaN scan of the input, which would cost as much as the work.
 struct Tridiagonal {
   VectorXd d, e;
 };
 
-Tridiagonal tridiagonal(const BeamSystem& s, bool diagonal_mass) {
+Tridiagonal tridiagonal(const BeamSystem& s) {
   const int n = static_cast<int>(s.mass.rows());
-  const VectorXd unit = VectorXd::Ones(n);
-  const VectorXd scale = diagonal_mass ? VectorXd(s.mass.diagonal().cwiseSqrt().cwiseInverse()) : unit;
-  std::vector<double> k = symmetric_band(s.stiffness, scale), work(2 * n);
+  std::vector<double> k = symmetric_band(s.stiffness), m = symmetric_band(s.mass), work(2 * n);
   double unused = 0;
-  if (!diagonal_mass) {
-    std::vector<double> m = symmetric_band(s.mass, unit);
-    check(LAPACKE_dpbstf_work(LAPACK_COL_MAJOR, 'U', n, kd, m.data(), kd + 1), "dpbstf");
-    check(LAPACKE_dsbgst_work(LAPACK_COL_MAJOR, 'N', 'U', n, kd, kd, k.data(), kd + 1, m.data(), kd + 1, &unused, 1,
-                              work.data()),
-          "dsbgst");
-  }
+  check(LAPACKE_dpbstf_work(LAPACK_COL_MAJOR, 'U', n, kd, m.data(), kd + 1), "dpbstf");
+  check(LAPACKE_dsbgst_work(LAPACK_COL_MAJOR, 'N', 'U', n, kd, kd, k.data(), kd + 1, m.data(), kd + 1, &unused, 1,
+                            work.data()),
+        "dsbgst");
   Tridiagonal t{VectorXd(n), VectorXd(std::max(n - 1, 1))};
   check(LAPACKE_dsbtrd_work(LAPACK_COL_MAJOR, 'N', 'U', n, kd, k.data(), kd + 1, t.d.data(), t.e.data(), &unused, 1,
                             work.data()),
@@ -62,43 +56,136 @@ Tridiagonal tridiagonal(const BeamSystem& s, bool diagonal_mass) {
   return t;
 }
 
-// How many eigenvalues lie below x: the negative pivots of T - x I (Sylvester's law, the Sturm
-// count LAPACK's bisection is built on), O(n).
-int count_below(const Tridiagonal& t, double x) {
-  const int n = static_cast<int>(t.d.size());
-  const double tiny = std::numeric_limits<double>::min();
-  double pivot = t.d(0) - x;
-  int count = pivot < 0;
-  for (int i = 1; i < n; ++i) {
-    if (pivot == 0) pivot = -tiny;
-    pivot = t.d(i) - x - t.e(i - 1) * t.e(i - 1) / pivot;
-    count += pivot < 0;
-  }
-  return count;
-}
-
-// Sturm counts at eight shifts in one pass: independent recurrences, in SIMD registers, so that
-// eight cost 1.3 times what one does (one is bound by its divisions' latency). A zero pivot is
-// left to IEEE arithmetic, as LAPACK's dlaneg does: its successor is -inf (counted) and the next
-// one finite again (Demmel, Dhillon and Ren, "On the correctness of some bisection-like parallel
-// eigenvalue algorithms in floating point arithmetic", ETNA 3, 1995); the squared off-diagonal
-// is kept above the underflow, so that 0 / 0 never happens.
+// Sturm counts: how many eigenvalues lie below x (Sylvester's law of inertia, the count LAPACK's
+// bisection is built on). count(x) for one shift, counts(x) for eight in one pass: independent
+// recurrences, in SIMD registers, so that eight cost 1.3 times what one does (one is bound by its
+// divisions' latency). bound() is Gershgorin's bound on the eigenvalues' size.
 constexpr int shifts = 8;
 using Shifts = Eigen::Array<double, shifts, 1>;
 
-Shifts counts_below(const Tridiagonal& t, const Shifts& x) {
-  const auto negative = [](const Shifts& pivot) { return (pivot < 0).select(Shifts::Ones(), Shifts::Zero()); };
-  Shifts pivot = t.d(0) - x;
-  Shifts count = negative(pivot);
-  for (Eigen::Index i = 1; i < t.d.size(); ++i) {
-    const double e2 = std::max(t.e(i - 1) * t.e(i - 1), std::numeric_limits<double>::min());
-    pivot = (t.d(i) - x) - e2 / pivot;
-    count += negative(pivot);
-  }
-  return count;
-}
+Shifts negative(const Shifts& pivot) { return (pivot < 0).select(Shifts::Ones(), Shifts::Zero()); }
 
-// An interval holding exactly one of T's eigenvalues, that of index count_below(lo).
+// On the tridiagonal T: the negative pivots of T - x I. In count, a zero pivot is made -tiny; in
+// counts it is left to IEEE arithmetic, as LAPACK's dlaneg does: its successor is -inf (counted) and
+// the next one finite again (Demmel, Dhillon and Ren, "On the correctness of some bisection-like
+// parallel eigenvalue algorithms in floating point arithmetic", ETNA 3, 1995); the squared
+// off-diagonal is kept above the underflow, so that 0 / 0 never happens.
+class TridiagonalCounts {
+ public:
+  explicit TridiagonalCounts(const Tridiagonal& t) : t_(t) {}
+  int count(double x) const {
+    const int n = static_cast<int>(t_.d.size());
+    const double tiny = std::numeric_limits<double>::min();
+    double pivot = t_.d(0) - x;
+    int count = pivot < 0;
+    for (int i = 1; i < n; ++i) {
+      if (pivot == 0) pivot = -tiny;
+      pivot = t_.d(i) - x - t_.e(i - 1) * t_.e(i - 1) / pivot;
+      count += pivot < 0;
+    }
+    return count;
+  }
+  Shifts counts(const Shifts& x) const {
+    Shifts pivot = t_.d(0) - x;
+    Shifts count = negative(pivot);
+    for (Eigen::Index i = 1; i < t_.d.size(); ++i) {
+      const double e2 = std::max(t_.e(i - 1) * t_.e(i - 1), std::numeric_limits<double>::min());
+      pivot = (t_.d(i) - x) - e2 / pivot;
+      count += negative(pivot);
+    }
+    return count;
+  }
+  double bound() const {
+    const int n = static_cast<int>(t_.d.size());
+    double bound = 0;
+    for (int i = 0; i < n; ++i)
+      bound = std::max(bound, std::abs(t_.d(i)) + (i > 0 ? std::abs(t_.e(i - 1)) : 0.0) +
+                                  (i + 1 < n ? std::abs(t_.e(i)) : 0.0));
+    return bound;
+  }
+
+ private:
+  const Tridiagonal& t_;
+};
+
+// On Timoshenko's pencil itself: the negative eigenvalues of the pivots of the block LDL^T
+// factorisation of K - x M, whose inertia is that of M^(-1/2) K M^(-1/2) - x I (Sylvester). The
+// beam's degrees of freedom come in pairs, one per slice (its displacement and rotation), and K
+// couples each slice only with its neighbours, while the lumped M is diagonal: K - x M is block
+// tridiagonal, and its pivots are the 2 x 2 Schur complements S_i = A_i - B_i^T S_(i-1)^(-1) B_i.
+// A count costs O(n) and needs no reduction to tridiagonal form, whose O(n^2 kd) rotations dominate
+// a solve of a few modes at large n. The factorisation is made without pivoting, as the Sturm
+// sequence checks of structural eigen-solvers are (Bathe, "Finite Element Procedures", 1996,
+// sec. 8.2.5); a singular pivot's determinant is made slightly positive.
+class PencilCounts {
+ public:
+  explicit PencilCounts(const BeamSystem& s) : slices_(static_cast<int>(s.mass.rows()) / 2), blocks_(slices_) {
+    const auto k = [&](int i, int j) { return s.stiffness.coeff(i, j); };
+    for (int i = 0; i < slices_; ++i) {
+      Block& b = blocks_[i];
+      const int y = 2 * i, phi = y + 1;
+      b = {k(y, y), k(y, phi), k(phi, phi), s.mass.coeff(y, y), s.mass.coeff(phi, phi), {}};
+      if (i > 0)
+        b.coupling = {k(y - 2, y), k(y - 2, phi), k(y - 1, y), k(y - 1, phi)};
+    }
+  }
+  int count(double x) const { return static_cast<int>(counts(Shifts::Constant(x))(0)); }
+  Shifts counts(const Shifts& x) const {
+    const double tiny = std::numeric_limits<double>::min(), eps = std::numeric_limits<double>::epsilon();
+    Shifts p = Shifts::Zero(), q = Shifts::Zero(), r = Shifts::Zero(), inverse_det = Shifts::Zero();
+    Shifts count = Shifts::Zero();
+    for (const Block& b : blocks_) {
+      // S_(i-1)^(-1) = [r -q; -q p] / det, against B = [b00 b01; b10 b11] (rows: the previous
+      // slice's y and phi).
+      const auto& c = b.coupling;
+      const Shifts t00 = r * c[0] - q * c[2], t01 = r * c[1] - q * c[3];
+      const Shifts t10 = p * c[2] - q * c[0], t11 = p * c[3] - q * c[1];
+      const Shifts s00 = (c[0] * t00 + c[2] * t10) * inverse_det;
+      const Shifts s01 = (c[0] * t01 + c[2] * t11) * inverse_det;
+      const Shifts s11 = (c[1] * t01 + c[3] * t11) * inverse_det;
+      p = (b.yy - x * b.mass) - s00;
+      q = b.yphi - s01;
+      r = (b.phiphi - x * b.inertia) - s11;
+      Shifts det = p * r - q * q;
+      det = (det == 0).select(eps * (p * p + 2 * q * q + r * r) + tiny, det);
+      // A 2 x 2 pivot has one negative eigenvalue when its determinant is negative, two when it is
+      // positive and its trace negative.
+      count += (det < 0).select(Shifts::Ones(), (p + r < 0).select(Shifts::Constant(2), Shifts::Zero()));
+      inverse_det = det.inverse();
+    }
+    return count;
+  }
+  // Gershgorin's bound on M^(-1/2) K M^(-1/2): each row's diagonal and its entries' sizes.
+  double bound() const {
+    std::vector<double> row(2 * slices_, 0.0);
+    const auto add = [&](int i, int j, double k) {  // K's entry (i, j) and its mirror (j, i)
+      const double a = std::abs(k) / std::sqrt(mass(i) * mass(j));
+      row[i] += a;
+      if (j != i) row[j] += a;
+    };
+    for (int i = 0; i < slices_; ++i) {
+      const Block& b = blocks_[i];
+      add(2 * i, 2 * i, b.yy);
+      add(2 * i + 1, 2 * i + 1, b.phiphi);
+      add(2 * i, 2 * i + 1, b.yphi);
+      if (i > 0)
+        for (int a = 0; a < 2; ++a)
+          for (int d = 0; d < 2; ++d) add(2 * i - 2 + a, 2 * i + d, b.coupling[2 * a + d]);
+    }
+    return *std::max_element(row.begin(), row.end());
+  }
+
+ private:
+  struct Block {
+    double yy, yphi, phiphi, mass, inertia;
+    std::array<double, 4> coupling;  // K between the previous slice's (y, phi) and this one's
+  };
+  double mass(int dof) const { return dof % 2 ? blocks_[dof / 2].inertia : blocks_[dof / 2].mass; }
+  int slices_;
+  std::vector<Block> blocks_;
+};
+
+// An interval holding exactly one eigenvalue, that of index count(lo).
 struct Bracket {
   double lo = 0, hi = 0;
 };
@@ -108,14 +195,15 @@ struct Sample {
   int count;
 };
 
-// Brackets of T's eigenvalues of index first to count - 1, each within 1/8 of itself, by
+// Brackets of the eigenvalues of index first to count - 1, each within 1/8 of itself, by
 // multisection on Sturm counts (nine parts per pass, as many bits as three bisections). The
 // points are spaced geometrically while the interval spans orders of magnitude (the beam's
 // eigenvalues spread over 1e6 to 1e12). A part whose counts do not rise (round-off, within
 // eps ||T|| of an eigenvalue) holds none; an eigenvalue so lost leaves its bracket empty.
 constexpr double isolated_width = 1.0 / 8;
 
-void isolate(const Tridiagonal& t, Sample lo, Sample hi, int first, int count, std::vector<Bracket>& out) {
+template <class Counts>
+void isolate(const Counts& t, Sample lo, Sample hi, int first, int count, std::vector<Bracket>& out) {
   if (hi.count <= lo.count || hi.count <= first || lo.count >= count) return;  // nothing wanted inside
   if (hi.count - lo.count == 1 && hi.x - lo.x <= isolated_width * lo.x) {
     out[lo.count - first] = {lo.x, hi.x};
@@ -127,7 +215,7 @@ void isolate(const Tridiagonal& t, Sample lo, Sample hi, int first, int count, s
     x(s) = hi.x > 4 * lo.x ? lo.x * std::pow(hi.x / lo.x, part) : lo.x + part * (hi.x - lo.x);
   }
   if (!(lo.x < x(0) && x(shifts - 1) < hi.x)) return;  // cannot be split: equal eigenvalues
-  const Shifts c = counts_below(t, x);
+  const Shifts c = t.counts(x);
   const auto sample = [&](int s) { return s < 0 ? lo : s == shifts ? hi : Sample{x(s), static_cast<int>(c(s))}; };
   for (int s = 0; s <= shifts; ++s) isolate(t, sample(s - 1), sample(s), first, count, out);
 }
@@ -137,12 +225,13 @@ void isolate(const Tridiagonal& t, Sample lo, Sample hi, int first, int count, s
 // is unknown), or within T's round-off, `floor`. Two steps of inverse iteration at its midpoint
 // then leave a neighbour's share at (1e-8)^2 times its share of the start over the mode's own:
 // at 1e-6, that ratio (about 1e4 on the torpedo's crowded modes 72-74 at N = 170) left 3e-9 in their
-// shapes. Each pass shares counts_below's eight shifts among the brackets still open: one each
+// shapes. Each pass shares the counts' eight shifts among the brackets still open: one each
 // (LAPACK's dlaebz bisects many intervals at once the same way), or several each, evenly spaced,
 // when fewer than eight are left.
 constexpr double gap_share = 1e-8, last_width = 1e-11;
 
-void narrow(const Tridiagonal& t, int first, double floor, std::vector<Bracket>& brackets) {
+template <class Counts>
+void narrow(const Counts& t, int first, double floor, std::vector<Bracket>& brackets) {
   const int last = static_cast<int>(brackets.size()) - 1;
   // The eigenvalue's distance to its neighbours is at least that to their brackets (the rigid
   // ones' lie at 0).
@@ -167,7 +256,7 @@ void narrow(const Tridiagonal& t, int first, double floor, std::vector<Bracket>&
         const Bracket& bracket = brackets[open[b]];
         x(b * points + i) = bracket.lo + (bracket.hi - bracket.lo) * (i + 1) / (points + 1);
       }
-    const Shifts c = counts_below(t, x);
+    const Shifts c = t.counts(x);
     for (int b = 0; b < served; ++b) {
       Bracket& bracket = brackets[open[b]];
       for (int i = b * points; i < (b + 1) * points; ++i) {
@@ -181,27 +270,19 @@ void narrow(const Tridiagonal& t, int first, double floor, std::vector<Bracket>&
   }
 }
 
-// Gershgorin's bound on |T|'s eigenvalues.
-double spectral_bound(const Tridiagonal& t) {
-  const int n = static_cast<int>(t.d.size());
-  double bound = 0;
-  for (int i = 0; i < n; ++i)
-    bound = std::max(bound, std::abs(t.d(i)) + (i > 0 ? std::abs(t.e(i - 1)) : 0.0) + (i + 1 < n ? std::abs(t.e(i)) : 0.0));
-  return bound;
-}
-
 // Brackets of the vibrational eigenvalues 2 to count - 1. The rigid two lie within round-off,
 // eps ||T||, of 0, the first vibrational one far above (5e-10 ||T|| for Euler-Bernoulli at
 // N = 168, whose ||T|| grows as N^4): the search starts at 1e4 eps ||T||, and must find exactly
 // the two rigid eigenvalues below it. False when that fails or an eigenvalue is left without a
 // bracket.
-bool vibrational_brackets(const Tridiagonal& t, int count, std::vector<Bracket>& out) {
+template <class Counts>
+bool vibrational_brackets(const Counts& t, int count, std::vector<Bracket>& out) {
   const double eps = std::numeric_limits<double>::epsilon();
-  const double top = spectral_bound(t), bottom = 1e4 * eps * top;
-  const Sample lo{bottom, count_below(t, bottom)};
+  const double top = t.bound(), bottom = 1e4 * eps * top;
+  const Sample lo{bottom, t.count(bottom)};
   out.assign(std::max(count - 2, 0), Bracket{});
   if (lo.count != 2) return false;
-  isolate(t, lo, {top, count_below(t, top)}, 2, count, out);
+  isolate(t, lo, {top, t.count(top)}, 2, count, out);
   if (!std::all_of(out.begin(), out.end(), [](const Bracket& b) { return b.lo < b.hi; })) return false;
   narrow(t, 2, 16 * eps * top, out);
   return true;
@@ -357,18 +438,16 @@ void orthonormalise(const MassProduct& mass, MatrixXd& vectors) {
   }
 }
 
-}  // namespace
-
-bool solve_lowest(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass, BandedRequest request,
-                  VectorXd& omega_squared, MatrixXd& vectors, int* counted) {
-  const Tridiagonal t = tridiagonal(s, request.diagonal_mass);
+template <class Counts>
+bool solve_lowest(const Counts& counts, const BeamSystem& s, const Eigen::SparseMatrix<double>& mass,
+                  BandedRequest request, VectorXd& omega_squared, MatrixXd& vectors, int* counted) {
   const int dofs = static_cast<int>(s.mass.rows());
   // The two rigid modes always (they lie at 0 however low the frequency asked).
-  const int count = std::max(2, request.count >= 0 ? request.count : count_below(t, request.upper));
+  const int count = std::max(2, request.count >= 0 ? request.count : counts.count(request.upper));
   if (counted) *counted = count;
   if (count > dofs * max_banded_share || count > request.most) return false;
   std::vector<Bracket> brackets;
-  if (!vibrational_brackets(t, count, brackets)) return false;
+  if (!vibrational_brackets(counts, count, brackets)) return false;
   omega_squared = VectorXd::Zero(count);
   vectors = MatrixXd::Zero(dofs, count);
   ShiftedPencil pencil(s);
@@ -378,6 +457,21 @@ bool solve_lowest(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass, 
     vectors.col(k) = eigenvector(pencil, m, start, brackets[k - 2], k, omega_squared, vectors);
   orthonormalise(m, vectors);
   return true;
+}
+
+}  // namespace
+
+bool solve_lowest(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass, BandedRequest request,
+                  VectorXd& omega_squared, MatrixXd& vectors, int* counted) {
+  if (request.diagonal_mass) return solve_lowest(PencilCounts(s), s, mass, request, omega_squared, vectors, counted);
+  const Tridiagonal t = tridiagonal(s);
+  return solve_lowest(TridiagonalCounts(t), s, mass, request, omega_squared, vectors, counted);
+}
+
+int count_below(const BeamSystem& s, bool diagonal_mass, double x) {
+  if (diagonal_mass) return PencilCounts(s).count(x);
+  const Tridiagonal t = tridiagonal(s);
+  return TridiagonalCounts(t).count(x);
 }
 
 }  // namespace sweetspot

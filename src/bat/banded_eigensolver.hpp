@@ -1,11 +1,13 @@
 #pragma once
 // The lowest modes of the banded pencil K x = w^2 M x without the dense solve's O(n^3) (README,
-// "Numerics"): LAPACK reduces the pencil to tridiagonal form T without forming the transformation
-// (dsbtrd, as dsbgvx does); Sturm counts on T bracket each eigenvalue wanted, and only those,
-// within 1e-8 of its distance to the others; each eigenpair then comes from inverse iteration at
-// that shift on the banded K - w^2 M itself (a band LU, O(n) per step), its eigenvalue the
-// Rayleigh quotient. Both theories' matrices couple degrees of freedom at most beam_bandwidth
-// apart (beam_system.hpp).
+// "Numerics"): Sturm counts bracket each eigenvalue wanted, and only those, within 1e-8 of its
+// distance to the others; each eigenpair then comes from inverse iteration at that shift on the
+// banded K - w^2 M itself (a band LU, O(n) per step), its eigenvalue the Rayleigh quotient. The
+// counts come from the block LDL^T factorisation of Timoshenko's K - x M (its M is diagonal, and K
+// couples only neighbouring slices), O(n) each; for Euler-Bernoulli's consistent M, from the
+// tridiagonal form LAPACK reduces the pencil to without forming the transformation (dsbtrd, as
+// dsbgvx does), O(n^2) once. Both theories' matrices couple degrees of freedom at most
+// beam_bandwidth apart (beam_system.hpp).
 #include <limits>
 
 #include <Eigen/Dense>
@@ -43,5 +45,9 @@ inline constexpr double max_banded_share = 0.75;
 // solved or not.
 bool solve_lowest(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass, BandedRequest request,
                   Eigen::VectorXd& omega_squared, Eigen::MatrixXd& vectors, int* counted = nullptr);
+
+// How many eigenvalues of the pencil lie below x, by the Sturm count the solve uses (rigid ones
+// included).
+int count_below(const BeamSystem& s, bool diagonal_mass, double x);
 
 }  // namespace sweetspot
