@@ -24,31 +24,38 @@ void check(lapack_int info, const char* routine) {
                                           std::to_string(info) + ")");
 }
 
-// LAPACK's symmetric band storage, upper triangle: ab[kd + i - j + j (kd + 1)] = a(i, j).
-std::vector<double> symmetric_band(const Eigen::SparseMatrix<double>& a) {
+// LAPACK's symmetric band storage, upper triangle: ab[kd + i - j + j (kd + 1)] = a(i, j) scale_i
+// scale_j.
+std::vector<double> symmetric_band(const Eigen::SparseMatrix<double>& a, const VectorXd& scale) {
   const int n = static_cast<int>(a.rows());
   std::vector<double> ab((kd + 1) * n, 0.0);
   for (int j = 0; j < n; ++j)
-    for (int i = std::max(0, j - kd); i <= j; ++i) ab[kd + i - j + j * (kd + 1)] = a.coeff(i, j);
+    for (int i = std::max(0, j - kd); i <= j; ++i) ab[kd + i - j + j * (kd + 1)] = a.coeff(i, j) * scale(i) * scale(j);
   return ab;
 }
 
-// Euler-Bernoulli's pencil (its consistent M is not diagonal) as a symmetric tridiagonal matrix
-// with its eigenvalues: made standard by M's split Cholesky factor (dpbstf, dsbgst), then reduced
-// by rotations LAPACK does not accumulate (dsbtrd, O(n^2 kd)), as dsbgvx does. The _work routines:
-// no NaN scan of the input, which would cost as much as the work.
+// The pencil as a symmetric tridiagonal matrix with its eigenvalues: LAPACK reduces the banded
+// problem by rotations it does not accumulate (dsbtrd, O(n^2 kd)). With M diagonal (Timoshenko)
+// the problem is made standard by M^(-1/2) here; otherwise by M's split Cholesky factor (dpbstf,
+// dsbgst), as dsbgvx does. The _work routines: no NaN scan of the input, which would cost as much
+// as the work.
 struct Tridiagonal {
   VectorXd d, e;
 };
 
-Tridiagonal tridiagonal(const BeamSystem& s) {
+Tridiagonal tridiagonal(const BeamSystem& s, bool diagonal_mass) {
   const int n = static_cast<int>(s.mass.rows());
-  std::vector<double> k = symmetric_band(s.stiffness), m = symmetric_band(s.mass), work(2 * n);
+  const VectorXd unit = VectorXd::Ones(n);
+  const VectorXd scale = diagonal_mass ? VectorXd(s.mass.diagonal().cwiseSqrt().cwiseInverse()) : unit;
+  std::vector<double> k = symmetric_band(s.stiffness, scale), work(2 * n);
   double unused = 0;
-  check(LAPACKE_dpbstf_work(LAPACK_COL_MAJOR, 'U', n, kd, m.data(), kd + 1), "dpbstf");
-  check(LAPACKE_dsbgst_work(LAPACK_COL_MAJOR, 'N', 'U', n, kd, kd, k.data(), kd + 1, m.data(), kd + 1, &unused, 1,
-                            work.data()),
-        "dsbgst");
+  if (!diagonal_mass) {
+    std::vector<double> m = symmetric_band(s.mass, unit);
+    check(LAPACKE_dpbstf_work(LAPACK_COL_MAJOR, 'U', n, kd, m.data(), kd + 1), "dpbstf");
+    check(LAPACKE_dsbgst_work(LAPACK_COL_MAJOR, 'N', 'U', n, kd, kd, k.data(), kd + 1, m.data(), kd + 1, &unused, 1,
+                              work.data()),
+          "dsbgst");
+  }
   Tridiagonal t{VectorXd(n), VectorXd(std::max(n - 1, 1))};
   check(LAPACKE_dsbtrd_work(LAPACK_COL_MAJOR, 'N', 'U', n, kd, k.data(), kd + 1, t.d.data(), t.e.data(), &unused, 1,
                             work.data()),
@@ -63,7 +70,7 @@ Tridiagonal tridiagonal(const BeamSystem& s) {
 constexpr int shifts = 8;
 using Shifts = Eigen::Array<double, shifts, 1>;
 
-Shifts negative(const Shifts& pivot) { return (pivot < 0).select(Shifts::Ones(), Shifts::Zero()); }
+Shifts negative(const Shifts& pivot) { return (pivot < 0).cast<double>(); }
 
 // On the tridiagonal T: the negative pivots of T - x I. In count, a zero pivot is made -tiny; in
 // counts it is left to IEEE arithmetic, as LAPACK's dlaneg does: its successor is -inf (counted) and
@@ -147,10 +154,10 @@ class PencilCounts {
       q = b.yphi - s01;
       r = (b.phiphi - x * b.inertia) - s11;
       Shifts det = p * r - q * q;
-      det = (det == 0).select(eps * (p * p + 2 * q * q + r * r) + tiny, det);
+      det += (det == 0).cast<double>() * (eps * (p * p + 2 * q * q + r * r) + tiny);
       // A 2 x 2 pivot has one negative eigenvalue when its determinant is negative, two when it is
       // positive and its trace negative.
-      count += (det < 0).select(Shifts::Ones(), (p + r < 0).select(Shifts::Constant(2), Shifts::Zero()));
+      count += negative(det) + 2 * ((det > 0) && (p + r < 0)).cast<double>();
       inverse_det = det.inverse();
     }
     return count;
@@ -424,28 +431,25 @@ VectorXd eigenvector(ShiftedPencil& pencil, const MassProduct& mass, const Vecto
 }
 
 // Inverse iteration leaves two modes M-orthogonal only to eps w_max^2 over their gap, 5e-10 for
-// Euler-Bernoulli at N = 168 (its w_max grows as N^2). Gram-Schmidt in the M inner product, O(n k^2),
-// makes the basis orthonormal to round-off: here as Cholesky QR, which gives its result from
-// matrix products (the Gram matrix X^T M X = L L^T, then X L^-T) at a fraction of the time a
-// column-by-column pass takes. Its loss of orthogonality grows as X's condition number squared
-// (Yamamoto et al., "Roundoff error analysis of the CholeskyQR2 algorithm", ETNA 44, 2015), which
-// is 1 + 1e-9 here. False if the Gram matrix is not positive definite.
-bool orthonormalise(const MassProduct& mass, MatrixXd& vectors) {
-  auto vibrational = vectors.rightCols(vectors.cols() - 2);
-  MatrixXd mx(vibrational.rows(), vibrational.cols());
-  for (Eigen::Index k = 0; k < vibrational.cols(); ++k) mx.col(k) = mass * vibrational.col(k);
-  const Eigen::LLT<MatrixXd> gram(vibrational.transpose() * mx);
-  if (gram.info() != Eigen::Success) return false;
-  gram.matrixU().solveInPlace<Eigen::OnTheRight>(vibrational);
-  return true;
+// Euler-Bernoulli at N = 168 (its w_max grows as N^2): one Gram-Schmidt pass in the M inner
+// product, O(n k^2), makes the basis orthonormal to round-off.
+void orthonormalise(const MassProduct& mass, MatrixXd& vectors) {
+  // Modified Gram-Schmidt, each projection against M x_j (formed once per column).
+  MatrixXd mx(vectors.rows(), vectors.cols());
+  for (int k = 2; k < vectors.cols(); ++k) {
+    for (int j = 2; j < k; ++j) vectors.col(k) -= mx.col(j).dot(vectors.col(k)) * vectors.col(j);
+    mx.col(k) = mass * vectors.col(k);
+    const double norm = std::sqrt(vectors.col(k).dot(mx.col(k)));
+    vectors.col(k) /= norm;
+    mx.col(k) /= norm;
+  }
 }
 
+// The request's `count` eigenpairs (rigid ones included), bracketed by `counts`.
 template <class Counts>
-bool solve_lowest(const Counts& counts, const BeamSystem& s, const Eigen::SparseMatrix<double>& mass,
+bool solve_lowest(const Counts& counts, int count, const BeamSystem& s, const Eigen::SparseMatrix<double>& mass,
                   BandedRequest request, VectorXd& omega_squared, MatrixXd& vectors, int* counted) {
   const int dofs = static_cast<int>(s.mass.rows());
-  // The two rigid modes always (they lie at 0 however low the frequency asked).
-  const int count = std::max(2, request.count >= 0 ? request.count : counts.count(request.upper));
   if (counted) *counted = count;
   if (count > dofs * max_banded_share || count > request.most) return false;
   std::vector<Bracket> brackets;
@@ -457,21 +461,46 @@ bool solve_lowest(const Counts& counts, const BeamSystem& s, const Eigen::Sparse
   const VectorXd start = start_vector(dofs);
   for (int k = 2; k < count; ++k)
     vectors.col(k) = eigenvector(pencil, m, start, brackets[k - 2], k, omega_squared, vectors);
-  return orthonormalise(m, vectors);
+  orthonormalise(m, vectors);
+  return true;
 }
+
+// How many eigenpairs a request covers: the two rigid ones always (they lie at 0 however low the
+// frequency asked).
+template <class Counts>
+int request_count(const Counts& counts, BandedRequest request) {
+  return std::max(2, request.count >= 0 ? request.count : counts.count(request.upper));
+}
+
+// Whether Timoshenko's counts on the pencil itself cost less than the tridiagonal reduction and its
+// counts. Each count on the pencil costs about three times one on the tridiagonal form, and
+// bracketing k eigenvalues takes about 3k passes, while the reduction costs O(n^2): the pencil
+// pays for few modes over many degrees of freedom. Measured on R161 (bench_partial_modes.cpp's
+// solves, each of the two in turns): 18 modes at N = 168 / 336 / 672 take 1.45 / 2.2 / 5.4 ms
+// on the pencil against 1.55 / 3.1 / 11 ms, 40 modes at N = 672 9.5 against 13 ms, 100 modes
+// at N = 336 and 672 as long either way; at N = 84 the two cost the same for 18 modes (and its
+// results stay those of the tridiagonal path, bit for bit).
+bool pencil_counts_pay(int dofs, int count) { return dofs >= 300 && dofs >= 8 * (count - 2); }
 
 }  // namespace
 
 bool solve_lowest(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass, BandedRequest request,
                   VectorXd& omega_squared, MatrixXd& vectors, int* counted) {
-  if (request.diagonal_mass) return solve_lowest(PencilCounts(s), s, mass, request, omega_squared, vectors, counted);
-  const Tridiagonal t = tridiagonal(s);
-  return solve_lowest(TridiagonalCounts(t), s, mass, request, omega_squared, vectors, counted);
+  const int dofs = static_cast<int>(s.mass.rows());
+  if (request.diagonal_mass) {
+    const PencilCounts counts(s);
+    const int count = request_count(counts, request);
+    if (pencil_counts_pay(dofs, count))
+      return solve_lowest(counts, count, s, mass, request, omega_squared, vectors, counted);
+  }
+  const Tridiagonal t = tridiagonal(s, request.diagonal_mass);
+  const TridiagonalCounts counts(t);
+  return solve_lowest(counts, request_count(counts, request), s, mass, request, omega_squared, vectors, counted);
 }
 
 int count_below(const BeamSystem& s, bool diagonal_mass, double x) {
   if (diagonal_mass) return PencilCounts(s).count(x);
-  const Tridiagonal t = tridiagonal(s);
+  const Tridiagonal t = tridiagonal(s, false);
   return TridiagonalCounts(t).count(x);
 }
 
