@@ -122,8 +122,8 @@ class TridiagonalCounts {
 // tridiagonal, and its pivots are the 2 x 2 Schur complements S_i = A_i - B_i^T S_(i-1)^(-1) B_i.
 // A count costs O(n) and needs no reduction to tridiagonal form, whose O(n^2 kd) rotations dominate
 // a solve of a few modes at large n. The factorisation is made without pivoting, as the Sturm
-// sequence checks of structural eigen-solvers are (Bathe, "Finite Element Procedures", 1996,
-// sec. 8.2.5); a singular pivot's determinant is made slightly positive.
+// sequence checks of structural eigen-solvers are (K. J. Bathe, "Finite Element Procedures",
+// 1996); a singular pivot's determinant is made slightly positive.
 class PencilCounts {
  public:
   explicit PencilCounts(const BeamSystem& s) : slices_(static_cast<int>(s.mass.rows()) / 2), blocks_(slices_) {
@@ -475,11 +475,11 @@ int request_count(const Counts& counts, BandedRequest request) {
 // Whether Timoshenko's counts on the pencil itself cost less than the tridiagonal reduction and its
 // counts. Each count on the pencil costs about three times one on the tridiagonal form, and
 // bracketing k eigenvalues takes about 3k passes, while the reduction costs O(n^2): the pencil
-// pays for few modes over many degrees of freedom. Measured on R161 (bench_partial_modes.cpp's
-// solves, each of the two in turns): 18 modes at N = 168 / 336 / 672 take 1.45 / 2.2 / 5.4 ms
-// on the pencil against 1.55 / 3.1 / 11 ms, 40 modes at N = 672 9.5 against 13 ms, 100 modes
-// at N = 336 and 672 as long either way; at N = 84 the two cost the same for 18 modes (and its
-// results stay those of the tridiagonal path, bit for bit).
+// pays for few modes over many degrees of freedom. bench_partial_modes against the reduction alone
+// (c5b5f9c), in turns: 18 modes at N = 336 in 1.9 against 2.8-2.9 ms, at 1024 slices 6 against
+// 20; 29 and 40 modes at N = 336 2.9 and 3.9 against 3.5 and 4.1-4.6; for auto's 94 modes there
+// the reduction is as fast or faster. At N = 84 the two cost the same for 18 modes, and there the
+// results stay those of the reduction, bit for bit (both studies' datasets).
 bool pencil_counts_pay(int dofs, int count) { return dofs >= 300 && dofs >= 8 * (count - 2); }
 
 }  // namespace

@@ -3,11 +3,11 @@
 // "Numerics"): Sturm counts bracket each eigenvalue wanted, and only those, within 1e-8 of its
 // distance to the others; each eigenpair then comes from inverse iteration at that shift on the
 // banded K - w^2 M itself (a band LU, O(n) per step), its eigenvalue the Rayleigh quotient. The
-// counts come from the block LDL^T factorisation of Timoshenko's K - x M (its M is diagonal, and K
-// couples only neighbouring slices), O(n) each; for Euler-Bernoulli's consistent M, from the
-// tridiagonal form LAPACK reduces the pencil to without forming the transformation (dsbtrd, as
-// dsbgvx does), O(n^2) once. Both theories' matrices couple degrees of freedom at most
-// beam_bandwidth apart (beam_system.hpp).
+// counts run on the tridiagonal form LAPACK reduces the pencil to without forming the
+// transformation (dsbtrd, as dsbgvx does, O(n^2) once), or, for Timoshenko requests of a few
+// modes over many degrees of freedom, on the block LDL^T factorisation of K - x M itself (its M
+// is diagonal, and K couples only neighbouring slices), O(n) each. Both theories' matrices couple
+// degrees of freedom at most beam_bandwidth apart (beam_system.hpp).
 #include <limits>
 
 #include <Eigen/Dense>
@@ -46,8 +46,8 @@ inline constexpr double max_banded_share = 0.75;
 bool solve_lowest(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass, BandedRequest request,
                   Eigen::VectorXd& omega_squared, Eigen::MatrixXd& vectors, int* counted = nullptr);
 
-// How many eigenvalues of the pencil lie below x, by the Sturm count the solve uses (rigid ones
-// included).
+// How many eigenvalues of the pencil lie below x (rigid ones included), by the Sturm count on
+// K - x M (Timoshenko) or on the tridiagonal form (Euler-Bernoulli).
 int count_below(const BeamSystem& s, bool diagonal_mass, double x);
 
 }  // namespace sweetspot
