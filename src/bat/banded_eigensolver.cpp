@@ -480,14 +480,15 @@ int request_count(const Counts& counts, BandedRequest request) {
 // 20; 29 and 40 modes at N = 336 2.9 and 3.9 against 3.5 and 4.1-4.6; for auto's 94 modes there
 // the reduction is as fast or faster. At N = 84 the two cost the same for 18 modes, and there the
 // results stay those of the reduction, bit for bit (both studies' datasets).
-bool pencil_counts_pay(int dofs, int count) { return dofs >= 300 && dofs >= 8 * (count - 2); }
+constexpr int pencil_counts_from = 300;  // degrees of freedom
+bool pencil_counts_pay(int dofs, int count) { return dofs >= pencil_counts_from && dofs >= 8 * (count - 2); }
 
 }  // namespace
 
 bool solve_lowest(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass, BandedRequest request,
                   VectorXd& omega_squared, MatrixXd& vectors, int* counted) {
   const int dofs = static_cast<int>(s.mass.rows());
-  if (request.diagonal_mass) {
+  if (request.diagonal_mass && dofs >= pencil_counts_from) {
     const PencilCounts counts(s);
     const int count = request_count(counts, request);
     if (pencil_counts_pay(dofs, count))
