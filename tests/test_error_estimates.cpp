@@ -363,4 +363,18 @@ TEST_CASE("A finer slicing takes the step the first one checked, as is", "[error
     scene.checked_step = bad;
     CHECK_THROWS_WITH(simulate_impact(basis, scene), Catch::Contains("checked_step"));
   }
+  // Given the very step a run chose and checked, the run is made again as it was, bit for bit,
+  // with the accuracy's other settings: also for a nearly dead ball, whose step is checked, not
+  // modelled, under a bound on the contact phase that the accuracy tightens.
+  for (const double e0 : {0.5, 0.25}) {
+    INFO("e0 = " << e0);
+    scene.ball.e0 = e0;
+    scene.checked_step = 0;
+    const ImpactResult first = simulate_impact(basis, scene);
+    REQUIRE(first.status == CollisionStatus::ok);
+    scene.checked_step = first.step_used;
+    const ImpactResult again = simulate_impact(basis, scene);
+    CHECK(again.vf == first.vf);
+    CHECK(again.contact_time == first.contact_time);
+  }
 }

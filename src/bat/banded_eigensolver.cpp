@@ -479,7 +479,7 @@ int request_count(const Counts& counts, BandedRequest request) {
 // (c5b5f9c), in turns: 18 modes at N = 336 in 1.9 against 2.8-2.9 ms, at 1024 slices 6 against
 // 20; 29 and 40 modes at N = 336 2.9 and 3.9 against 3.5 and 4.1-4.6; for auto's 94 modes there
 // the reduction is as fast or faster. At N = 84 the two cost the same for 18 modes, and there the
-// results stay those of the reduction, bit for bit (both studies' datasets).
+// results stay those of the reduction, bit for bit (both studies' datasets at their defaults).
 constexpr int pencil_counts_from = 300;  // degrees of freedom
 bool pencil_counts_pay(int dofs, int count) { return dofs >= pencil_counts_from && dofs >= 8 * (count - 2); }
 

@@ -174,11 +174,11 @@ namespace {
 Collision collide_scene(const ImpactScene& scene, const SceneGeometry& g, CaughtAgain caught_again) {
   CollisionOptions options = scene.integrator;
   const bool checked = scene.step_accuracy > 0 && scene.checked_step > 0 && options.method == Method::exact;
-  if (checked)
-    options.dt = scene.checked_step;
-  else if (scene.step_accuracy > 0)
+  // The accuracy's other settings (the contact phase's bound) hold for a checked step too.
+  if (scene.step_accuracy > 0)
     options = options_for_accuracy(options, scene.step_accuracy, scene.ball, scene.ball_speed + g.bat_speed, g.recoil,
                                    g.contact.count() ? g.contact.omega.maxCoeff() : 0.0);
+  if (checked) options.dt = scene.checked_step;
   // Van Zandt and the force analyses drive the modes with the force profile.
   options.record_force |= scene.van_zandt_comparison || scene.histories || scene.force_response || scene.mode_response;
   options.find_collision_time |= scene.force_response;  // its omega grid is in units of 1/tau

@@ -28,9 +28,9 @@ double contact_phase_for(double allowed) { return std::clamp(0.25 * std::pow(all
 // 38 (T/40, auto), irregularly (the events fall differently at each step); taken as 75. At 150
 // m/s it reaches 210, which the closing-speed check (below) covers. At e0 = 0.35 it reaches 650
 // at 40 m/s: below 0.4 the step is checked instead.
-constexpr double softball_e0 = 0.4;
+constexpr double softball_e0 = 0.4, baseball_e0 = 0.5;
 double modelled_step_fraction(const Ball& ball, double accuracy) {
-  if (ball.e0 < 0.5) return std::pow(accuracy / 75, 1 / 3.8);
+  if (ball.e0 < baseball_e0) return std::pow(accuracy / 75, 1 / 3.8);
   if (ball.e0 < 0.8) {
     const double coarse = std::pow(accuracy / 10, 1 / 3.8);
     return coarse >= 1.0 / 40 ? coarse : std::min(1.0 / 40, std::pow(accuracy / 3, 1 / 3.8));
