@@ -88,22 +88,30 @@ std::string format(const char* pattern, double x, double y) {
 }
 
 // Free rotations of every mode over 1 us, 2 us, 4 us, ... 8 ms: the free-flight search jumps
-// by these. The same for every impact that keeps the same modes, so each thread keeps them.
-// a -> c a + sn v, a' -> cv a' - w2sn a; cv = c but for damped modes (damped_mode.hpp).
+// by these. The same for every impact that keeps the same modes, so each thread keeps them, all
+// of a set's in one table (a set is new at nearly every impact with modes = auto: one allocation,
+// not one per power and coefficient). a -> c a + sn v, a' -> cv a' - w2sn a; cv = c but for damped
+// modes (damped_mode.hpp).
 struct FreeRotations {
   static constexpr double base_step = 1e-6;
+  static constexpr int powers = 14;  // 1 us, 2 us, ... 8.192 ms
+  static constexpr int columns = 4;  // c, sn, w2sn, cv
   struct Power {
     double step;
-    Eigen::ArrayXd c, sn, w2sn, cv;
+    Eigen::Map<const Eigen::ArrayXd> c, sn, w2sn, cv;
   };
   Eigen::ArrayXd omega, damping;
-  std::vector<Power> powers;
+  Eigen::ArrayXXd table;  // column columns k + j: power k's coefficient j, one row per mode
 
+  static double step(int k) { return base_step * std::exp2(k); }
   // The longest rotation not longer than `jump` (the shortest when none is).
-  const Power& largest_within(double jump) const {
-    std::size_t k = 0;
-    while (k + 1 < powers.size() && powers[k + 1].step <= jump) ++k;
-    return powers[k];
+  Power largest_within(double jump) const {
+    int k = 0;
+    while (k + 1 < powers && step(k + 1) <= jump) ++k;
+    const auto column = [&](int j) {
+      return Eigen::Map<const Eigen::ArrayXd>(table.col(columns * k + j).data(), table.rows());
+    };
+    return {step(k), column(0), column(1), column(2), column(3)};
   }
 };
 
@@ -111,14 +119,13 @@ struct FreeRotations {
 // damping: `auto` keeps a different set of a bat's modes at nearly every impact, so a set's
 // rotations are mostly new while each mode's are not (a sine and cosine per power and mode).
 struct ModeRotations {
-  static constexpr int powers = 14;  // 1 us, 2 us, ... 8.192 ms
-  double c[powers], sn[powers], w2sn[powers], cv[powers];
+  double c[FreeRotations::powers], sn[FreeRotations::powers], w2sn[FreeRotations::powers], cv[FreeRotations::powers];
 };
 
 ModeRotations rotations_of(double w, double zeta) {
   ModeRotations m;
-  double step = FreeRotations::base_step;
-  for (int k = 0; k < ModeRotations::powers; ++k, step *= 2) {
+  for (int k = 0; k < FreeRotations::powers; ++k) {
+    const double step = FreeRotations::step(k);
     if (zeta != 0) {  // damped_mode.hpp
       const detail::FreeEvolution e = detail::damped_free_evolution(w, zeta, step);
       m.c[k] = e.aa, m.sn[k] = e.av, m.w2sn[k] = -e.va, m.cv[k] = e.vv;
@@ -162,20 +169,15 @@ const FreeRotations& free_rotations(const ModalContact& body) {
   FreeRotations r;
   r.omega = omega.array();
   r.damping = damping;
-  r.powers.resize(ModeRotations::powers);
-  for (int k = 0; k < ModeRotations::powers; ++k) {
-    FreeRotations::Power& p = r.powers[k];
-    p.step = FreeRotations::base_step * std::exp2(k);
-    p.c.resize(n), p.sn.resize(n), p.w2sn.resize(n), p.cv.resize(n);
-  }
+  r.table.resize(n, FreeRotations::columns * FreeRotations::powers);
   for (int i = 0; i < n; ++i) {
     const ModeRotations& m = mode_rotations(omega(i), body.damping(i));
-    for (int k = 0; k < ModeRotations::powers; ++k) {
-      FreeRotations::Power& p = r.powers[k];
-      p.c(i) = m.c[k], p.sn(i) = m.sn[k], p.w2sn(i) = m.w2sn[k], p.cv(i) = m.cv[k];
+    for (int k = 0; k < FreeRotations::powers; ++k) {
+      double* power = r.table.col(FreeRotations::columns * k).data();  // its columns follow, n apart
+      power[i] = m.c[k], power[n + i] = m.sn[k], power[2 * n + i] = m.w2sn[k], power[3 * n + i] = m.cv[k];
     }
   }
-  stored += 4 * r.powers.size() * omega.size();
+  stored += r.table.size();
   return cache.emplace(key, std::move(r))->second;
 }
 
@@ -367,7 +369,7 @@ class CollisionRun {
       }
       previous = tau, u_previous = u;
       const double clear = std::max(-u / slope, time_to_reach(u, (psi * v).sum() - y_(1), acceleration_bound));
-      const FreeRotations::Power& r = rotations.largest_within(std::max(clear, FreeRotations::base_step));
+      const FreeRotations::Power r = rotations.largest_within(std::max(clear, FreeRotations::base_step));
       next_a = r.c * a + r.sn * v;
       v = r.cv * v - r.w2sn * a;
       a.swap(next_a);

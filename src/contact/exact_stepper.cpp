@@ -149,8 +149,8 @@ Basis interpolant_basis(double past_ratio, double h) {
 }
 
 // One mode's closed-form response over a step: c, sn, w2sn, cv, then d and q for each datum.
-constexpr int free_count = 4;
-using ModeCoefficients = std::array<double, free_count + 2 * data_count>;
+constexpr int free_count = ModeResponse::free_columns;
+using ModeCoefficients = std::array<double, ModeResponse::columns>;
 
 void add_forced(const Basis& b, const double p[powers], const double q[powers], ModeCoefficients& m) {
   for (int j = 0; j < data_count; ++j)
@@ -201,32 +201,35 @@ DampedQuadrature damped_quadrature(int mode, double w, double zeta, double h, co
   return d;
 }
 
-// A damped mode's step response and dissipation quadrature, remembered by (omega, zeta, h, past
-// ratio) for the step lengths that recur: a damped bat (Material::loss_factor) damps every
-// vibrational mode, whose closed forms (an exponential, a sine and a cosine at the end and at 8
-// Gauss nodes) would otherwise be computed anew for every kept set of modes a run meets.
-struct DampedCoefficients {
-  ModeCoefficients end;
-  DampedQuadrature quadrature;  // its `mode` set by the caller; empty when not asked
+// A damped mode's step response, remembered by (omega, zeta, h, past ratio) for the step lengths
+// that recur: a damped bat (Material::loss_factor) damps every vibrational mode, whose closed
+// forms (an exponential, a sine and a cosine, a series) would otherwise be computed anew for every
+// kept set of modes a run meets. Its dissipation quadrature (8 more times) is kept apart, and only
+// where a run asks for it: most runs do not, and a small entry is cheaper to keep.
+struct DampedKey {
+  double w, zeta, h, past_ratio;
+  bool operator==(const DampedKey&) const = default;
+};
+struct DampedKeyHash {
+  std::size_t operator()(const DampedKey& k) const { return bits_hash(k.w, k.zeta, k.h, k.past_ratio); }
 };
 
-DampedCoefficients damped_coefficients(double w, double zeta, double h, const Basis& b, bool quadrature) {
-  return {damped_mode_coefficients(w, zeta, h, b), quadrature ? damped_quadrature(0, w, zeta, h, b) : DampedQuadrature{}};
+const ModeCoefficients& remembered_damped_response(const DampedKey& key, const Basis& b) {
+  thread_local ThreadMemory<DampedKey, ModeCoefficients, DampedKeyHash> memory(100000);  // about 20 MB per thread
+  return memory.get(key, [&] { return damped_mode_coefficients(key.w, key.zeta, key.h, b); });
 }
 
-const DampedCoefficients& memoized_damped_coefficients(double w, double zeta, double h, double past_ratio,
-                                                       const Basis& b, bool quadrature) {
-  struct Key {
-    double w, zeta, h, past_ratio;
-    bool quadrature;
-    bool operator==(const Key&) const = default;
-  };
-  struct Hash {
-    std::size_t operator()(const Key& k) const { return bits_hash(k.w, k.zeta, k.h, k.past_ratio) * 2 + k.quadrature; }
-  };
-  thread_local ThreadMemory<Key, DampedCoefficients, Hash> memory(20000);  // about 20 MB per thread
-  return memory.get(Key{w, zeta, h, past_ratio, quadrature},
-                    [&] { return damped_coefficients(w, zeta, h, b, quadrature); });
+const DampedQuadrature& remembered_damped_quadrature(const DampedKey& key, const Basis& b) {
+  thread_local ThreadMemory<DampedKey, DampedQuadrature, DampedKeyHash> memory(20000);  // about 14 MB per thread
+  return memory.get(key, [&] { return damped_quadrature(0, key.w, key.zeta, key.h, b); });
+}
+
+// Where the kernels write a response: the columns of a table laid out as ModeResponse's.
+ResponseColumns response_columns(Eigen::ArrayXXd& table) {
+  const auto at = [&table](int j) { return table.col(j).data(); };
+  ResponseColumns r{at(0), at(1), at(2), at(3), {}, {}};
+  for (int j = 0; j < data_count; ++j) r.d[j] = at(free_count + j), r.q[j] = at(free_count + data_count + j);
+  return r;
 }
 
 // Each undamped mode's response to a step whose length recurs, remembered by (omega, h, past
@@ -234,7 +237,7 @@ const DampedCoefficients& memoized_damped_coefficients(double w, double zeta, do
 // so a set's responses are mostly new while each mode's are not. The modes not met before are
 // computed together (the kernel's result for a mode does not depend on the others: the same bits).
 void remembered_undamped_responses(const Eigen::ArrayXd& omega, double h, double past_ratio, const double* basis,
-                                   const ResponseColumns& out) {
+                                   Eigen::ArrayXXd& table) {
   struct Key {
     double w, h, past_ratio;
     bool operator==(const Key&) const = default;
@@ -243,30 +246,25 @@ void remembered_undamped_responses(const Eigen::ArrayXd& omega, double h, double
     std::size_t operator()(const Key& k) const { return bits_hash(k.w, k.h, k.past_ratio); }
   };
   thread_local ThreadMemory<Key, ModeCoefficients, Hash> memory(100000);  // about 20 MB per thread
-  const auto column = [](int m, const ResponseColumns& r) -> double* {
-    if (m < free_count) return std::array{r.c, r.sn, r.w2sn, r.cv}[m];
-    return m < free_count + data_count ? r.d[m - free_count] : r.q[m - free_count - data_count];
-  };
-  std::vector<int> missing;
+  thread_local std::vector<int> missing;
+  missing.clear();
   for (int i = 0; i < omega.size(); ++i) {
     if (const ModeCoefficients* kept = memory.find(Key{omega(i), h, past_ratio})) {
-      for (int m = 0; m < free_count + 2 * data_count; ++m) column(m, out)[i] = (*kept)[m];
+      for (int m = 0; m < ModeResponse::columns; ++m) table(i, m) = (*kept)[m];
     } else {
       missing.push_back(i);
     }
   }
   if (missing.empty()) return;
   const int count = static_cast<int>(missing.size());
-  Eigen::ArrayXd w(count);
-  Eigen::ArrayXXd made(count, free_count + 2 * data_count);
+  thread_local Eigen::ArrayXd w;
+  thread_local Eigen::ArrayXXd made;
+  w.resize(count), made.resize(count, ModeResponse::columns);
   for (int k = 0; k < count; ++k) w(k) = omega(missing[k]);
-  ResponseColumns into{made.col(0).data(), made.col(1).data(), made.col(2).data(), made.col(3).data(), {}, {}};
-  for (int j = 0; j < data_count; ++j)
-    into.d[j] = made.col(free_count + j).data(), into.q[j] = made.col(free_count + data_count + j).data();
-  undamped_responses(w.data(), count, h, basis, into);
+  undamped_responses(w.data(), count, h, basis, response_columns(made));
   for (int k = 0; k < count; ++k) {
     ModeCoefficients& kept = memory.keep(Key{w(k), h, past_ratio});
-    for (int m = 0; m < free_count + 2 * data_count; ++m) kept[m] = column(m, out)[missing[k]] = made(k, m);
+    for (int m = 0; m < ModeResponse::columns; ++m) kept[m] = table(missing[k], m) = made(k, m);
   }
 }
 
@@ -282,29 +280,24 @@ void ModeResponse::fill(const Eigen::ArrayXd& w, const Eigen::ArrayXd& zeta, dou
   h = step, past_ratio = past, omega = w, damping = zeta, quadrature = with_quadrature, this->ball_mass = ball_mass;
   damped.clear();
   const int n = static_cast<int>(omega.size());
-  c.resize(n), sn.resize(n), w2sn.resize(n), cv.resize(n), d.resize(n, data_count), q.resize(n, data_count);
+  table.resize(n, columns);
   const Basis b = interpolant_basis(past_ratio, h);
   const auto set_mode = [&](int i, const ModeCoefficients& m) {
-    c(i) = m[0], sn(i) = m[1], w2sn(i) = m[2], cv(i) = m[3];
-    for (int j = 0; j < data_count; ++j) d(i, j) = m[free_count + j], q(i, j) = m[free_count + data_count + j];
+    for (int j = 0; j < columns; ++j) table(i, j) = m[j];
   };
   // Every mode as if undamped, all at once; the damped ones are then made over.
   double basis[data_count * powers];  // row-major
   for (int j = 0; j < data_count; ++j)
     for (int k = 0; k < powers; ++k) basis[j * powers + k] = b(j, k);
-  ResponseColumns columns{c.data(), sn.data(), w2sn.data(), cv.data(), {}, {}};
-  for (int j = 0; j < data_count; ++j) columns.d[j] = d.col(j).data(), columns.q[j] = q.col(j).data();
-  if (remember) remembered_undamped_responses(omega, h, past_ratio, basis, columns);
-  else undamped_responses(omega.data(), n, h, basis, columns);
+  if (remember) remembered_undamped_responses(omega, h, past_ratio, basis, table);
+  else undamped_responses(omega.data(), n, h, basis, response_columns(table));
   for (int i = 0; damping.size() && i < n; ++i) {
-    if (damping(i) != 0) {
-      const DampedCoefficients computed =
-          remember ? DampedCoefficients{} : damped_coefficients(omega(i), damping(i), h, b, quadrature);
-      const DampedCoefficients& m =
-          remember ? memoized_damped_coefficients(omega(i), damping(i), h, past_ratio, b, quadrature) : computed;
-      set_mode(i, m.end);
-      if (quadrature) damped.push_back(m.quadrature), damped.back().mode = i;
-    }
+    if (damping(i) == 0) continue;
+    const DampedKey key{omega(i), damping(i), h, past_ratio};
+    set_mode(i, remember ? remembered_damped_response(key, b) : damped_mode_coefficients(key.w, key.zeta, h, b));
+    if (!quadrature) continue;
+    damped.push_back(remember ? remembered_damped_quadrature(key, b) : damped_quadrature(i, key.w, key.zeta, h, b));
+    damped.back().mode = i;
   }
   const ModeCoefficients ball = mode_coefficients(0, h, b);
   for (int j = 0; j < data_count; ++j) {
@@ -317,8 +310,8 @@ StepCoefficients::StepCoefficients(std::shared_ptr<const ModeResponse> r, const 
                                    double compliance)
     : response(std::move(r)), psi2_sum(psi2.sum()) {
   const ModeResponse& m = *response;
-  mode_dC = (psi2 * m.d.col(end_force)).sum(), mode_dD = (psi2 * m.d.col(end_rate)).sum();
-  mode_qC = (psi2 * m.q.col(end_force)).sum(), mode_qD = (psi2 * m.q.col(end_rate)).sum();
+  mode_dC = (psi2 * m.d(end_force)).sum(), mode_dD = (psi2 * m.d(end_rate)).sum();
+  mode_qC = (psi2 * m.q(end_force)).sum(), mode_qD = (psi2 * m.q(end_rate)).sum();
   gC = mode_dC + m.ball_d[end_force] + compliance;
   gD = mode_dD + m.ball_d[end_rate];
   hC = mode_qC + m.ball_q[end_force];
@@ -349,7 +342,7 @@ std::shared_ptr<const ModeResponse> cached_response(const Eigen::ArrayXd& omega,
   }
   thread_local std::size_t stored = 0;  // doubles held: at most about 32 MB per thread
   if (stored > 4'000'000) cache.clear(), stored = 0;
-  stored += (free_count + 2 * data_count) * omega.size();
+  stored += ModeResponse::columns * omega.size();
   auto response = std::make_shared<const ModeResponse>(omega, damping, h, ball_mass, past_ratio, quadrature, true);
   cache.emplace(key, std::make_pair(ball_mass, response));
   return response;
@@ -541,8 +534,8 @@ void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, 
   const int n = state_.modes();
   out.resize(y.size());
   double *out_a = out.data() + 2, *out_v = out_a + n;
-  const auto d = [&m](Datum j) { return m.d.col(j).data(); };
-  const auto q = [&m](Datum j) { return m.q.col(j).data(); };
+  const auto d = [&m](Datum j) { return m.d(j).data(); };
+  const auto q = [&m](Datum j) { return m.q(j).data(); };
 
   // The start: the ball's compression, its rate and acceleration, the force and its rate.
   const double u0 = state_.ball_compression(state_.compression(y), law), du0_geometric = state_.compression_rate(y);
@@ -551,7 +544,7 @@ void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, 
   const bool quintic = m.past_ratio > 0;
   const double fp = quintic ? past_.force : 0.0, rp = quintic ? past_.rate : 0.0;
 
-  const StepArrays arrays{y.data() + 2, y.data() + 2 + n, m.c.data(), m.sn.data(), m.w2sn.data(), m.cv.data(),
+  const StepArrays arrays{y.data() + 2, y.data() + 2 + n, m.c().data(), m.sn().data(), m.w2sn().data(), m.cv().data(),
                           psi_.data(), psi_w2_.data(), {d(past_force), d(past_rate), d(start_force), d(start_rate)},
                           {q(past_force), q(past_rate), q(start_force), q(start_rate)}, out_a, out_v};
   const auto [psi_a, psi_v, psi_w2a] = step_known(n, arrays, {fp, rp, f0, r0});

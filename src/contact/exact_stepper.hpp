@@ -39,12 +39,16 @@ struct DampedQuadrature {
 // zero for the past data of the cubic). Depends on the frequencies, damping ratios (empty: none),
 // h and the past ratio only. Damped modes (damped_mode.hpp) also carry their quadrature.
 struct ModeResponse {
+  using Column = Eigen::Map<const Eigen::ArrayXd>;
+  static constexpr int free_columns = 4;                            // c, sn, w2sn, cv
+  static constexpr int columns = free_columns + 2 * data_count;  // then d and q of each datum
   double h = 0;
   double past_ratio = 0;
   double ball_mass = 0;  // kg
   Eigen::ArrayXd omega, damping;
-  Eigen::ArrayXd c, sn, w2sn, cv;
-  Eigen::ArrayXXd d, q;
+  // One row per mode, the columns in the order above: one allocation for all of a response (a
+  // study's impacts with modes = auto meet a new set of modes at nearly every impact).
+  Eigen::ArrayXXd table;
   double ball_d[data_count] = {}, ball_q[data_count] = {};  // the ball (omega = 0, times 1/m)
   std::vector<DampedQuadrature> damped;  // empty without `quadrature`
   bool quadrature = true;
@@ -60,6 +64,14 @@ struct ModeResponse {
   // Computes the response anew in place: the arrays keep their memory when the size is the same.
   void fill(const Eigen::ArrayXd& omega, const Eigen::ArrayXd& damping, double h, double ball_mass, double past_ratio,
             bool quadrature, bool remember);
+
+  Column column(int j) const { return Column(table.col(j).data(), table.rows()); }
+  Column c() const { return column(0); }
+  Column sn() const { return column(1); }
+  Column w2sn() const { return column(2); }
+  Column cv() const { return column(3); }
+  Column d(Datum j) const { return column(free_columns + j); }
+  Column q(Datum j) const { return column(free_columns + data_count + j); }
 };
 
 // A response with the sums over the contact point's mode shapes that tie the ball's compression

@@ -71,12 +71,14 @@ Histories impact_histories(const ModalBasis& basis, const SceneGeometry& g, cons
     }
     // Advance one interval in closed form under the cubic force through (F, F') at its ends.
     const ForceSample f1 = force_at(force, t + request.step);
-    const auto forcing = [&](const Eigen::ArrayXXd& r) {
-      return f0.force * r.col(detail::start_force) + f0.rate * r.col(detail::start_rate) +
-             f1.force * r.col(detail::end_force) + f1.rate * r.col(detail::end_rate);
+    const auto forcing = [&](auto r) {  // r: the response's d or q column of a datum
+      return f0.force * r(detail::start_force) + f0.rate * r(detail::start_rate) + f1.force * r(detail::end_force) +
+             f1.rate * r(detail::end_rate);
     };
-    const Eigen::ArrayXd a_next = response.c * a + response.sn * v - psi * forcing(response.d);
-    v = response.cv * v - response.w2sn * a - psi * forcing(response.q);
+    const auto d = [&](detail::Datum j) { return response.d(j); };
+    const auto q = [&](detail::Datum j) { return response.q(j); };
+    const Eigen::ArrayXd a_next = response.c() * a + response.sn() * v - psi * forcing(d);
+    v = response.cv() * v - response.w2sn() * a - psi * forcing(q);
     a = a_next;
     const auto ball = [&](const double* r) {
       return f0.force * r[detail::start_force] + f0.rate * r[detail::start_rate] + f1.force * r[detail::end_force] +
