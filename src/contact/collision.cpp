@@ -147,7 +147,7 @@ const ModeRotations& mode_rotations(double w, double zeta) {
   struct Hash {
     std::size_t operator()(const Key& k) const { return detail::bits_hash(k.w, k.zeta); }
   };
-  thread_local detail::ThreadMemory<Key, ModeRotations, Hash> memory(50000);  // about 23 MB per thread
+  thread_local detail::ThreadMemory<Key, ModeRotations, Hash> memory(5000);  // about 2.5 MB per thread
   return memory.get(Key{w, zeta}, [&] { return rotations_of(w, zeta); });
 }
 
@@ -164,7 +164,7 @@ const FreeRotations& free_rotations(const ModalContact& body) {
     if (it->second.omega.size() == omega.size() && (it->second.omega == omega.array()).all() &&
         it->second.damping.size() == damping.size() && (it->second.damping == damping).all())
       return it->second;
-  if (stored > 4'000'000) cache.clear(), stored = 0;  // doubles held: about 40 MB per thread at most
+  if (stored > 400'000) cache.clear(), stored = 0;  // doubles held: about 3 MB per thread at most
   const int n = body.count();
   FreeRotations r;
   r.omega = omega.array();

@@ -215,7 +215,7 @@ struct DampedKeyHash {
 };
 
 const ModeCoefficients& remembered_damped_response(const DampedKey& key, const Basis& b) {
-  thread_local ThreadMemory<DampedKey, ModeCoefficients, DampedKeyHash> memory(100000);  // about 20 MB per thread
+  thread_local ThreadMemory<DampedKey, ModeCoefficients, DampedKeyHash> memory(10000);  // about 2 MB per thread
   return memory.get(key, [&] { return damped_mode_coefficients(key.w, key.zeta, key.h, b); });
 }
 
@@ -245,7 +245,7 @@ void remembered_undamped_responses(const Eigen::ArrayXd& omega, double h, double
   struct Hash {
     std::size_t operator()(const Key& k) const { return bits_hash(k.w, k.h, k.past_ratio); }
   };
-  thread_local ThreadMemory<Key, ModeCoefficients, Hash> memory(100000);  // about 20 MB per thread
+  thread_local ThreadMemory<Key, ModeCoefficients, Hash> memory(10000);  // about 2 MB per thread
   thread_local std::vector<int> missing;
   missing.clear();
   for (int i = 0; i < omega.size(); ++i) {
@@ -340,8 +340,8 @@ std::shared_ptr<const ModeResponse> cached_response(const Eigen::ArrayXd& omega,
         response->quadrature == quadrature)
       return response;
   }
-  thread_local std::size_t stored = 0;  // doubles held: at most about 32 MB per thread
-  if (stored > 4'000'000) cache.clear(), stored = 0;
+  thread_local std::size_t stored = 0;  // doubles held: at most about 3 MB per thread
+  if (stored > 400'000) cache.clear(), stored = 0;
   stored += ModeResponse::columns * omega.size();
   auto response = std::make_shared<const ModeResponse>(omega, damping, h, ball_mass, past_ratio, quadrature, true);
   cache.emplace(key, std::make_pair(ball_mass, response));

@@ -3,6 +3,9 @@
 // mode's response to a step, its free rotations, an interpolant's basis): kept by key until the
 // memory holds more than its capacity, then forgotten at once (bounded, without eviction
 // bookkeeping). Each thread has its own, so results never depend on another thread's work.
+// Capacities are a few MB: what recurs is mostly one bat's (its ~100 modes at ~10 step lengths,
+// while a study's points on it run), and a memory that outgrows the core's caches costs a cache
+// miss at every lookup (the wood study ran 7 % slower with memories ten times larger).
 #include <bit>
 #include <cstddef>
 #include <cstdint>
