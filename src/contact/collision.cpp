@@ -147,7 +147,7 @@ const ModeRotations& mode_rotations(double w, double zeta) {
   struct Hash {
     std::size_t operator()(const Key& k) const { return detail::bits_hash(k.w, k.zeta); }
   };
-  thread_local detail::ThreadMemory<Key, ModeRotations, Hash> memory(5000);  // about 2.5 MB per thread
+  thread_local detail::ThreadMemory<Key, ModeRotations, Hash> memory(4096);  // about 4 MB per thread
   return memory.get(Key{w, zeta}, [&] { return rotations_of(w, zeta); });
 }
 

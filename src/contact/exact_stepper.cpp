@@ -215,12 +215,12 @@ struct DampedKeyHash {
 };
 
 const ModeCoefficients& remembered_damped_response(const DampedKey& key, const Basis& b) {
-  thread_local ThreadMemory<DampedKey, ModeCoefficients, DampedKeyHash> memory(10000);  // about 2 MB per thread
+  thread_local ThreadMemory<DampedKey, ModeCoefficients, DampedKeyHash> memory(8192);  // about 3 MB per thread
   return memory.get(key, [&] { return damped_mode_coefficients(key.w, key.zeta, key.h, b); });
 }
 
 const DampedQuadrature& remembered_damped_quadrature(const DampedKey& key, const Basis& b) {
-  thread_local ThreadMemory<DampedKey, DampedQuadrature, DampedKeyHash> memory(20000);  // about 14 MB per thread
+  thread_local ThreadMemory<DampedKey, DampedQuadrature, DampedKeyHash> memory(4096);  // about 5 MB per thread
   return memory.get(key, [&] { return damped_quadrature(0, key.w, key.zeta, key.h, b); });
 }
 
@@ -245,7 +245,7 @@ void remembered_undamped_responses(const Eigen::ArrayXd& omega, double h, double
   struct Hash {
     std::size_t operator()(const Key& k) const { return bits_hash(k.w, k.h, k.past_ratio); }
   };
-  thread_local ThreadMemory<Key, ModeCoefficients, Hash> memory(10000);  // about 2 MB per thread
+  thread_local ThreadMemory<Key, ModeCoefficients, Hash> memory(8192);  // about 3 MB per thread
   thread_local std::vector<int> missing;
   missing.clear();
   for (int i = 0; i < omega.size(); ++i) {

@@ -9,7 +9,7 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
-#include <unordered_map>
+#include <vector>
 
 namespace sweetspot::detail {
 
@@ -21,32 +21,67 @@ std::size_t bits_hash(Doubles... x) {
   return h;
 }
 
+// An open-addressing table, each value beside its key: a lookup is one probe into one array
+// (a node-based map's bucket, node and value are apart, a cache miss each, and every insert an
+// allocation). At most half full, so probes stay short; forgetting everything is one increment.
 template <class Key, class Value, class Hash>
 class ThreadMemory {
  public:
-  explicit ThreadMemory(std::size_t capacity) : capacity_(capacity) {}
+  explicit ThreadMemory(std::size_t capacity) : capacity_(capacity), mask_(std::bit_ceil(2 * capacity) - 1) {}
 
   // The value kept for `key`, made by make() the first time.
   template <class Make>
   const Value& get(const Key& key, Make make) {
-    if (map_.size() > capacity_) map_.clear();
-    const auto [it, inserted] = map_.try_emplace(key);
-    if (inserted) it->second = make();
-    return it->second;
+    Slot& s = place(key);
+    if (!holds(s)) {
+      s.value = make();
+      s.generation = generation_;
+    }
+    return s.value;
   }
   // The value kept for `key`, or none; and a place to keep one (made apart, several at once).
   const Value* find(const Key& key) const {
-    const auto it = map_.find(key);
-    return it == map_.end() ? nullptr : &it->second;
+    if (slots_.empty()) return nullptr;
+    for (std::size_t i = Hash()(key) & mask_;; i = (i + 1) & mask_) {
+      const Slot& s = slots_[i];
+      if (!holds(s)) return nullptr;
+      if (s.key == key) return &s.value;
+    }
   }
   Value& keep(const Key& key) {
-    if (map_.size() > capacity_) map_.clear();
-    return map_[key];
+    Slot& s = place(key);
+    s.generation = generation_;
+    return s.value;
   }
 
  private:
-  std::size_t capacity_;
-  std::unordered_map<Key, Value, Hash> map_;
+  struct Slot {
+    Key key{};
+    std::uint64_t generation = 0;  // the memory's generation when kept; older ones are forgotten
+    Value value{};
+  };
+  bool holds(const Slot& s) const { return s.generation == generation_; }
+  // The slot holding `key`, or the free one it goes in (its key set, counted as kept); a new key
+  // finding the memory full is the first of a new generation.
+  Slot& place(const Key& key) {
+    if (slots_.empty()) slots_.resize(mask_ + 1);
+    for (std::size_t i = Hash()(key) & mask_;; i = (i + 1) & mask_) {
+      Slot& s = slots_[i];
+      if (holds(s) && s.key == key) return s;
+      if (holds(s)) continue;
+      if (size_ >= capacity_) {
+        ++generation_, size_ = 0;
+        return place(key);
+      }
+      s.key = key;
+      ++size_;
+      return s;
+    }
+  }
+
+  std::size_t capacity_, mask_, size_ = 0;
+  std::uint64_t generation_ = 1;
+  std::vector<Slot> slots_;
 };
 
 }  // namespace sweetspot::detail
