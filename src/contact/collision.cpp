@@ -154,9 +154,7 @@ const ModeRotations& mode_rotations(double w, double zeta) {
 const FreeRotations& free_rotations(const ModalContact& body) {
   const VectorXd& omega = body.omega;
   const Eigen::ArrayXd damping = body.damped() ? Eigen::ArrayXd(body.damping_ratio.array()) : Eigen::ArrayXd();
-  std::size_t key = omega.size();
-  for (double w : omega) key = key * 1099511628211ull ^ std::hash<double>()(w);
-  for (double zeta : damping) key = key * 1099511628211ull ^ std::hash<double>()(zeta);
+  const std::size_t key = detail::hash_range(detail::hash_range(omega.size(), omega), damping);
   thread_local std::unordered_multimap<std::size_t, FreeRotations> cache;
   thread_local std::size_t stored = 0;
   const auto [first, last] = cache.equal_range(key);

@@ -328,8 +328,7 @@ namespace {
 std::shared_ptr<const ModeResponse> cached_response(const Eigen::ArrayXd& omega, const Eigen::ArrayXd& damping,
                                                     std::size_t omega_key, double h, double ball_mass,
                                                     double past_ratio, bool quadrature) {
-  const std::size_t key = omega_key ^ std::hash<double>()(h) ^ (std::hash<double>()(ball_mass) << 1) ^
-                          (std::hash<double>()(past_ratio) << 2);
+  const std::size_t key = omega_key * 31 + bits_hash(h, ball_mass, past_ratio);
   thread_local std::unordered_multimap<std::size_t, std::pair<double, std::shared_ptr<const ModeResponse>>> cache;
   const auto [first, last] = cache.equal_range(key);
   for (auto it = first; it != last; ++it) {
@@ -351,10 +350,7 @@ std::shared_ptr<const ModeResponse> cached_response(const Eigen::ArrayXd& omega,
 }  // namespace
 
 std::size_t ExactStepper::frequencies_key(const Eigen::ArrayXd& omega, const Eigen::ArrayXd& damping) {
-  std::size_t key = omega.size();
-  for (double w : omega) key = key * 1099511628211ull ^ std::hash<double>()(w);
-  for (double zeta : damping) key = key * 1099511628211ull ^ std::hash<double>()(zeta);
-  return key;
+  return hash_range(hash_range(omega.size(), omega), damping);
 }
 
 ExactStepper::ExactStepper(const ContactState& state, const CollisionOptions& options)
@@ -391,7 +387,7 @@ StepCoefficients ExactStepper::event_coefficients(double h) {
   thread_local std::array<Slot, slots> table;
   const Eigen::ArrayXd& omega = state_.body().omega.array();
   const double mass = state_.ball_mass();
-  const std::size_t key = omega_key_ ^ std::hash<double>()(h) ^ (std::hash<double>()(mass) << 1);
+  const std::size_t key = omega_key_ * 31 + bits_hash(h, mass);
   Slot& slot = table[key % slots];
   ModeResponse& r = *slot.response;
   const bool same = slot.filled && slot.key == key && r.h == h && r.ball_mass == mass &&

@@ -21,6 +21,13 @@ std::size_t bits_hash(Doubles... x) {
   return h;
 }
 
+// The hash of h followed by a range of doubles (a set of modes' frequencies, their damping).
+template <class Range>
+std::size_t hash_range(std::size_t h, const Range& values) {
+  for (const double x : values) h = h * 31 + bits_hash(x);
+  return h;
+}
+
 // An open-addressing table, each value beside its key: a lookup is one probe into one array
 // (a node-based map's bucket, node and value are apart, a cache miss each, and every insert an
 // allocation). At most half full, so probes stay short; forgetting everything is one increment.
