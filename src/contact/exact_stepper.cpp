@@ -232,12 +232,13 @@ ResponseColumns response_columns(Eigen::ArrayXXd& table) {
   return r;
 }
 
-// Each undamped mode's response to a step whose length recurs, remembered by (omega, h, past
-// ratio) for this thread: `auto` keeps a different set of a bat's modes at nearly every impact,
-// so a set's responses are mostly new while each mode's are not. The modes not met before are
-// computed together (the kernel's result for a mode does not depend on the others: the same bits).
-void remembered_undamped_responses(const Eigen::ArrayXd& omega, double h, double past_ratio, const double* basis,
-                                   Eigen::ArrayXXd& table) {
+// The undamped modes' (rows') responses to a step whose length recurs, remembered by (omega, h,
+// past ratio) for this thread: `auto` keeps a different set of a bat's modes at nearly every
+// impact, so a set's responses are mostly new while each mode's are not. The modes not met before
+// are computed together (the kernel's result for a mode does not depend on the others: the same
+// bits).
+void remembered_undamped_responses(const Eigen::ArrayXd& omega, const std::vector<int>& rows, double h,
+                                   double past_ratio, const double* basis, Eigen::ArrayXXd& table) {
   struct Key {
     double w, h, past_ratio;
     bool operator==(const Key&) const = default;
@@ -248,7 +249,7 @@ void remembered_undamped_responses(const Eigen::ArrayXd& omega, double h, double
   thread_local ThreadMemory<Key, ModeCoefficients, Hash> memory(8192);  // about 3 MB per thread
   thread_local std::vector<int> missing;
   missing.clear();
-  for (int i = 0; i < omega.size(); ++i) {
+  for (const int i : rows) {
     if (const ModeCoefficients* kept = memory.find(Key{omega(i), h, past_ratio})) {
       for (int m = 0; m < ModeResponse::columns; ++m) table(i, m) = (*kept)[m];
     } else {
@@ -270,32 +271,72 @@ void remembered_undamped_responses(const Eigen::ArrayXd& omega, double h, double
 
 }  // namespace
 
+namespace {
+
+// The basis as the kernels take it: row-major, row j the polynomial datum j weights.
+std::array<double, data_count * powers> row_major(const Basis& b) {
+  std::array<double, data_count * powers> basis;
+  for (int j = 0; j < data_count; ++j)
+    for (int k = 0; k < powers; ++k) basis[j * powers + k] = b(j, k);
+  return basis;
+}
+
+double damping_of(const ModeResponse& r, int i) { return r.damping.size() ? r.damping(i) : 0.0; }
+
+// Every mode's response made anew: all as if undamped, at once; the damped ones then made over.
+void make_rows(ModeResponse& r, const Basis& b) {
+  const int n = static_cast<int>(r.omega.size());
+  undamped_responses(r.omega.data(), n, r.h, row_major(b).data(), response_columns(r.table));
+  for (int i = 0; i < n; ++i) {
+    if (damping_of(r, i) == 0) continue;
+    const ModeCoefficients m = damped_mode_coefficients(r.omega(i), r.damping(i), r.h, b);
+    for (int c = 0; c < ModeResponse::columns; ++c) r.table(i, c) = m[c];
+  }
+}
+
+// Every mode's response from what the thread remembers: first the rows `like` has (a mode of the
+// same frequency and damping, at the same step and past ratio), found by walking both sets of
+// modes in step, as they mostly rise in frequency (the last set at this step, which shares most of
+// its modes with this one while a study's points on one bat run); then the memories, the
+// undamped modes not met before made all at once.
+void remember_rows(ModeResponse& r, const Basis& b, const ModeResponse* like) {
+  const int n = static_cast<int>(r.omega.size());
+  const bool shared = like && like->h == r.h && like->past_ratio == r.past_ratio;
+  const int like_n = shared ? static_cast<int>(like->omega.size()) : 0;
+  thread_local std::vector<int> undamped;
+  undamped.clear();
+  for (int i = 0, j = 0; i < n; ++i) {
+    while (j < like_n && like->omega(j) < r.omega(i)) ++j;
+    if (j < like_n && like->omega(j) == r.omega(i) && damping_of(*like, j) == damping_of(r, i)) {
+      r.table.row(i) = like->table.row(j);
+    } else if (damping_of(r, i) == 0) {
+      undamped.push_back(i);
+    } else {
+      const ModeCoefficients& m = remembered_damped_response({r.omega(i), r.damping(i), r.h, r.past_ratio}, b);
+      for (int c = 0; c < ModeResponse::columns; ++c) r.table(i, c) = m[c];
+    }
+  }
+  remembered_undamped_responses(r.omega, undamped, r.h, r.past_ratio, row_major(b).data(), r.table);
+}
+
+}  // namespace
+
 ModeResponse::ModeResponse(const Eigen::ArrayXd& w, const Eigen::ArrayXd& zeta, double step, double ball_mass,
-                           double past, bool with_quadrature, bool remember) {
-  fill(w, zeta, step, ball_mass, past, with_quadrature, remember);
+                           double past, bool with_quadrature, bool remember, const ModeResponse* like) {
+  fill(w, zeta, step, ball_mass, past, with_quadrature, remember, like);
 }
 
 void ModeResponse::fill(const Eigen::ArrayXd& w, const Eigen::ArrayXd& zeta, double step, double ball_mass,
-                        double past, bool with_quadrature, bool remember) {
+                        double past, bool with_quadrature, bool remember, const ModeResponse* like) {
   h = step, past_ratio = past, omega = w, damping = zeta, quadrature = with_quadrature, this->ball_mass = ball_mass;
   damped.clear();
-  const int n = static_cast<int>(omega.size());
-  table.resize(n, columns);
+  table.resize(omega.size(), columns);
   const Basis b = interpolant_basis(past_ratio, h);
-  const auto set_mode = [&](int i, const ModeCoefficients& m) {
-    for (int j = 0; j < columns; ++j) table(i, j) = m[j];
-  };
-  // Every mode as if undamped, all at once; the damped ones are then made over.
-  double basis[data_count * powers];  // row-major
-  for (int j = 0; j < data_count; ++j)
-    for (int k = 0; k < powers; ++k) basis[j * powers + k] = b(j, k);
-  if (remember) remembered_undamped_responses(omega, h, past_ratio, basis, table);
-  else undamped_responses(omega.data(), n, h, basis, response_columns(table));
-  for (int i = 0; damping.size() && i < n; ++i) {
-    if (damping(i) == 0) continue;
+  if (remember) remember_rows(*this, b, like);
+  else make_rows(*this, b);
+  for (int i = 0; quadrature && i < omega.size(); ++i) {
+    if (damping_of(*this, i) == 0) continue;
     const DampedKey key{omega(i), damping(i), h, past_ratio};
-    set_mode(i, remember ? remembered_damped_response(key, b) : damped_mode_coefficients(key.w, key.zeta, h, b));
-    if (!quadrature) continue;
     damped.push_back(remember ? remembered_damped_quadrature(key, b) : damped_quadrature(i, key.w, key.zeta, h, b));
     damped.back().mode = i;
   }
@@ -342,7 +383,16 @@ std::shared_ptr<const ModeResponse> cached_response(const Eigen::ArrayXd& omega,
   thread_local std::size_t stored = 0;  // doubles held: at most about 3 MB per thread
   if (stored > 400'000) cache.clear(), stored = 0;
   stored += ModeResponse::columns * omega.size();
-  auto response = std::make_shared<const ModeResponse>(omega, damping, h, ball_mass, past_ratio, quadrature, true);
+  // The last response made at each step and past ratio (a few in a run), whose modes the next
+  // set mostly shares; a new step and ratio takes the slots in turn.
+  thread_local std::array<std::shared_ptr<const ModeResponse>, 16> recent;
+  thread_local std::size_t next_slot = 0;
+  auto like = std::find_if(recent.begin(), recent.end(),
+                           [&](const auto& r) { return r && r->h == h && r->past_ratio == past_ratio; });
+  auto response = std::make_shared<const ModeResponse>(omega, damping, h, ball_mass, past_ratio, quadrature, true,
+                                                       like == recent.end() ? nullptr : like->get());
+  if (like == recent.end()) like = recent.begin() + next_slot++ % recent.size();
+  *like = response;
   cache.emplace(key, std::make_pair(ball_mass, response));
   return response;
 }

@@ -57,13 +57,13 @@ struct ModeResponse {
   // remember: take each mode's coefficients from (and add them to) this thread's memory, for the
   // lengths that recur from impact to impact: `auto` keeps a different set of modes at nearly
   // every impact, and a damped mode's closed forms cost an exponential and a sine and cosine at 9
-  // times.
+  // times. like (with remember): a response whose rows for the same modes are copied first.
   ModeResponse(const Eigen::ArrayXd& omega, const Eigen::ArrayXd& damping, double h, double ball_mass,
-               double past_ratio, bool quadrature = true, bool remember = false);
+               double past_ratio, bool quadrature = true, bool remember = false, const ModeResponse* like = nullptr);
   ModeResponse() = default;
   // Computes the response anew in place: the arrays keep their memory when the size is the same.
   void fill(const Eigen::ArrayXd& omega, const Eigen::ArrayXd& damping, double h, double ball_mass, double past_ratio,
-            bool quadrature, bool remember);
+            bool quadrature, bool remember, const ModeResponse* like = nullptr);
 
   Column column(int j) const { return Column(table.col(j).data(), table.rows()); }
   Column c() const { return column(0); }
