@@ -269,10 +269,6 @@ void remembered_undamped_responses(const Eigen::ArrayXd& omega, const std::vecto
   }
 }
 
-}  // namespace
-
-namespace {
-
 // The basis as the kernels take it: row-major, row j the polynomial datum j weights.
 std::array<double, data_count * powers> row_major(const Basis& b) {
   std::array<double, data_count * powers> basis;
