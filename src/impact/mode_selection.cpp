@@ -6,17 +6,12 @@
 #include <numbers>
 #include <numeric>
 
+#include "contact/rigid_collision.hpp"
 #include "sweetspot/impact/formulas.hpp"
 
 namespace sweetspot {
 
 namespace {
-
-// int_0^1 dx / sqrt(1 - x^q) = B(1/q, 1/2) / q: the time to stop a mass on a spring F ~ u^(q-1),
-// in units of u_max / v.
-double quarter_period(double q) {
-  return std::tgamma(1 / q) * std::sqrt(std::numbers::pi) / std::tgamma(1 / q + 0.5) / q;
-}
 
 // Upper envelope of g for a half-sine pulse of duration T (|F^| = |cos(w T/2)| / |1 - (w T/pi)^2|):
 // 1 up to w T = 2 pi, then 1 / ((w T / pi)^2 - 1)^2, here from x2 = (w T / pi)^2. Real pulses are
@@ -35,7 +30,7 @@ double pulse_duration(const Ball& ball, double approach_speed, double recoil) {
   const double reduced_mass = ball.mass / (1 + recoil);
   const double q = ball.a + 1, b = ball.expansion_exponent();
   const double u_max = std::pow(q * reduced_mass * v * v / (2 * ball.k1), 1 / q);
-  return u_max / v * (quarter_period(q) + quarter_period(b + 1) / ball.e0);
+  return u_max / v * (detail::whole_branch_time(q) + detail::whole_branch_time(b + 1) / ball.e0);
 }
 
 ModeSelection select_modes(const Eigen::VectorXd& omega, const Eigen::VectorXd& psi, const Ball& ball,

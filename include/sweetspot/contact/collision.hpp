@@ -64,6 +64,10 @@ struct CollisionOptions {
   // contact's own ringing (the ball's stiffness against the contact's mobility). 2 keeps them
   // stable; a stated accuracy asks less (a nearly dead ball's force falls within a few 1/omega_c).
   double contact_phase_limit = 2;
+  // exact: a body that only moves rigidly (no vibrating or damped mode, no residual compliance)
+  // collides in closed form, without steps or their error, unless the force profile is recorded;
+  // false steps it all the same (to measure the stepper itself).
+  bool rigid_closed_form = true;
 };
 
 // A contact takes at most this many steps: a mistyped step (1e-12 for 1e-5) or tolerance would
