@@ -140,6 +140,34 @@ TEST_CASE("Auto stays within its estimate where the bat's vibration strikes the 
   CHECK(struck_again >= 20);
 }
 
+TEST_CASE("A run told to stop where the ball is caught again is the same run up to that touch", "[modes_auto]") {
+  // auto's first run of an impact whose ball is caught again is thrown away (the impact runs again
+  // with every solved mode): it ends at the second touch. A run that makes one contact is unchanged.
+  int caught = 0;
+  for (double z : {0.305, 0.405, 0.605})
+    for (double speed : {30.0, 50.0}) {
+      ImpactScene s = n2000_high_impact(z, auto_modes);
+      s.ball_speed = speed;
+      const SceneGeometry g = scene_geometry(s, r161());
+      CollisionOptions options = s.integrator;
+      const Collision full = collide(g.contact, s.ball, s.ball_speed, options);
+      options.stop_when_caught_again = true;
+      const Collision stopped = collide(g.contact, s.ball, s.ball_speed, options);
+      INFO("z " << z << ", " << speed << " m/s: " << full.contacts << " contacts");
+      REQUIRE(full.status == CollisionStatus::ok);
+      CHECK(stopped.status == CollisionStatus::ok);
+      CHECK(stopped.contacts == std::min(full.contacts, 2));
+      if (full.contacts == 1) {
+        CHECK(stopped.ball_velocity == full.ball_velocity);
+        CHECK(stopped.collision_time == full.collision_time);
+      } else {
+        ++caught;
+        CHECK(stopped.contact_time < full.contact_time);  // the first contact's alone
+      }
+    }
+  CHECK(caught > 0);  // the handle's impacts are caught again
+}
+
 TEST_CASE("The residual compliance carries most of what the dropped modes do", "[modes_auto]") {
   // Cutting at 18 modes without it errs by 0.5 % at 60 cm; auto with fewer modes does far better.
   const double all = impact(0.605, 40, all_modes).vf;

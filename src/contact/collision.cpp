@@ -200,6 +200,10 @@ class CollisionRun {
     }
     if (never_approach()) return no_contact(state_.compression_rate(y_));
     while (contact() && free_flight()) {
+      if (options_.stop_when_caught_again) {
+        ++result_.contacts;  // the one that has just begun
+        break;
+      }
     }
     finish();
     return result_;

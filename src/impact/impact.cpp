@@ -179,6 +179,7 @@ Collision collide_scene(const ImpactScene& scene, const SceneGeometry& g, Caught
     options = options_for_accuracy(options, scene.step_accuracy, scene.ball, scene.ball_speed + g.bat_speed, g.recoil,
                                    g.contact.count() ? g.contact.omega.maxCoeff() : 0.0);
   if (checked) options.dt = scene.checked_step;
+  options.stop_when_caught_again = caught_again == CaughtAgain::stop;
   // Van Zandt and the force analyses drive the modes with the force profile.
   options.record_force |= scene.van_zandt_comparison || scene.histories || scene.force_response || scene.mode_response;
   options.find_collision_time |= scene.force_response;  // its omega grid is in units of 1/tau
@@ -216,6 +217,8 @@ Collision collide_with_patch(const ImpactScene& scene, const ModalBasis& basis, 
                              CaughtAgain caught_again = CaughtAgain::check) {
   const WallMode* wall = g.wall >= 0 ? basis.wall_at(g.z) : nullptr;
   if (!wall || wall->load == WallLoad::point) return collide_scene(scene, g, caught_again);
+  // Each run's largest compression, over all its contacts, sets the next run's patch.
+  if (caught_again == CaughtAgain::stop) caught_again = CaughtAgain::return_unchecked;
   const Ball& ball = scene.ball;
   const double fraction = mean_compression_fraction(ball);
   const double v = scene.ball_speed + g.bat_speed, mu = ball.mass / (1 + g.recoil);
@@ -310,7 +313,7 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& stated)
   const bool drops_solved = g.kept.size() < static_cast<std::size_t>(basis.count());
   const bool reruns_if_caught_again = scene.vibrational_modes == auto_modes && drops_solved;
   Collision c = collide_with_patch(scene, basis, g,
-                                   reruns_if_caught_again ? CaughtAgain::return_unchecked : CaughtAgain::check);
+                                   reruns_if_caught_again ? CaughtAgain::stop : CaughtAgain::check);
   // auto's estimate bounds what the dropped modes change over one pulse. A ball the bat's
   // vibration strikes again (a handle impact) sums their errors over the contacts, and the timing
   // of each later one can magnify them past it (up to 12x the tolerance on R161 and the torpedo):

@@ -87,7 +87,7 @@ Collision collide_within(const ModalContact& body, const Ball& ball, double ball
                          double accuracy, CaughtAgain caught_again) {
   if (options.method == Method::dopri) return collide(body, ball, ball_speed, options);
   const auto done_unchecked = [caught_again](const Collision& c) {
-    return c.status != CollisionStatus::ok || (caught_again == CaughtAgain::return_unchecked && c.contacts > 1);
+    return c.status != CollisionStatus::ok || (caught_again != CaughtAgain::check && c.contacts > 1);
   };
   if (modelled_step(options.method, ball) && ball_speed + body.psi.dot(body.velocity0) <= modelled_closing_speed) {
     Collision c = collide(body, ball, ball_speed, options);

@@ -68,6 +68,9 @@ struct CollisionOptions {
   // collides in closed form, without steps or their error, unless the force profile is recorded;
   // false steps it all the same (to measure the stepper itself).
   bool rigid_closed_form = true;
+  // End the collision where the ball first touches again after a separation (contacts = 2): for a
+  // caller that runs such an impact again and needs nothing else of this run.
+  bool stop_when_caught_again = false;
 };
 
 // A contact takes at most this many steps: a mistyped step (1e-12 for 1e-5) or tolerance would

@@ -38,8 +38,9 @@ CollisionOptions options_for_accuracy(CollisionOptions options, double accuracy,
 // halves, 8 times at most. Dormand-Prince, which controls its own error, runs once.
 // A caller that runs the impact again wherever the ball is caught again (auto modes, which then
 // keep every solved mode) asks for the first run that shows it, unchecked: checking a result that
-// is thrown away cost two runs more, or three.
-enum class CaughtAgain { check, return_unchecked };
+// is thrown away cost two runs more, or three. `stop` ends that run where the ball touches again
+// (CollisionOptions::stop_when_caught_again): the caller needs nothing more of it.
+enum class CaughtAgain { check, return_unchecked, stop };
 Collision collide_within(const ModalContact& body, const Ball& ball, double ball_speed, CollisionOptions options,
                          double accuracy, CaughtAgain caught_again = CaughtAgain::check);
 
