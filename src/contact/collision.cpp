@@ -488,12 +488,12 @@ double impulse_time(const std::vector<ForceSample>& force, double fraction) {
 Collision collide(const ModalContact& body, const Ball& ball, double ball_speed, const CollisionOptions& options) {
   Collision c;
   switch (options.method) {
-    case Method::exact:
-      if (auto rigid = options.rigid_closed_form ? detail::rigid_collision(body, ball, ball_speed, options) : std::nullopt)
-        c = std::move(*rigid);
-      else
-        c = CollisionRun<detail::ExactStepper>(body, ball, ball_speed, options).run();
+    case Method::exact: {
+      std::optional<Collision> rigid;
+      if (options.rigid_closed_form) rigid = detail::rigid_collision(body, ball, ball_speed, options);
+      c = rigid ? std::move(*rigid) : CollisionRun<detail::ExactStepper>(body, ball, ball_speed, options).run();
       break;
+    }
     case Method::dopri: return CollisionRun<detail::DopriStepper>(body, ball, ball_speed, options).run();
     case Method::rk4: c = CollisionRun<detail::Rk4Stepper>(body, ball, ball_speed, options).run(); break;
   }
