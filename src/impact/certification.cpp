@@ -26,13 +26,9 @@ double scan_start(const BarrelScan& scan, double length) { return length - scan.
 double scan_end(const BarrelScan& scan, double length) { return length - scan.near_end; }
 
 // The modes the scan's hits ask with `auto`: the widest auto_mode_request over its points (as an
-// optimisation's design_modes asks) times held_reach; or the lowest `count`. The held bat's modes
-// are taken over the solved ones, and converge more slowly than the free ones (the pivot's
-// constraint force excites every mode): at auto's own reach the hollow alloy_bbcor's BBCOR errs
-// 3e-5 against all modes at 336 and 512 slices, at twice it 1e-5, at four times 2.8e-6 (512),
-// 6.2e-6 (1024; aluminium 4.9e-6, r161 and the torpedo 4e-7).
-constexpr double held_reach = 4;
-
+// optimisation's design_modes asks; held_reach times the free reach, scene.hpp); or the lowest
+// `count`. At that reach alloy_bbcor's BBCOR errs 2.8e-6 against all modes at 512 slices, 6.2e-6
+// at 1024 (aluminium 4.9e-6, r161 and the torpedo 4e-7); at auto's own reach 3e-5, twice it 1e-5.
 ModeRequest partial_scan_request(const ModalBasis& rigid, const RigSettings& rig, const BarrelScan& scan, int modes) {
   if (modes != auto_modes) return ModeRequest::lowest(modes);
   ModeRequest widest = ModeRequest::below(0);
@@ -41,7 +37,6 @@ ModeRequest partial_scan_request(const ModalBasis& rigid, const RigSettings& rig
     if (asked.is_all()) return asked;
     widest.below_omega = std::max(widest.below_omega, asked.below_omega);
   }
-  widest.below_omega *= held_reach;
   return widest;
 }
 

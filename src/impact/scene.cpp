@@ -275,7 +275,8 @@ Ball struck_ball(const ImpactScene& scene, const ModalBasis& basis) {
 ModeRequest auto_mode_request(const ImpactScene& scene, const ModalBasis& basis) {
   const SceneGeometry g = rigid_geometry(scene, basis);
   const double pulse = pulse_duration(struck_ball(scene, basis), scene.ball_speed + g.bat_speed, g.recoil);
-  const double omega = auto_solve_factor(auto_mode_tolerance(scene)) * 4 * std::numbers::pi / pulse;
+  const double reach = scene.pivoted ? held_reach : 1;
+  const double omega = reach * auto_solve_factor(auto_mode_tolerance(scene)) * 4 * std::numbers::pi / pulse;
   if (!std::isfinite(omega) || !(omega > 0)) return ModeRequest::all();  // a scene validation will refuse
   // Half-octaves of 1000 rad/s: nearby pulses share one basis.
   return ModeRequest::below(1000 * std::exp2(std::ceil(2 * std::log2(std::max(omega, 1000.0) / 1000)) / 2));

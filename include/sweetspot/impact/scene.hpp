@@ -207,9 +207,19 @@ SceneGeometry scene_geometry(const ImpactScene& scene, const ModalBasis& basis);
 // it has neither curved contact nor a speed-dependent COR (N2000's ball: no copy, no change).
 Ball struck_ball(const ImpactScene& scene, const ModalBasis& basis);
 
+// A bat held at a pivot is struck in its held modes, made from the free ones solved; they converge
+// more slowly (the pivot's constraint force excites every free mode), so a held scene solves the
+// free modes this many times as far. R161 on the rig (136 mph, 168 slices, mode_tolerance 2.5e-4):
+// over the free modes auto itself reaches, v_f errs 0.6-1 % at 25.5-45.5 cm against every mode,
+// 25-45x auto's estimate; over four times as far, within 3.2e-4 (auto's own selection over every
+// mode: within 1.4x its estimate). alloy_bbcor's BBCOR at 512 slices errs 3e-5 at auto's reach,
+// 2.8e-6 at four times.
+inline constexpr double held_reach = 4;
+
 // The modes modes = "auto" needs solved at this scene: every one below
-// auto_solve_factor(mode_tolerance) times the rigid-bat pulse's reach 4 pi / T, rounded up to a
-// half-octave of 1000 rad/s. `basis` gives the mass properties only (a rigid-only basis will do).
+// auto_solve_factor(mode_tolerance) times the rigid-bat pulse's reach 4 pi / T (held_reach times
+// that for a held bat), rounded up to a half-octave of 1000 rad/s. `basis` gives the mass
+// properties only (a rigid-only basis will do).
 ModeRequest auto_mode_request(const ImpactScene& scene, const ModalBasis& basis);
 
 // What one impact solves for, by scene.vibrational_modes: the rigid modes alone for 0, every mode
