@@ -193,15 +193,17 @@ void check_total(const std::string& file, ImpactScene scene, const std::vector<d
 }
 
 // A stated accuracy's result (simulate_within_accuracy) against the continuum: Richardson over
-// `fine` and 2 `fine` slices, modes auto at 1e-8, exact at 2.5 us. Its total estimate must bound
-// the actual error, within 5x where that is above 1e-7, and meet the accuracy.
+// `fine` and 2 `fine` slices, modes auto at 1e-8 (1e-7 on a held bat), exact at 2.5 us. Its total
+// estimate must bound the actual error, within 5x where that is above 1e-7, and meet the accuracy.
 void check_accuracy(const std::string& file, ImpactScene scene, double accuracy, int fine,
                     const std::vector<double>& zs, Honesty& h) {
   BatSource source;
   const BatDesign design = load_bat_design(source_path(file), source);
   const int n = build_bat(design).slices();
   ImpactScene reference_scene = scene;
-  reference_scene.mode_tolerance = 1e-8;
+  // A held bat solves its free modes four times as far (held_reach): at 1e-8 that is more than a
+  // partial solve at 1344 slices may take, and 1e-7 is still a thousandth of the accuracies checked.
+  reference_scene.mode_tolerance = scene.pivoted ? 1e-7 : 1e-8;
   reference_scene.integrator.dt = 2.5e-6;
   scene.accuracy = accuracy;
   scene.error_estimates = true;
