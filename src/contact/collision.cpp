@@ -410,7 +410,7 @@ class CollisionRun {
     if (const int k = state_.dissipated_index(); k >= 0) result_.damping_dissipated = y_(k);
     else if (body_.damped()) result_.damping_dissipated = std::nan("");  // not asked
     if (!options_.find_collision_time) result_.collision_time = std::nan("");
-    else if (result_.status == CollisionStatus::ok) result_.collision_time = impulse_time(samples_, 0.99);
+    else if (result_.status == CollisionStatus::ok) result_.collision_time = impulse_time(samples_, collision_time_fraction);
     if (options_.record_force) result_.force = std::move(samples_);
   }
 

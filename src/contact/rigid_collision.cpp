@@ -10,13 +10,6 @@ double whole_branch_time(double q) {
   return std::tgamma(1 / q) * std::sqrt(std::numbers::pi) / std::tgamma(1 / q + 0.5) / q;
 }
 
-namespace {
-
-// The fraction of the impulse delivered when the collision time is taken (collision.hpp).
-constexpr double collision_time_fraction = 0.99;
-
-}  // namespace
-
 // Two series, each used where it converges at least as 2^-k: for level <= 1/2 the binomial series
 // of (1 - x^q)^(-1/2) term by term; above it the remainder to x = 1, which w = sqrt(1 - x^q)
 // turns into (2/q) int_0^W (1 - w^2)^(1/q - 1) dw, W^2 = 1 - level <= 1/2.

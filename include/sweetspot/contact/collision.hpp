@@ -73,6 +73,9 @@ struct CollisionOptions {
   bool stop_when_caught_again = false;
 };
 
+// The collision time is when this fraction of the impulse has been delivered.
+inline constexpr double collision_time_fraction = 0.99;
+
 // A contact takes at most this many steps: a mistyped step (1e-12 for 1e-5) or tolerance would
 // otherwise fill the memory with force samples. Past it the point fails.
 inline constexpr double max_contact_steps = 1e7;
