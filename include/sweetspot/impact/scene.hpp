@@ -209,11 +209,11 @@ Ball struck_ball(const ImpactScene& scene, const ModalBasis& basis);
 
 // A bat held at a pivot is struck in its held modes, made from the free ones solved; they converge
 // more slowly (the pivot's constraint force excites every free mode), so a held scene solves the
-// free modes this many times as far. R161 on the rig (136 mph, 168 slices, mode_tolerance 2.5e-4):
-// over the free modes auto itself reaches, v_f errs 0.6-1 % at 25.5-45.5 cm against every mode,
-// 25-45x auto's estimate; over four times as far, within 3.2e-4 (auto's own selection over every
-// mode: within 1.4x its estimate). alloy_bbcor's BBCOR at 512 slices errs 3e-5 at auto's reach,
-// 2.8e-6 at four times.
+// free modes this many times as far. R161 on the rig (136 mph, N2000's ball, auto's default
+// tolerance, the unsolved modes' compliance at the pivot counted: scene.cpp), against every mode
+// from 20 to 80 cm: over auto's own reach v_f errs up to 24x its estimate at 168 slices; over twice
+// it, 6.3x at 672 slices; over four times, within 2.1x. alloy_bbcor's BBCOR at 512 slices erred
+// 3e-5 at auto's reach and 2.8e-6 at four times, without the unsolved modes' compliance.
 inline constexpr double held_reach = 4;
 
 // The modes modes = "auto" needs solved at this scene: every one below
