@@ -80,10 +80,12 @@ SlicingLadder::SlicingLadder(int slices, BeamTheory theory, const ImpactScene& s
       exact_(scene.integrator.method == Method::exact),
       next_slices_(slices) {}
 
-// Its share, or what the modes and the step leave of the accuracy where they take less than theirs
-// (the step takes its share; `auto` often drops far less than its share allows).
+// What the modes and the step leave of the accuracy: more than its share where they take less than
+// theirs (the step takes its share; `auto` often drops far less than its share allows), less where
+// the modes take more (a ball caught again counts the dropped modes once per contact), so that
+// the total is held to the accuracy either way.
 double SlicingLadder::slicing_allowance() const {
-  return std::max(accuracy_budget(accuracy_).slicing, accuracy_ - result_.modes_error - result_.step_error);
+  return accuracy_ - result_.modes_error - result_.step_error;
 }
 
 ImpactScene SlicingLadder::next_scene(ImpactScene scene) const {
@@ -102,12 +104,18 @@ bool SlicingLadder::add(ImpactResult r) {
   if (vf_.size() < 3 && can_double) return false;  // three slicings at least
   add_slicing_error(result_, vf_, vf_.size() - 1, true, ball_speed_);
   if (result_.slicing_error <= slicing_allowance()) return true;
-  if (can_double) return false;
-  char why[240];
-  std::snprintf(why, sizeof why,
-                "accuracy %.3g needs the bat cut finer than %d slices (max_slices %d, or %d for Euler-Bernoulli); "
-                "the slicing's estimated error there is %.3g",
-                accuracy_, result_.slices_used, max_slices, max_euler_bernoulli_slices, result_.slicing_error);
+  const bool nothing_left = !(slicing_allowance() > 0);
+  if (can_double && !nothing_left) return false;
+  char why[320];
+  if (nothing_left)
+    std::snprintf(why, sizeof why, "accuracy %.3g: the modes' and the step's estimated errors (%.3g and %.3g) leave "
+                  "nothing of it for the slicing", accuracy_, result_.modes_error, result_.step_error);
+  else
+    std::snprintf(why, sizeof why,
+                  "accuracy %.3g needs the bat cut finer than %d slices (max_slices %d, or %d for Euler-Bernoulli); "
+                  "the slicing's estimated error there is %.3g, where the modes and the step leave it %.3g",
+                  accuracy_, result_.slices_used, max_slices, max_euler_bernoulli_slices, result_.slicing_error,
+                  slicing_allowance());
   result_.status = CollisionStatus::inaccurate;
   result_.message = why;
   return true;
