@@ -167,10 +167,10 @@ void check_accuracy_options(const CertifyOptions& options) {
 
 // The certification on the design cut at its own slices N, then 2N, 4N ...: at least three
 // slicings, then one more while the measure's Richardson estimate (error_estimates.hpp) exceeds
-// the slicing's share. The finest is the answer.
+// what the modes and the step leave of the accuracy (as impact's SlicingLadder). The finest is
+// the answer.
 Certification certify_within_accuracy(const BatDesign& design, const Standard& standard, CertifyOptions options) {
   check_accuracy_options(options);
-  const double share = accuracy_budget(*options.accuracy).slicing;
   std::vector<double> measures;
   int evaluations = 0;
   for (options.slices = build_bat(design).slices();; options.slices *= slicing_refinement) {
@@ -180,8 +180,9 @@ Certification certify_within_accuracy(const BatDesign& design, const Standard& s
     const bool can_double = can_refine(options.slices, options.theory);
     if (measures.size() < 3 && can_double) continue;
     c.slicing_error = slicing_error(measures, measures.size() - 1) / std::abs(c.measure);
-    if (c.slicing_error > share && can_double) continue;
-    c.accurate = c.slicing_error <= share;
+    const double allowance = slicing_allowance(*options.accuracy, c.modes_error, c.step_error);
+    if (c.slicing_error > allowance && allowance > 0 && can_double) continue;
+    c.accurate = c.slicing_error <= allowance;
     c.total_error = c.slicing_error + c.modes_error + c.step_error;
     c.evaluations = evaluations;
     return c;

@@ -57,6 +57,12 @@ void add_slicing_error(ImpactResult& r, const std::vector<double>& vf, std::size
 
 AccuracyBudget accuracy_budget(double accuracy) { return {accuracy / 2, accuracy / 4, accuracy / 4}; }
 
+double slicing_allowance(double accuracy, double modes_error, double step_error) {
+  const AccuracyBudget budget = accuracy_budget(accuracy);
+  const auto taken = [](double estimate, double share) { return std::isnan(estimate) ? share : estimate; };
+  return accuracy - taken(modes_error, budget.modes) - taken(step_error, budget.step);
+}
+
 double auto_mode_tolerance(const ImpactScene& scene) {
   return scene.accuracy > 0 ? accuracy_budget(scene.accuracy).modes : scene.mode_tolerance;
 }
@@ -80,12 +86,8 @@ SlicingLadder::SlicingLadder(int slices, BeamTheory theory, const ImpactScene& s
       exact_(scene.integrator.method == Method::exact),
       next_slices_(slices) {}
 
-// What the modes and the step leave of the accuracy: more than its share where they take less than
-// theirs (the step takes its share; `auto` often drops far less than its share allows), less where
-// the modes take more (a ball caught again counts the dropped modes once per contact), so that
-// the total is held to the accuracy either way.
 double SlicingLadder::slicing_allowance() const {
-  return accuracy_ - result_.modes_error - result_.step_error;
+  return sweetspot::slicing_allowance(accuracy_, result_.modes_error, result_.step_error);
 }
 
 ImpactScene SlicingLadder::next_scene(ImpactScene scene) const {

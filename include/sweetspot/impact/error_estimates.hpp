@@ -98,6 +98,14 @@ struct AccuracyBudget {
 };
 AccuracyBudget accuracy_budget(double accuracy);
 
+// What the dropped modes and the step leave of a stated accuracy for the slicing: more than its
+// half where they take less than their quarters (the step takes its quarter; `auto` often drops
+// far less than its quarter allows), less where the modes take more (a ball caught again counts
+// the dropped modes once per contact), so that the total is held to the accuracy either way. An
+// estimate not made (NaN: the step's, where the impact reports no estimates, as in a study that
+// does not write them) counts as its quarter.
+double slicing_allowance(double accuracy, double modes_error, double step_error);
+
 // The tolerance `auto` keeps the dropped modes within for the scene: its mode_tolerance, or at a
 // stated accuracy the modes' share (scene_for_accuracy).
 double auto_mode_tolerance(const ImpactScene& scene);
