@@ -315,8 +315,8 @@ TEST_CASE("A stated accuracy holds the total where the modes take more than thei
   std::map<int, ModalBasis> bases;
   const auto basis_at = [&](int slices) -> const ModalBasis& {
     const Bat bat = bat_with_slices(design, slices);
-    const ModeRequest request =
-        impact_mode_request(scene_for_accuracy(scene), compute_modes(bat, BeamTheory::timoshenko, ModeRequest::rigid_only()));
+    const ModalBasis rigid = compute_modes(bat, BeamTheory::timoshenko, ModeRequest::rigid_only());
+    const ModeRequest request = impact_mode_request(scene_for_accuracy(scene), rigid);
     return bases.try_emplace(slices, compute_modes(bat, BeamTheory::timoshenko, request)).first->second;
   };
   const ImpactResult r = simulate_within_accuracy(basis_at, build_bat(design).slices(), BeamTheory::timoshenko, scene);
@@ -338,7 +338,8 @@ TEST_CASE("A stated accuracy holds where the impact makes no step estimate", "[e
   scene.accuracy = 1e-3;
   std::map<int, ModalBasis> bases;
   const auto basis_at = [&](int slices) -> const ModalBasis& {
-    return bases.try_emplace(slices, compute_modes(bat_with_slices(design, slices), BeamTheory::timoshenko)).first->second;
+    const Bat bat = bat_with_slices(design, slices);
+    return bases.try_emplace(slices, compute_modes(bat, BeamTheory::timoshenko)).first->second;
   };
   const ImpactResult r = simulate_within_accuracy(basis_at, 84, BeamTheory::timoshenko, scene);
   INFO(r.message);
@@ -360,7 +361,8 @@ TEST_CASE("A stated accuracy the bat cannot be solved finely enough for ends ina
   std::map<int, ModalBasis> bases;
   const auto basis_at = [&](int slices) -> const ModalBasis& {
     if (slices > 168) throw InputError("slices = " + std::to_string(slices) + ": impractical here");
-    return bases.try_emplace(slices, compute_modes(bat_with_slices(design, slices), BeamTheory::timoshenko)).first->second;
+    const Bat bat = bat_with_slices(design, slices);
+    return bases.try_emplace(slices, compute_modes(bat, BeamTheory::timoshenko)).first->second;
   };
   const ImpactResult r = simulate_within_accuracy(basis_at, 84, BeamTheory::timoshenko, scene);
   CHECK(r.status == CollisionStatus::inaccurate);
