@@ -263,6 +263,24 @@ ImpactScene rig() {
   return s;
 }
 
+// A stated accuracy's ladder on a bat file's design from its own slices, each slicing solving the
+// modes the scene's auto asks; the result must be ok.
+ImpactResult within_accuracy(const char* file, const ImpactScene& scene) {
+  BatSource source;
+  const BatDesign design = load_bat_design(source_path(file), source);
+  std::map<int, ModalBasis> bases;
+  const auto basis_at = [&](int slices) -> const ModalBasis& {
+    const Bat bat = bat_with_slices(design, slices);
+    const ModalBasis rigid = compute_modes(bat, BeamTheory::timoshenko, ModeRequest::rigid_only());
+    const ModeRequest request = impact_mode_request(scene_for_accuracy(scene), rigid);
+    return bases.try_emplace(slices, compute_modes(bat, BeamTheory::timoshenko, request)).first->second;
+  };
+  ImpactResult r = simulate_within_accuracy(basis_at, build_bat(design).slices(), BeamTheory::timoshenko, scene);
+  INFO(r.message);
+  REQUIRE(r.status == CollisionStatus::ok);
+  return r;
+}
+
 void report(const char* what, const Honesty& h) {
   std::printf("%s: %d points, total estimate / actual error in [%.3g, %.3g], %d past 5x\n", what, h.points, h.low,
               h.high, h.past_5x);
@@ -306,22 +324,11 @@ TEST_CASE("A stated accuracy holds the total where the modes take more than thei
   // once per contact: their estimate passes the quarter of the accuracy they were given. The
   // slicing is then held to what the modes and the step leave, not to its own half; given its
   // half, this point stopped at 340 slices with a total of 1.07e-3.
-  BatSource source;
-  const BatDesign design = load_bat_design(source_path("studies/bats/torpedo.toml"), source);
   ImpactScene scene = high_impact();
   scene.z = 0.255;
   scene.accuracy = 1e-3;
   scene.error_estimates = true;
-  std::map<int, ModalBasis> bases;
-  const auto basis_at = [&](int slices) -> const ModalBasis& {
-    const Bat bat = bat_with_slices(design, slices);
-    const ModalBasis rigid = compute_modes(bat, BeamTheory::timoshenko, ModeRequest::rigid_only());
-    const ModeRequest request = impact_mode_request(scene_for_accuracy(scene), rigid);
-    return bases.try_emplace(slices, compute_modes(bat, BeamTheory::timoshenko, request)).first->second;
-  };
-  const ImpactResult r = simulate_within_accuracy(basis_at, build_bat(design).slices(), BeamTheory::timoshenko, scene);
-  INFO(r.message);
-  REQUIRE(r.status == CollisionStatus::ok);
+  const ImpactResult r = within_accuracy("studies/bats/torpedo.toml", scene);
   INFO("slicing " << r.slicing_error << ", modes " << r.modes_error << ", step " << r.step_error);
   CHECK(r.modes_error > accuracy_budget(scene.accuracy).modes);
   CHECK(r.total_error <= scene.accuracy);
@@ -331,19 +338,10 @@ TEST_CASE("A stated accuracy holds where the impact makes no step estimate", "[e
   // A study that does not write the estimates has its impacts skip the step's (NaN): the step
   // then counts as the quarter it was chosen for, as in the wood design study, every point of
   // which a NaN once failed.
-  BatSource source;
-  const BatDesign design = load_bat_design(source_path("studies/bats/r161.toml"), source);
   ImpactScene scene = high_impact();
   scene.z = 0.605;
   scene.accuracy = 1e-3;
-  std::map<int, ModalBasis> bases;
-  const auto basis_at = [&](int slices) -> const ModalBasis& {
-    const Bat bat = bat_with_slices(design, slices);
-    return bases.try_emplace(slices, compute_modes(bat, BeamTheory::timoshenko)).first->second;
-  };
-  const ImpactResult r = simulate_within_accuracy(basis_at, 84, BeamTheory::timoshenko, scene);
-  INFO(r.message);
-  REQUIRE(r.status == CollisionStatus::ok);
+  const ImpactResult r = within_accuracy("studies/bats/r161.toml", scene);
   CHECK(std::isnan(r.step_error));
   CHECK(r.slicing_error <= slicing_allowance(1e-3, r.modes_error, r.step_error));
   CHECK(slicing_allowance(1e-3, 1e-4, std::nan("")) == Approx(1e-3 - 1e-4 - 2.5e-4));

@@ -212,8 +212,7 @@ Ball struck_ball(const ImpactScene& scene, const ModalBasis& basis);
 // free modes this many times as far. R161 on the rig (136 mph, N2000's ball, auto's default
 // tolerance, the unsolved modes' compliance at the pivot counted: scene.cpp), against every mode
 // from 20 to 80 cm: over auto's own reach v_f errs up to 24x its estimate at 168 slices; over twice
-// it, 6.3x at 672 slices; over four times, within 2.1x. alloy_bbcor's BBCOR at 512 slices erred
-// 3e-5 at auto's reach and 2.8e-6 at four times, without the unsolved modes' compliance.
+// it, 6.3x at 672 slices; over four times, within 2.1x (certify's partial basis: certification.cpp).
 inline constexpr double held_reach = 4;
 
 // The modes modes = "auto" needs solved at this scene: every one below
