@@ -161,11 +161,12 @@ ModalBasis scene_basis(const Bat& bat, BeamTheory theory, const ImpactScene& sce
 ImpactResult impact_with_estimates(const BatDesign& design, const Bat& bat, BeamTheory theory, ImpactScene scene) {
   scene.error_estimates = true;
   if (scene.accuracy > 0) {
-    std::map<int, ModalBasis> bases;  // per slice count, each solved once
-    const auto basis_at = [&](int slices) -> const ModalBasis& {
-      auto found = bases.find(slices);
+    std::map<std::pair<int, double>, ModalBasis> bases;  // by slice count and mode_share_divisor, each solved once
+    const auto basis_at = [&](int slices, const ImpactScene& rung) -> const ModalBasis& {
+      const std::pair key(slices, rung.mode_share_divisor);
+      auto found = bases.find(key);
       if (found == bases.end())
-        found = bases.emplace(slices, scene_basis(bat_with_slices(design, slices), theory, scene)).first;
+        found = bases.emplace(key, scene_basis(bat_with_slices(design, slices), theory, rung)).first;
       return found->second;
     };
     return simulate_within_accuracy(basis_at, bat.slices(), theory, scene);

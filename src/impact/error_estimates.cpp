@@ -64,7 +64,17 @@ double slicing_allowance(double accuracy, double modes_error, double step_error)
 }
 
 double auto_mode_tolerance(const ImpactScene& scene) {
-  return scene.accuracy > 0 ? accuracy_budget(scene.accuracy).modes : scene.mode_tolerance;
+  return scene.accuracy > 0 ? accuracy_budget(scene.accuracy).modes / scene.mode_share_divisor : scene.mode_tolerance;
+}
+
+double widened_mode_share(const ImpactScene& scene, const ImpactResult& r) {
+  if (!(scene.accuracy > 0) || scene.vibrational_modes != auto_modes || r.status != CollisionStatus::ok) return 0;
+  const double share = accuracy_budget(scene.accuracy).modes;
+  if (!(r.modes_error > share) || scene.mode_share_divisor >= max_mode_share_divisor) return 0;
+  // At least a half-octave further (auto_mode_request's steps): a smaller step may ask the same
+  // basis again.
+  const double half_octave = 2 * std::sqrt(2.0);
+  return std::min(scene.mode_share_divisor * std::max(r.modes_error / share, half_octave), max_mode_share_divisor);
 }
 
 ImpactScene scene_for_accuracy(ImpactScene scene) {
@@ -92,10 +102,12 @@ double SlicingLadder::slicing_allowance() const {
 
 ImpactScene SlicingLadder::next_scene(ImpactScene scene) const {
   scene.checked_step = checked_step_;
+  scene.mode_share_divisor = mode_share_divisor_;
   return scene;
 }
 
-bool SlicingLadder::add(ImpactResult r) {
+bool SlicingLadder::add(ImpactResult r, const ImpactScene& ran) {
+  mode_share_divisor_ = ran.mode_share_divisor;
   r.slices_used = next_slices_;
   vf_.push_back(r.vf);
   result_ = std::move(r);
@@ -110,8 +122,10 @@ bool SlicingLadder::add(ImpactResult r) {
   if (can_double && !nothing_left) return false;
   char why[320];
   if (nothing_left)
-    std::snprintf(why, sizeof why, "accuracy %.3g: the modes' and the step's estimated errors (%.3g and %.3g) leave "
-                  "nothing of it for the slicing", accuracy_, result_.modes_error, result_.step_error);
+    std::snprintf(why, sizeof why, "accuracy %.3g: the modes' and the step's estimated errors (%.3g and %.3g%s) leave "
+                  "nothing of it for the slicing", accuracy_, result_.modes_error,
+                  std::isnan(result_.step_error) ? accuracy_budget(accuracy_).step : result_.step_error,
+                  std::isnan(result_.step_error) ? ", its share: not estimated here" : "");
   else
     std::snprintf(why, sizeof why,
                   "accuracy %.3g needs the bat cut finer than %d slices (max_slices %d, or %d for Euler-Bernoulli); "
@@ -137,15 +151,29 @@ ImpactResult simulate_within_accuracy(const BasisAtSlices& basis_at, int slices,
                                       const ImpactScene& scene) {
   SlicingLadder ladder(slices, theory, scene);
   for (bool first = true;; first = false) {
+    ImpactScene rung = ladder.next_scene(scene);
     const ModalBasis* basis = nullptr;
     try {
-      basis = &basis_at(ladder.next_slices());
+      basis = &basis_at(ladder.next_slices(), rung);
     } catch (const InputError& impractical) {  // the bat's own slicing's refusal is the user's
       if (first) throw;
       ladder.stop(impractical.what());
       return ladder.take_result();
     }
-    if (ladder.add(simulate_impact(*basis, ladder.next_scene(scene)))) return ladder.take_result();
+    ImpactResult r = simulate_impact(*basis, rung);
+    // Dropped modes past their share: again on a wider basis, while one can be solved (else the
+    // result stands, and the ladder says what it leaves for the slicing).
+    for (double divisor; (divisor = widened_mode_share(rung, r)) > 0;) {
+      ImpactScene shared = rung;
+      shared.mode_share_divisor = divisor;
+      try {
+        r = simulate_impact(basis_at(ladder.next_slices(), shared), shared);
+        rung = shared;
+      } catch (const InputError&) {
+        break;
+      }
+    }
+    if (ladder.add(std::move(r), rung)) return ladder.take_result();
   }
 }
 

@@ -264,6 +264,7 @@ void validate(const ImpactScene& scene, const ModalBasis& basis) {
   require_positive("mode_tolerance", scene.mode_tolerance);
   if (scene.step_accuracy != 0) require_positive("step_accuracy", scene.step_accuracy);
   if (scene.checked_step != 0) require_positive("checked_step", scene.checked_step);
+  if (!(scene.mode_share_divisor >= 1)) reject("mode_share_divisor", scene.mode_share_divisor, "must be at least 1");
   if (scene.accuracy != 0 && !(scene.accuracy >= min_accuracy && scene.accuracy <= max_accuracy))
     reject("accuracy", scene.accuracy, std::string("must be ") + accuracy_expected);
   require_positive("window", scene.integrator.window);

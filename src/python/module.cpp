@@ -57,10 +57,12 @@ std::shared_ptr<const ModalBasis> scene_basis(BatHandle& bat, const SceneArgs& a
 // each finer bat made once and kept on the bat (BatHandle::finer).
 ImpactResult run_within_accuracy(BatHandle& bat, const SceneArgs& args) {
   std::vector<std::shared_ptr<const ModalBasis>> held;  // the bases simulate_within_accuracy refers to
-  const auto basis_at = [&](int slices) -> const ModalBasis& {
+  const auto basis_at = [&](int slices, const ImpactScene& rung) -> const ModalBasis& {
     BatHandle* handle = &bat;
     while (handle->bat().slices() < slices) handle = handle->finer(args.theory);  // judge_level stops in time
-    return *held.emplace_back(scene_basis(*handle, args));
+    SceneArgs rung_args = args;
+    rung_args.scene = rung;
+    return *held.emplace_back(scene_basis(*handle, rung_args));
   };
   return simulate_within_accuracy(basis_at, bat.bat().slices(), args.theory, args.scene);
 }

@@ -18,19 +18,22 @@ class BasisCache {
  public:
   BasisCache(const BatDesign& design, BeamTheory theory, ImpactScene scene)
       : design_(design), theory_(theory), scene_(std::move(scene)) {}
-  const ModalBasis& at(int slices) {
-    auto found = bases_.find(slices);
+  const ModalBasis& at(int slices) { return at(slices, scene_); }
+  // For a rung of the scene (its mode_share_divisor maybe raised: SlicingLadder).
+  const ModalBasis& at(int slices, const ImpactScene& rung) {
+    const std::pair key(slices, rung.mode_share_divisor);
+    auto found = bases_.find(key);
     if (found != bases_.end()) return found->second;
     const Bat bat = bat_with_slices(design_, slices);
-    const ModeRequest request = impact_mode_request(scene_, compute_modes(bat, theory_, ModeRequest::rigid_only()));
-    return bases_.emplace(slices, compute_modes(bat, theory_, request)).first->second;
+    const ModeRequest request = impact_mode_request(rung, compute_modes(bat, theory_, ModeRequest::rigid_only()));
+    return bases_.emplace(key, compute_modes(bat, theory_, request)).first->second;
   }
 
  private:
   const BatDesign& design_;
   BeamTheory theory_;
   ImpactScene scene_;
-  std::map<int, ModalBasis> bases_;
+  std::map<std::pair<int, double>, ModalBasis> bases_;  // by slices and mode_share_divisor
 };
 
 // The least wall time of `repeats` calls, and the last result.
@@ -104,7 +107,7 @@ AccuracySweep run_accuracy_sweep(const BatDesign& design, int slices, BeamTheory
     ImpactScene stated = scene;
     stated.accuracy = accuracy;
     BasisCache cache(design, theory, stated);
-    const auto basis_at = [&](int n) -> const ModalBasis& { return cache.at(n); };
+    const auto basis_at = [&](int n, const ImpactScene& rung) -> const ModalBasis& { return cache.at(n, rung); };
     simulate_within_accuracy(basis_at, slices, theory, stated);  // solves the bases it needs, untimed
     const auto [r, seconds] =
         timed([&] { return simulate_within_accuracy(basis_at, slices, theory, stated); }, repeats);

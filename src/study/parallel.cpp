@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <numeric>
 #include <optional>
 #include <ranges>
 #include <set>
@@ -304,44 +305,57 @@ std::vector<GridPoint> finer_points(const Study& study, const GridPoint& p) {
   return finer;
 }
 
+// The points at a stated accuracy whose dropped modes took more than their share, run again with
+// that share divided (widened_mode_share), on bases solved as far as it asks (solved first, as a
+// chunk's are); `points` then say so. A point whose wider basis cannot be had keeps its result.
+void widen_mode_shares(ModalCache& cache, std::vector<GridPoint>& points,
+                                std::vector<ImpactResult>& results) {
+  std::vector<std::size_t> again(points.size());
+  std::iota(again.begin(), again.end(), std::size_t{0});
+  while (!again.empty()) {
+    std::vector<std::size_t> rerun;
+    std::vector<GridPoint> wider;
+    for (const std::size_t i : again)
+      if (const double divisor = widened_mode_share(points[i].scene, results[i]); divisor > 0) {
+        rerun.push_back(i);
+        wider.push_back(points[i]);
+        wider.back().scene.mode_share_divisor = divisor;
+      }
+    cache.prefetch(wider);
+    std::vector<const ModalBasis*> bases(wider.size());
+    std::vector<std::string> reasons(wider.size());
+    for (std::size_t k = 0; k < wider.size(); ++k) bases[k] = cache.get(wider[k], reasons[k]);
+#pragma omp parallel for schedule(dynamic)
+    for (std::size_t k = 0; k < wider.size(); ++k)
+      if (bases[k]) results[rerun[k]] = guarded_point(wider[k], bases[k], {}), points[rerun[k]] = wider[k];
+    again.clear();
+    for (std::size_t k = 0; k < wider.size(); ++k)
+      if (bases[k]) again.push_back(rerun[k]);
+  }
+}
+
 // The chunk's points at a stated accuracy (`results` holds their first rung, at_ladder_start):
 // each climbs its SlicingLadder, a rung for every point at once, each rung's bases solved before
 // its impacts, as a chunk's are, so that any ranks and threads give the same results.
 void refine_to_accuracy(const Study& study, ModalCache& cache, const std::vector<GridPoint>& grid,
                         std::vector<ImpactResult>& results) {
   std::vector<std::size_t> pending;
-  std::vector<SlicingLadder> ladders;
-  for (std::size_t i = 0; i < grid.size(); ++i) {
-    if (grid[i].kind != StudyKind::impact || !(grid[i].scene.accuracy > 0)) continue;
-    SlicingLadder& ladder = ladders.emplace_back(point_slices(study, grid[i]), grid[i].theory, grid[i].scene);
-    if (ladder.add(std::move(results[i]))) {
-      results[i] = ladder.take_result();
-      ladders.pop_back();
-    } else {
+  std::vector<GridPoint> rung;
+  std::vector<ImpactResult> rung_results;
+  for (std::size_t i = 0; i < grid.size(); ++i)
+    if (grid[i].kind == StudyKind::impact && grid[i].scene.accuracy > 0) {
       pending.push_back(i);
+      rung.push_back(grid[i]);
+      rung_results.push_back(std::move(results[i]));
     }
-  }
-  while (!pending.empty()) {
-    std::vector<GridPoint> rung(pending.size());
-    for (std::size_t k = 0; k < pending.size(); ++k) {
-      rung[k] = with_design_slices(grid[pending[k]], ladders[k].next_slices());
-      rung[k].scene = ladders[k].next_scene(rung[k].scene);
-    }
-    cache.prefetch(rung);
-    std::vector<const ModalBasis*> bases(rung.size());
-    std::vector<std::string> reasons(rung.size());
-    for (std::size_t k = 0; k < rung.size(); ++k) bases[k] = cache.get(rung[k], reasons[k]);
-    std::vector<char> done(pending.size(), 0);
-#pragma omp parallel for schedule(dynamic)
-    for (std::size_t k = 0; k < pending.size(); ++k) {
-      if (bases[k]) {
-        done[k] = ladders[k].add(guarded_point(rung[k], bases[k], reasons[k]));
-      } else {  // the finer rung cannot be solved: the finest so far, inaccurate, and why
-        ladders[k].stop(reasons[k]);
-        done[k] = 1;
-      }
-      if (done[k]) results[pending[k]] = ladders[k].take_result();
-    }
+  std::vector<SlicingLadder> ladders;
+  for (const std::size_t i : pending) ladders.emplace_back(point_slices(study, grid[i]), grid[i].theory, grid[i].scene);
+  std::vector<char> done(pending.size(), 0);
+  for (;;) {
+    widen_mode_shares(cache, rung, rung_results);
+    for (std::size_t k = 0; k < pending.size(); ++k)
+      if (!done[k] && (done[k] = ladders[k].add(std::move(rung_results[k]), rung[k].scene)))
+        results[pending[k]] = ladders[k].take_result();
     std::size_t kept = 0;
     for (std::size_t k = 0; k < pending.size(); ++k)
       if (!done[k]) {
@@ -350,6 +364,27 @@ void refine_to_accuracy(const Study& study, ModalCache& cache, const std::vector
       }
     pending.resize(kept);
     ladders.erase(ladders.begin() + static_cast<std::ptrdiff_t>(kept), ladders.end());
+    if (pending.empty()) return;
+    rung.resize(kept);
+    rung_results.assign(kept, ImpactResult{});
+    done.assign(kept, 0);
+    for (std::size_t k = 0; k < kept; ++k) {
+      rung[k] = with_design_slices(grid[pending[k]], ladders[k].next_slices());
+      rung[k].scene = ladders[k].next_scene(rung[k].scene);
+    }
+    cache.prefetch(rung);
+    std::vector<const ModalBasis*> bases(kept);
+    std::vector<std::string> reasons(kept);
+    for (std::size_t k = 0; k < kept; ++k) bases[k] = cache.get(rung[k], reasons[k]);
+#pragma omp parallel for schedule(dynamic)
+    for (std::size_t k = 0; k < kept; ++k)
+      if (bases[k]) rung_results[k] = guarded_point(rung[k], bases[k], reasons[k]);
+    for (std::size_t k = 0; k < kept; ++k)
+      if (!bases[k]) {  // the finer rung cannot be solved: the finest so far, inaccurate, and why
+        ladders[k].stop(reasons[k]);
+        results[pending[k]] = ladders[k].take_result();
+        done[k] = 1;
+      }
   }
 }
 
