@@ -44,7 +44,8 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 struct RankTally {
   double impact_seconds = 0;
   std::size_t past_radius = 0;
-  std::size_t failed = 0;  // points with status failed, each logged with its reason up to failures_logged
+  std::size_t failed = 0;      // points with status failed or inaccurate, each logged with its reason up to
+  std::size_t inaccurate = 0;  // failures_logged; of them, those that missed a stated accuracy
 };
 
 // Failed points logged one by one per rank; the rest are only counted, so that a study whose
@@ -60,7 +61,8 @@ void log_rank_summary(int rank, int solves, double solve_seconds, const RankTall
                  "meant for that",
                  rank, tally.past_radius);
   if (tally.failed > 0)
-    spdlog::warn("rank {}: {} points failed (status failed; {} of them with their reason above)", rank, tally.failed,
+    spdlog::warn("rank {}: {} points failed ({} with status failed, {} inaccurate; {} of them with their reason above)",
+                 rank, tally.failed, tally.failed - tally.inaccurate, tally.inaccurate,
                  std::min(tally.failed, failures_logged));
 }
 
@@ -457,8 +459,11 @@ std::vector<double> compute_chunk(const Study& study, const OutputLayout& layout
   tally.past_radius += past_radius;
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!failed[i]) continue;
+    const bool inaccurate = !lost[i] && results[i].status == CollisionStatus::inaccurate;
+    tally.inaccurate += inaccurate;
     if (tally.failed++ < failures_logged)
-      spdlog::warn("{} failed: {}", describe_point(study, points[i], grid[i]), reasons[i]);
+      spdlog::warn("{} {}: {}", describe_point(study, points[i], grid[i]), inaccurate ? "inaccurate" : "failed",
+                   reasons[i]);
   }
   return rows;
 }
