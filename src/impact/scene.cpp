@@ -114,41 +114,59 @@ void damp_beam_modes(double loss_factor, ModalContact& c) {
   c.damping_ratio = (c.omega.array() > 0).select(Eigen::VectorXd::Constant(c.count(), loss_factor / 2), 0.0);
 }
 
-// The bat held at a pivot, over every solved mode: its modes (columns over the free ones, the
-// first the rotation about the pivot) and frequencies. One per basis and pivot, kept per thread:
-// the rig strikes one held bat at every point of its scan.
+// A bat held at a pivot: its modes (columns over the free ones, the first the rotation about the
+// pivot) and frequencies, from the free modes' frequencies, their shapes at the pivot and its
+// compliance, all the constraint reads. The last one is kept per thread: the rig strikes one held
+// bat at every point of its scan, a study every point of a held bat, and the decomposition costs
+// more than an impact from a few tens of modes on.
 struct HeldBasis {
   Eigen::MatrixXd modes;
   Eigen::VectorXd omega;
 };
 
-const HeldBasis& held_basis(const ModalBasis& basis, double pivot) {
-  // The bat is known by its frequencies, its modes' shapes at the pivot and its compliance there, all
-  // the constraint reads.
+const HeldBasis& held_modes(const Eigen::VectorXd& omega, const Eigen::VectorXd& at_pivot, double compliance) {
   struct Entry {
     Eigen::VectorXd omega, at_pivot;
     double compliance = 0;
     HeldBasis held;
   };
   thread_local Entry cache;
-  const Eigen::VectorXd at_pivot = basis.shapes_at(pivot);
-  // The free modes left unsolved follow the pivot's force quasi-statically, as they follow the
-  // ball's: their static compliance there, in series with the segment's yield, is the residual
-  // flexibility of component mode synthesis (MacNeal, Comput. Struct. 1, 581 (1971)). Without it
-  // the pivot holds the bat too stiffly, more so as the slices add modes above the solved ones:
-  // R161 on the rig at 672 slices, v_f erred up to 35x auto's estimate near the handle.
-  const double compliance = basis.layout.point(pivot).compliance + basis.unsolved_compliance_at(pivot);
   const auto same = [](const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
     return a.size() == b.size() && (a.array() == b.array()).all();
   };
-  if (same(cache.omega, basis.omega) && same(cache.at_pivot, at_pivot) && cache.compliance == compliance)
+  if (same(cache.omega, omega) && same(cache.at_pivot, at_pivot) && cache.compliance == compliance)
     return cache.held;
-  ModalContact all;
-  all.omega = basis.omega;
-  all.psi = all.velocity0 = Eigen::VectorXd::Zero(basis.count());
-  cache.held.omega = constrained_modes(all, at_pivot, compliance, cache.held.modes).omega;
-  cache.omega = basis.omega, cache.at_pivot = at_pivot, cache.compliance = compliance;
+  ModalContact free;
+  free.omega = omega;
+  free.psi = free.velocity0 = Eigen::VectorXd::Zero(omega.size());
+  cache.held.omega = constrained_modes(free, at_pivot, compliance, cache.held.modes).omega;
+  cache.omega = omega, cache.at_pivot = at_pivot, cache.compliance = compliance;
   return cache.held;
+}
+
+// The free modes `free` (their shapes at the struck point and their swing) held at the pivot, as
+// constrained_modes holds them (the same bits), the decomposition taken from held_modes.
+ModalContact held_contact(const ModalContact& free, const Eigen::VectorXd& at_pivot, double compliance,
+                          Eigen::MatrixXd& modes) {
+  const HeldBasis& h = held_modes(free.omega, at_pivot, compliance);
+  modes = h.modes;
+  ModalContact held;
+  held.omega = h.omega;
+  held.psi = modes.transpose() * free.psi;
+  held.velocity0 = modes.transpose() * free.velocity0;
+  held.residual_compliance = free.residual_compliance;
+  return held;
+}
+
+// The bat held at a pivot over every solved mode, for auto. The free modes left unsolved follow
+// the pivot's force quasi-statically, as they follow the ball's: their static compliance there,
+// in series with the segment's yield, is the residual flexibility of component mode synthesis
+// (MacNeal, Comput. Struct. 1, 581 (1971)). Without it the pivot holds the bat too stiffly, more
+// so as the slices add modes above the solved ones: R161 on the rig at 672 slices, v_f erred up
+// to 35x auto's estimate near the handle.
+const HeldBasis& held_basis(const ModalBasis& basis, double pivot) {
+  const double compliance = basis.layout.point(pivot).compliance + basis.unsolved_compliance_at(pivot);
+  return held_modes(basis.omega, basis.shapes_at(pivot), compliance);
 }
 
 // auto on a held bat: the modes are chosen among the held bat's own, whose shapes at the impact
@@ -341,7 +359,7 @@ SceneGeometry scene_geometry(const ImpactScene& scene, const ModalBasis& basis) 
     if (scene.pivoted) {
       // A bat kept rigid is held rigidly, as it is struck (below).
       const double yield = scene.vibrational_modes != 0 ? basis.layout.point(g.pivot).compliance : 0;
-      g.contact = constrained_modes(free, basis.shapes_at(g.pivot)(kept), yield, g.held);
+      g.contact = held_contact(free, basis.shapes_at(g.pivot)(kept), yield, g.held);
       if (yield > 0) fold_fastest_mode(g.contact, g.held);
     }
   }
