@@ -270,7 +270,7 @@ ImpactScene rig() {
 
 // A stated accuracy's ladder on a bat file's design from its own slices, each slicing solving the
 // modes the scene's auto asks (or, with `widen` false, refusing a wider basis than the accuracy's
-// share first asks: widened_mode_share); the result must be ok unless `status` says otherwise.
+// share first asks: widened_scene); the result must be ok unless `status` says otherwise.
 ImpactResult within_accuracy(const char* file, const ImpactScene& scene, bool widen = true,
                              CollisionStatus status = CollisionStatus::ok) {
   BatSource source;
@@ -349,7 +349,7 @@ TEST_CASE("A stated accuracy widens the basis where the dropped modes take more 
   CHECK(narrow.total_error <= accuracy);
   const ImpactResult stopped = within_accuracy("studies/bats/r161.toml", r161, false, CollisionStatus::inaccurate);
   CHECK_THAT(stopped.message, Catch::Contains("leave nothing"));
-  // A rung over its share runs again with the share divided (widened_mode_share): both points
+  // A rung over its share runs again with the share divided (widened_scene): both points
   // end within the accuracy with the modes within their share, the torpedo's at no finer slicing.
   const ImpactResult wide = within_accuracy("studies/bats/torpedo.toml", torpedo);
   INFO("wide: slicing " << wide.slicing_error << ", modes " << wide.modes_error << ", " << wide.slices_used);

@@ -67,14 +67,18 @@ double auto_mode_tolerance(const ImpactScene& scene) {
   return scene.accuracy > 0 ? accuracy_budget(scene.accuracy).modes / scene.mode_share_divisor : scene.mode_tolerance;
 }
 
-double widened_mode_share(const ImpactScene& scene, const ImpactResult& r) {
-  if (!(scene.accuracy > 0) || scene.vibrational_modes != auto_modes || r.status != CollisionStatus::ok) return 0;
+std::optional<ImpactScene> widened_scene(const ImpactScene& scene, const ImpactResult& r) {
+  if (!(scene.accuracy > 0) || scene.vibrational_modes != auto_modes || r.status != CollisionStatus::ok) return {};
   const double share = accuracy_budget(scene.accuracy).modes;
-  if (!(r.modes_error > share) || scene.mode_share_divisor >= max_mode_share_divisor) return 0;
+  if (!(r.modes_error > share) || scene.mode_share_divisor >= max_mode_share_divisor) return {};
+  ImpactScene wider = scene;
   // At least a half-octave further (auto_mode_request's steps): a smaller step may ask the same
   // basis again.
   const double half_octave = 2 * std::sqrt(2.0);
-  return std::min(scene.mode_share_divisor * std::max(r.modes_error / share, half_octave), max_mode_share_divisor);
+  wider.mode_share_divisor =
+      std::min(scene.mode_share_divisor * std::max(r.modes_error / share, half_octave), max_mode_share_divisor);
+  if (scene.integrator.method == Method::exact) wider.checked_step = r.step_used;
+  return wider;
 }
 
 ImpactScene scene_for_accuracy(ImpactScene scene) {
@@ -163,12 +167,10 @@ ImpactResult simulate_within_accuracy(const BasisAtSlices& basis_at, int slices,
     ImpactResult r = simulate_impact(*basis, rung);
     // Dropped modes past their share: again on a wider basis, while one can be solved (else the
     // result stands, and the ladder says what it leaves for the slicing).
-    for (double divisor; (divisor = widened_mode_share(rung, r)) > 0;) {
-      ImpactScene shared = rung;
-      shared.mode_share_divisor = divisor;
+    for (std::optional<ImpactScene> wider; (wider = widened_scene(rung, r));) {
       try {
-        r = simulate_impact(basis_at(ladder.next_slices(), shared), shared);
-        rung = shared;
+        r = simulate_impact(basis_at(ladder.next_slices(), *wider), *wider);
+        rung = *wider;
       } catch (const InputError&) {
         break;
       }

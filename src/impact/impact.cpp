@@ -313,7 +313,7 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& stated)
   const bool drops_solved = g.kept.size() < static_cast<std::size_t>(basis.count());
   const bool reruns_if_caught_again = scene.vibrational_modes == auto_modes && drops_solved;
   // A scene whose modes' share was divided took its dropped modes past their share before (a
-  // coarser rung, or this one on a narrower basis: widened_mode_share): every solved mode at once.
+  // coarser rung, or this one on a narrower basis: widened_scene): every solved mode at once.
   const bool caught_again_before = reruns_if_caught_again && scene.mode_share_divisor > 1;
   Collision c;
   if (!caught_again_before)

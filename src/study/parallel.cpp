@@ -308,7 +308,7 @@ std::vector<GridPoint> finer_points(const Study& study, const GridPoint& p) {
 }
 
 // The points at a stated accuracy whose dropped modes took more than their share, run again with
-// that share divided (widened_mode_share), on bases solved as far as it asks (solved first, as a
+// that share divided (widened_scene), on bases solved as far as it asks (solved first, as a
 // chunk's are); `points` then say so. A point whose wider basis cannot be had keeps its result.
 void widen_mode_shares(ModalCache& cache, std::vector<GridPoint>& points,
                                 std::vector<ImpactResult>& results) {
@@ -318,10 +318,10 @@ void widen_mode_shares(ModalCache& cache, std::vector<GridPoint>& points,
     std::vector<std::size_t> rerun;
     std::vector<GridPoint> wider;
     for (const std::size_t i : again)
-      if (const double divisor = widened_mode_share(points[i].scene, results[i]); divisor > 0) {
+      if (std::optional<ImpactScene> scene = widened_scene(points[i].scene, results[i])) {
         rerun.push_back(i);
         wider.push_back(points[i]);
-        wider.back().scene.mode_share_divisor = divisor;
+        wider.back().scene = std::move(*scene);
       }
     cache.prefetch(wider);
     std::vector<const ModalBasis*> bases(wider.size());

@@ -40,6 +40,7 @@
 // (accuracy_budget) and is met by cutting the bat's design at N, 2N, 4N ... slices until the
 // finest result's slicing estimate is within its share (SlicingLadder).
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "sweetspot/bat/bat.hpp"
@@ -110,18 +111,20 @@ double slicing_allowance(double accuracy, double modes_error, double step_error)
 // stated accuracy the modes' share (scene_for_accuracy) over its mode_share_divisor.
 double auto_mode_tolerance(const ImpactScene& scene);
 
-// Where auto's dropped modes took more than their share of a stated accuracy, the divisor of that
-// share (ImpactScene::mode_share_divisor) to run the impact again with, so that the slicing is
-// left its part: the scene's times the estimate over the share (or 2^1.5, the cube of a half-octave
-// of reach, where that is more), at most max_mode_share_divisor.
-// 0 where `r` needs no such run (no stated accuracy, modes not auto, within the share, or the
-// divisor already at its most). On a complete basis auto keeps within the share; on a partial one
+// Where auto's dropped modes took more than their share of a stated accuracy in `scene`, the scene
+// to run the impact again in, so that the slicing is left its part: the share divided
+// (ImpactScene::mode_share_divisor) by the scene's divisor times the estimate over the share (or
+// 2^1.5, the cube of a half-octave of reach, where that is more), at most
+// max_mode_share_divisor; with exact stepping at the step `r` took, as the ladder's finer rungs
+// take it (the wider basis moves the pulse by the dropped modes' error). Nothing where `r` needs
+// no such run (no stated accuracy, modes not auto, within the share, or the divisor already at
+// its most). On a complete basis auto keeps within the share; on a partial one
 // the unsolved modes are dropped whatever their cost, and a ball the bat's vibration catches
 // again meets them at every contact, counted once per contact (impact.cpp): up to 3x the share
 // near R161's handle. The run again asks a basis solved further, whose unsolved tail's estimate
 // falls about as the cube of the reach (auto_solve_factor), and keeps every solved mode.
 inline constexpr double max_mode_share_divisor = 64;  // the reach 4x the first's, its solve 4-16x the cost
-double widened_mode_share(const ImpactScene& scene, const ImpactResult& r);
+std::optional<ImpactScene> widened_scene(const ImpactScene& scene, const ImpactResult& r);
 
 // The least and largest total accuracy that may be asked: below 1e-7 the round-off that a second
 // contact magnifies (docs/numerics.md) is as large as the error asked; above 0.1 a result says
@@ -147,7 +150,7 @@ class SlicingLadder {
   // chose and checked (ImpactScene::checked_step). The step's error hardly depends on the
   // slicing (the pulse moves by the slicing's error, 1e-4 or less), and checking it again at
   // every rung made the design study at 1e-4 2.2x slower. With the modes' share divided as the
-  // last rung's was (widened_mode_share): the finer rungs drop the same modes.
+  // last rung's was (widened_scene): the finer rungs drop the same modes.
   ImpactScene next_scene(ImpactScene scene) const;
   // The result at next_slices() of the scene `ran` (next_scene's, its mode_share_divisor maybe
   // raised); true when the ladder is done and result() is the answer.
@@ -176,7 +179,7 @@ class SlicingLadder {
 using BasisAtSlices = std::function<const ModalBasis&(int slices, const ImpactScene& scene)>;
 
 // One impact at a stated accuracy (scene.accuracy > 0), by a SlicingLadder; a rung caught again
-// past the modes' share runs again on a wider basis (widened_mode_share).
+// past the modes' share runs again on a wider basis (widened_scene).
 ImpactResult simulate_within_accuracy(const BasisAtSlices& basis_at, int slices, BeamTheory theory,
                                       const ImpactScene& scene);
 

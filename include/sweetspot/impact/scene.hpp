@@ -133,7 +133,7 @@ struct ImpactScene {
   double checked_step = 0;
   // With auto_modes at a stated accuracy: the modes' share is divided by this (>= 1). A rung whose
   // dropped modes took more than their share (a ball the bat's vibration catches again meets them
-  // at every contact) runs again with it raised by as much (widened_mode_share): on a basis solved
+  // at every contact) runs again with it raised by as much (widened_scene): on a basis solved
   // further (auto_mode_request), keeping every solved mode.
   double mode_share_divisor = 1;
   // The total relative exit-speed error allowed (error_estimates.hpp), > 0 or 0 for none: it
