@@ -231,8 +231,7 @@ void check_accuracy(const std::string& file, ImpactScene scene, double accuracy,
     const double reference = finest.vf + (finest.vf - coarse.vf) / 3;
     const ImpactResult r = simulate_within_accuracy(
         [&](int slices, const ImpactScene& rung) -> const ModalBasis& { return basis_for(slices, rung, false); }, n,
-        BeamTheory::timoshenko,
-        scene);
+        BeamTheory::timoshenko, scene);
     REQUIRE(r.status == CollisionStatus::ok);
     const double actual = std::abs(r.vf - reference) / error_scale(r.vf, scene.ball_speed);
     INFO(file << " z " << z << ", accuracy " << accuracy << ": vf " << r.vf << " at " << r.slices_used

@@ -313,17 +313,18 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& stated)
   const bool drops_solved = g.kept.size() < static_cast<std::size_t>(basis.count());
   const bool reruns_if_caught_again = scene.vibrational_modes == auto_modes && drops_solved;
   // A scene whose modes' share was divided took its dropped modes past their share before (a
-  // coarser rung, or this one on a narrower basis: widened_scene): every solved mode at once.
-  const bool caught_again_before = reruns_if_caught_again && scene.mode_share_divisor > 1;
+  // coarser rung, or this one on a narrower basis: widened_scene), mostly by a ball caught again:
+  // every solved mode at once.
+  const bool over_share_before = reruns_if_caught_again && scene.mode_share_divisor > 1;
   Collision c;
-  if (!caught_again_before)
+  if (!over_share_before)
     c = collide_with_patch(scene, basis, g, reruns_if_caught_again ? CaughtAgain::stop : CaughtAgain::check);
   // auto's estimate bounds what the dropped modes change over one pulse. A ball the bat's
   // vibration strikes again (a handle impact) sums their errors over the contacts, and the timing
   // of each later one can magnify them past it (up to 12x the tolerance on R161 and the torpedo):
   // the impact is then run again with every solved mode kept, the unsolved ones alone dropped,
   // and their estimate counted once per contact (README "Numerics").
-  if (caught_again_before || (reruns_if_caught_again && c.contacts > 1)) {
+  if (over_share_before || (reruns_if_caught_again && c.contacts > 1)) {
     ImpactScene every_solved = scene;
     every_solved.mode_tolerance = 0;  // nothing solved is dropped
     g = scene_geometry(every_solved, basis);

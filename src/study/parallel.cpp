@@ -310,8 +310,7 @@ std::vector<GridPoint> finer_points(const Study& study, const GridPoint& p) {
 // The points at a stated accuracy whose dropped modes took more than their share, run again with
 // that share divided (widened_scene), on bases solved as far as it asks (solved first, as a
 // chunk's are); `points` then say so. A point whose wider basis cannot be had keeps its result.
-void widen_mode_shares(ModalCache& cache, std::vector<GridPoint>& points,
-                                std::vector<ImpactResult>& results) {
+void widen_mode_shares(ModalCache& cache, std::vector<GridPoint>& points, std::vector<ImpactResult>& results) {
   std::vector<std::size_t> again(points.size());
   std::iota(again.begin(), again.end(), std::size_t{0});
   while (!again.empty()) {
@@ -329,7 +328,10 @@ void widen_mode_shares(ModalCache& cache, std::vector<GridPoint>& points,
     for (std::size_t k = 0; k < wider.size(); ++k) bases[k] = cache.get(wider[k], reasons[k]);
 #pragma omp parallel for schedule(dynamic)
     for (std::size_t k = 0; k < wider.size(); ++k)
-      if (bases[k]) results[rerun[k]] = guarded_point(wider[k], bases[k], {}), points[rerun[k]] = wider[k];
+      if (bases[k]) {
+        results[rerun[k]] = guarded_point(wider[k], bases[k], {});
+        points[rerun[k]] = wider[k];
+      }
     again.clear();
     for (std::size_t k = 0; k < wider.size(); ++k)
       if (bases[k]) again.push_back(rerun[k]);
