@@ -244,6 +244,14 @@ check(accurate["status"] == "ok" and accurate["total_error"] <= 1e-3 and accurat
 many = sweetspot.impacts(bat, z=[0.6, 0.7], ball_speed=40, cm_speed=10, accuracy=1e-3)
 check(many.vf.values[1] == accurate["vf"] and many.slices_used.values[1] == accurate["slices_used"],
       "impacts at an accuracy as impact")
+# Near the handle the ball is caught again and auto's unsolved modes pass their share: the rung
+# runs again on a wider basis (docs/numerics.md), which Python solves as the program does.
+handle = dict(z=0.405, ball_speed=30, e0=0.44, center=0.09, omega=51, accuracy=1e-3)
+widened = sweetspot.impact(bat, **handle)
+program_widened = program_json(["--z", "0.405", "--ball-speed", "30", "--e0", "0.44", "--center", "0.09",
+                                "--omega", "51", "--accuracy", "1e-3"])
+check(widened["status"] == "ok" and widened["contacts"] > 1 and widened["modes_error"] <= 2.5e-4 and
+      widened["vf"] == program_widened["vf"], f"a widened rung as the program's: {widened['modes_error']}")
 check(sweetspot.Bat.from_knots(*rod_args, density=np.float64(700), slices=np.int64(40)).slices == 40, "numpy args")
 
 # 4. The GIL released: two Python threads each run impacts; both finish with the same numbers.
