@@ -68,22 +68,25 @@ std::vector<int> kept_modes(const ImpactScene& scene, const ModalBasis& basis, S
 // any free modal system, and free flight stays exact. The stiffness is decomposed in a basis whose
 // first direction is psi_p: the spring then adds to one diagonal entry, and however stiff it is,
 // the other modes keep the accuracy of the rigid constraint's.
-ModalContact constrained_modes(const ModalContact& free, const Eigen::VectorXd& psi_pivot, double compliance,
-                               Eigen::MatrixXd& modes) {
-  const int n = free.count();
+// Its modes are columns over the free ones (omega, their shapes at the pivot psi_pivot), the first
+// the rotation about the pivot.
+struct HeldBasis {
+  Eigen::MatrixXd modes;
+  Eigen::VectorXd omega;
+};
+
+HeldBasis constrained_modes(const Eigen::VectorXd& omega, const Eigen::VectorXd& psi_pivot, double compliance) {
+  const int n = static_cast<int>(omega.size());
   const Eigen::HouseholderQR<Eigen::MatrixXd> qr(psi_pivot);
   const int held_count = compliance > 0 ? n : n - 1;
   const Eigen::MatrixXd basis = (qr.householderQ() * Eigen::MatrixXd::Identity(n, n)).rightCols(held_count);
-  Eigen::MatrixXd stiffness = basis.transpose() * free.omega.array().square().matrix().asDiagonal() * basis;
+  Eigen::MatrixXd stiffness = basis.transpose() * omega.array().square().matrix().asDiagonal() * basis;
   if (compliance > 0) stiffness(0, 0) += psi_pivot.squaredNorm() / compliance;
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(stiffness);
-  modes = basis * eig.eigenvectors();
-  ModalContact held;
+  HeldBasis held;
+  held.modes = basis * eig.eigenvectors();
   held.omega = eig.eigenvalues().cwiseMax(0.0).cwiseSqrt();
   held.omega(0) = 0;  // rotation about the pivot; round-off otherwise
-  held.psi = modes.transpose() * free.psi;
-  held.velocity0 = modes.transpose() * free.velocity0;
-  held.residual_compliance = free.residual_compliance;
   return held;
 }
 
@@ -114,16 +117,9 @@ void damp_beam_modes(double loss_factor, ModalContact& c) {
   c.damping_ratio = (c.omega.array() > 0).select(Eigen::VectorXd::Constant(c.count(), loss_factor / 2), 0.0);
 }
 
-// A bat held at a pivot: its modes (columns over the free ones, the first the rotation about the
-// pivot) and frequencies, from the free modes' frequencies, their shapes at the pivot and its
-// compliance, all the constraint reads. The last one is kept per thread: the rig strikes one held
-// bat at every point of its scan, a study every point of a held bat, and the decomposition costs
-// more than an impact from a few tens of modes on.
-struct HeldBasis {
-  Eigen::MatrixXd modes;
-  Eigen::VectorXd omega;
-};
-
+// constrained_modes, the last one kept per thread (known by all it reads): the rig strikes one
+// held bat at every point of its scan, a study every point of a held bat, and the decomposition
+// costs more than an impact from a few tens of modes on.
 const HeldBasis& held_modes(const Eigen::VectorXd& omega, const Eigen::VectorXd& at_pivot, double compliance) {
   struct Entry {
     Eigen::VectorXd omega, at_pivot;
@@ -136,16 +132,12 @@ const HeldBasis& held_modes(const Eigen::VectorXd& omega, const Eigen::VectorXd&
   };
   if (same(cache.omega, omega) && same(cache.at_pivot, at_pivot) && cache.compliance == compliance)
     return cache.held;
-  ModalContact free;
-  free.omega = omega;
-  free.psi = free.velocity0 = Eigen::VectorXd::Zero(omega.size());
-  cache.held.omega = constrained_modes(free, at_pivot, compliance, cache.held.modes).omega;
+  cache.held = constrained_modes(omega, at_pivot, compliance);
   cache.omega = omega, cache.at_pivot = at_pivot, cache.compliance = compliance;
   return cache.held;
 }
 
-// The free modes `free` (their shapes at the struck point and their swing) held at the pivot, as
-// constrained_modes holds them (the same bits), the decomposition taken from held_modes.
+// The free modes `free` (their shapes at the struck point and their swing) held at the pivot.
 ModalContact held_contact(const ModalContact& free, const Eigen::VectorXd& at_pivot, double compliance,
                           Eigen::MatrixXd& modes) {
   const HeldBasis& h = held_modes(free.omega, at_pivot, compliance);
