@@ -322,7 +322,8 @@ TEST_CASE("a journaled evaluation of another design is dropped with the later on
   REQUIRE(whole.exit_code == 0);
 
   const OptimizationProblem p = load_optimization(opt);
-  const std::size_t width = p.free.size() + 1 + p.constraints.size() + 1;
+  // design, objective, constraints, status, then slices_used and four error estimates
+  const std::size_t width = p.free.size() + 1 + p.constraints.size() + 1 + 5;
   const std::string out = dir / "forged.h5";
   {
     Journal journal(Journal::path_for(out), journal_key(p.text, {p.base_source, p.reference_source},
@@ -348,7 +349,8 @@ TEST_CASE("a journaled ok evaluation with a NaN constraint is dropped on reading
   const auto opt = dir.write("opt.toml", density_problem("[constraints]\nmass = { max = 2 }\n"));
   const OptimizationProblem p = load_optimization(opt);
   REQUIRE(p.constraints.size() == 1);
-  const std::size_t width = p.free.size() + 1 + p.constraints.size() + 1;
+  // design, objective, constraints, status, then slices_used and four error estimates
+  const std::size_t width = p.free.size() + 1 + p.constraints.size() + 1 + 5;
   const std::string out = dir / "nan.h5";
   {
     Journal journal(Journal::path_for(out), journal_key(p.text, {p.base_source, p.reference_source},
@@ -440,15 +442,35 @@ TEST_CASE("optimize at a stated accuracy scores each design as certify --accurac
   const OptimizationProblem problem = load_optimization(dir.write("opt.toml", problem_text + "accuracy = 1e-3\n"));
   const DesignEvaluation e = evaluate_design(problem, {0.0655}, serial_map);
   REQUIRE(e.status == EvaluationStatus::ok);
-  // Three slicings at least, and the slicing's estimate within its half of the accuracy.
+  // Three slicings at least; the modes' and step's estimates (the largest of the impacts') within
+  // their quarters on this barrel, the slicing's within what they leave, the total within the accuracy.
   CHECK(e.slices_used >= 4 * build_bat(design_at(problem, {0.0655})).slices());
-  CHECK(e.slicing_error <= 0.5e-3);
+  CHECK(e.modes_error > 0);
+  CHECK(e.modes_error <= 0.25e-3);
+  CHECK(e.step_error > 0);
+  CHECK(e.step_error <= 0.25e-3);
+  CHECK(e.slicing_error <= 1e-3 - e.modes_error - e.step_error);
+  CHECK(e.total_error == e.slicing_error + e.modes_error + e.step_error);
+  CHECK(e.total_error <= 1e-3);
   // The measure is certify's at the same accuracy when both end on the same slices; both within
   // the accuracy of the converged value, so within twice it of each other.
   CertifyOptions stated;
   stated.accuracy = 1e-3;
   const Certification c = certify(design_at(problem, {0.0655}), problem.standard, stated);
   CHECK(std::abs(e.constraints[0] - c.measure) <= 2e-3 * c.measure);
+  // The program writes what each design took and estimated.
+  const auto opt = dir.write("few.toml", problem_text + "accuracy = 1e-2\n[optimizer]\nmax_evaluations = 2\n");
+  const std::string out = dir / "few.h5";
+  const ProgramRun run = run_program("optimize '" + opt.string() + "' -o '" + out + "' --quiet");
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  const ProgramRun read = run_command(std::string(python) + " -c \"import h5py; f = h5py.File('" + out +
+                                     "'); s, m, t, a = (f[k][()] for k in ('slicing_error', 'modes_error', "
+                                     "'step_error', 'total_error')); print(len(a), (a == s + m + t).all(), "
+                                     "(a <= 1e-2).all(), (m > 0).all(), (t > 0).all(), (f['slices_used'][()] >= 4 * "
+                                     + std::to_string(build_bat(problem.base).slices()) + ").all())\"");
+  INFO(read.output);
+  CHECK(read.output == "2 True True True True True\n");
   const auto refused = [&](const std::string& model) {
     const auto file = dir.write("bad.toml", problem_text + model + "\n");
     return run_program("optimize '" + file.string() + "' -o '" + (dir.path / "bad.h5").string() + "'");

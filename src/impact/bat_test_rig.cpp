@@ -23,16 +23,17 @@ ImpactScene rig_scene(const RigSettings& rig, double z) {
   scene.pivoted = true;
   scene.vibrational_modes = rig.vibrational_modes;
   scene.accuracy = rig.accuracy;
+  scene.error_estimates = rig.accuracy > 0;  // the modes' and step's, free at a stated accuracy
   scene.integrator = rig.integrator;
   return scene;
 }
 
-RigMeasures rig_hit(const ModalBasis& basis, const RigSettings& rig, double z) {
-  const ImpactResult r = simulate_impact(basis, rig_scene(rig, z));
+ImpactResult rig_impact(const ModalBasis& basis, const RigSettings& rig, double z) {
+  ImpactResult r = simulate_impact(basis, rig_scene(rig, z));
   if (r.status != CollisionStatus::ok)
     throw std::runtime_error("the rig's hit at z = " + std::to_string(z) + " m ended " + to_string(r.status) +
                              (r.message.empty() ? "" : ": " + r.message));
-  return r.rig;
+  return r;
 }
 
 }  // namespace sweetspot

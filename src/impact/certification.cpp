@@ -124,16 +124,14 @@ Certification certify_at_slices(const BatDesign& design, const Standard& standar
   c.standard.ball = rig.ball, c.standard.ball_speed = rig.ball_speed, c.standard.pivot = rig.pivot;
   c.z_max = peak.x;
   c.measure = peak.value;
-  c.at_max = rig_hit(basis, rig, peak.x);
+  // The hit at the peak, whole: its measures, the wall's load, and at a stated accuracy its
+  // modes' and step's error estimates.
+  const ImpactResult hit = rig_impact(basis, rig, peak.x);
+  c.at_max = hit.rig;
   if (const WallMode* wall = basis.wall_at(peak.x)) {
     c.hoop_frequency = wall->frequency_hz();
     c.barrel_compression = barrel_compression(*wall);
   }
-  // The wall's load at the peak: the hit again, whole (rig_hit keeps the measures alone), with
-  // its modes' and step's error estimates at a stated accuracy.
-  ImpactScene peak_scene = rig_scene(rig, peak.x);
-  peak_scene.error_estimates = rig.accuracy > 0;
-  const ImpactResult hit = simulate_impact(basis, peak_scene);
   c.barrel_phi = hit.barrel_phi;
   c.barrel_compliance = hit.barrel_compliance;
   c.slices_used = basis.slices();

@@ -32,48 +32,73 @@ std::string point_name(const char* what, double z) {
   return text;
 }
 
+// A point's function: its value and its impact's error estimates.
+using PointFunction = std::function<PointValue(double)>;
+
 // Why f failed at z, f computed again on this worker alone (the map returns numbers only, and a
 // failure is rare): its exception's message, which names the collision's status ("the rig's hit at
 // z = 0.7 m ended no_separation"), or the value it gave.
-std::string failure_at(const std::function<double(double)>& f, double z, const char* what) {
+std::string failure_at(const PointFunction& f, double z, const char* what) {
   try {
-    const double v = f(z);
+    const double v = f(z).value;
     return point_name(what, z) + " gave " + std::to_string(v);
   } catch (const std::exception& e) {
     return e.what();
   }
 }
 
-// Values at `points` through the map; a point that throws or fails gives NaN, and any NaN
-// makes the evaluation unscorable, saying what was computed there and how it ended.
-std::vector<double> values_at(const std::vector<double>& points, const std::function<double(double)>& f,
-                              const PointMap& map, const char* what) {
-  std::vector<double> values = map(points.size(), [&](std::size_t i) {
+// A value made from points, with the largest of their impacts' error estimates: a maximum or a
+// weighted mean (weights summing to 1) of relative errors at most e errs by at most e relative to
+// the maximum, or the mean, itself.
+struct Scored {
+  double value = nan, modes_error = nan, step_error = nan;
+
+  void include(const PointValue& p) {
+    modes_error = std::fmax(modes_error, p.modes_error);  // fmax: an estimate not made (NaN) adds nothing
+    step_error = std::fmax(step_error, p.step_error);
+  }
+  void include(const Scored& s) { include(PointValue{s.value, s.modes_error, s.step_error}); }
+};
+
+// Values at `points` through the map, their estimates included in `scored`; a point that throws
+// or fails gives NaN, and any NaN makes the evaluation unscorable, saying what was computed there
+// and how it ended.
+std::vector<double> values_at(const std::vector<double>& points, const PointFunction& f, const PointMap& map,
+                              const char* what, Scored& scored) {
+  const std::vector<PointValue> mapped = map(points.size(), [&](std::size_t i) {
     try {
       return f(points[i]);
     } catch (const std::exception&) {
-      return nan;
+      return PointValue{};
     }
   });
-  for (std::size_t i = 0; i < values.size(); ++i)
-    if (!std::isfinite(values[i])) throw Unscorable(failure_at(f, points[i], what));
+  std::vector<double> values;
+  for (std::size_t i = 0; i < mapped.size(); ++i) {
+    if (!std::isfinite(mapped[i].value)) throw Unscorable(failure_at(f, points[i], what));
+    values.push_back(mapped[i].value);
+    scored.include(mapped[i]);
+  }
   return values;
 }
 
 // The maximum of f between from and to as scan_maximum finds it, its uniform samples computed
 // through the map (bitwise the values scan_maximum would compute itself), the golden section
-// after them on every worker alike.
-ScanMaximum mapped_scan_maximum(const std::function<double(double)>& f, double from, double to, double step,
-                                double tolerance, const PointMap& map, const char* what) {
+// after them on every worker alike; with the largest estimates of every point computed.
+Scored mapped_scan_maximum(const PointFunction& f, double from, double to, double step, double tolerance,
+                           const PointMap& map, const char* what) {
+  Scored scored;
   const std::vector<double> points = scan_points(from, to, step);
-  const std::vector<double> values = values_at(points, f, map, what);
+  const std::vector<double> values = values_at(points, f, map, what, scored);
   const auto sampled_or_computed = [&](double x) {
     const auto at = std::ranges::find(points, x);
-    const double v = at != points.end() ? values[static_cast<std::size_t>(at - points.begin())] : f(x);
-    if (!std::isfinite(v)) throw Unscorable(failure_at(f, x, what));
-    return v;
+    if (at != points.end()) return values[static_cast<std::size_t>(at - points.begin())];
+    const PointValue v = f(x);
+    if (!std::isfinite(v.value)) throw Unscorable(failure_at(f, x, what));
+    scored.include(v);
+    return v.value;
   };
-  return scan_maximum(sampled_or_computed, from, to, step, tolerance);
+  scored.value = scan_maximum(sampled_or_computed, from, to, step, tolerance).value;
+  return scored;
 }
 
 // The player's swing with this design: scaled from the reference bat's by equal effort.
@@ -94,51 +119,60 @@ ImpactResult impact_at(const ModalBasis& basis, ImpactScene scene, double z) {
 }
 
 // The batted-ball speed (the flexible model's v_f) at z.
-double batted_ball_speed(const ModalBasis& basis, const ImpactScene& scene, double z) {
-  return impact_at(basis, scene, z).vf;
+PointValue batted_ball_speed(const ModalBasis& basis, const ImpactScene& scene, double z) {
+  const ImpactResult r = impact_at(basis, scene, z);
+  return {r.vf, r.modes_error, r.step_error};
 }
 
-// The batted ball's carry from the impact at z, in the trajectory calculator's air (flight.hpp).
-double carry(const ModalBasis& basis, const ImpactScene& scene, double z) {
-  return batted_flight(impact_at(basis, scene, z).launch, Air{}).distance;
+// The batted ball's carry from the impact at z, in the trajectory calculator's air (flight.hpp),
+// with the impact's estimates doubled: a carry in vacuum goes as the launch speed squared, and
+// air makes it less sensitive (d ln carry / d ln speed 1.0-1.8 over 20-50 m/s launches).
+PointValue carry(const ModalBasis& basis, const ImpactScene& scene, double z) {
+  const ImpactResult r = impact_at(basis, scene, z);
+  return {batted_flight(r.launch, Air{}).distance, 2 * r.modes_error, 2 * r.step_error};
 }
 
-double objective_value(const OptimizationProblem& problem, const ModalBasis& basis, const ImpactScene& scene,
+Scored objective_value(const OptimizationProblem& problem, const ModalBasis& basis, const ImpactScene& scene,
                        const PointMap& map) {
   const ObjectiveSpec& o = problem.objective;
   const auto bbs = [&](double z) { return batted_ball_speed(basis, scene, z); };
   switch (o.kind) {
     case ObjectiveKind::peak_bbs:
-      return mapped_scan_maximum(bbs, o.z_from, o.z_to, o.z_step, o.tolerance, map, "the impact").value;
+      return mapped_scan_maximum(bbs, o.z_from, o.z_to, o.z_step, o.tolerance, map, "the impact");
     case ObjectiveKind::peak_distance: {
       const auto distance = [&](double z) { return carry(basis, scene, z); };
-      return mapped_scan_maximum(distance, o.z_from, o.z_to, o.z_step, o.tolerance, map, "the impact").value;
+      return mapped_scan_maximum(distance, o.z_from, o.z_to, o.z_step, o.tolerance, map, "the impact");
     }
     case ObjectiveKind::sweet_spot_width: {
+      Scored scored;
       const std::vector<double> z = scan_points(o.z_from, o.z_to, o.z_step);
-      const double width = sweet_spot(z, values_at(z, bbs, map, "the impact"), o.fraction).width;
-      if (!std::isfinite(width))
+      scored.value = sweet_spot(z, values_at(z, bbs, map, "the impact", scored), o.fraction).width;
+      if (!std::isfinite(scored.value))
         throw Unscorable("the sweet spot is not inside the z scan (its peak at an end, or its zone running off it)");
-      return width;
+      return scored;
     }
     case ObjectiveKind::mean_bbs: {
-      const std::vector<double> vf = values_at(o.z, bbs, map, "the impact");
-      double mean = 0;
-      for (std::size_t i = 0; i < vf.size(); ++i) mean += o.weights[i] * vf[i];
-      return mean;
+      Scored scored;
+      const std::vector<double> vf = values_at(o.z, bbs, map, "the impact", scored);
+      scored.value = 0;
+      for (std::size_t i = 0; i < vf.size(); ++i) scored.value += o.weights[i] * vf[i];
+      return scored;
     }
   }
   throw std::logic_error("objective_value: unknown objective");
 }
 
-// The standard's measure at its maximum over the barrel, as certify finds it.
-double rig_maximum(const OptimizationProblem& problem, const ModalBasis& basis, double length, const PointMap& map) {
+// The standard's measure at its maximum over the barrel, as certify finds it. A measure's
+// relative error is at most its hit's exit speed's (certification.hpp).
+Scored rig_maximum(const OptimizationProblem& problem, const ModalBasis& basis, double length, const PointMap& map) {
   const RigSettings rig = certification_rig(problem.standard, problem.rig, length);
   const BarrelScan& scan = problem.rig.scan;
-  const auto measure = [&](double z) { return measure_value(rig_hit(basis, rig, z), problem.standard.measure); };
+  const auto measure = [&](double z) {
+    const ImpactResult r = rig_impact(basis, rig, z);
+    return PointValue{measure_value(r.rig, problem.standard.measure), r.modes_error, r.step_error};
+  };
   return mapped_scan_maximum(measure, length - scan.far_from_end, length - scan.near_end, scan.step, scan.tolerance,
-                             map, "the rig's hit")
-      .value;
+                             map, "the rig's hit");
 }
 
 double shape_quantity(Quantity q, const BatDesign& design, const MassProperties& exact) {
@@ -154,6 +188,11 @@ double shape_quantity(Quantity q, const BatDesign& design, const MassProperties&
   throw std::logic_error("shape_quantity: the rig's measure is no number of the shape");
 }
 
+// Whether a constraint asks the rig's measure.
+bool asks_measure(const OptimizationProblem& problem) {
+  return std::ranges::any_of(problem.constraints, [](const Constraint& c) { return c.quantity == Quantity::measure; });
+}
+
 // The impact points an evaluation strikes at its scan's samples (the golden section's points
 // lie between them), and the rig's hits when a constraint asks for its measure.
 std::vector<ImpactScene> sampled_scenes(const OptimizationProblem& problem, const ImpactScene& scene, double length) {
@@ -163,7 +202,7 @@ std::vector<ImpactScene> sampled_scenes(const OptimizationProblem& problem, cons
     scenes.push_back(scene);
     scenes.back().z = z;
   }
-  if (std::ranges::any_of(problem.constraints, [](const Constraint& c) { return c.quantity == Quantity::measure; })) {
+  if (asks_measure(problem)) {
     const RigSettings rig = certification_rig(problem.standard, problem.rig, length);
     const BarrelScan& scan = problem.rig.scan;
     for (const double z : scan_points(length - scan.far_from_end, length - scan.near_end, scan.step))
@@ -193,7 +232,10 @@ ModalBasis design_modes(const OptimizationProblem& problem, const Bat& bat, cons
 // The design's objective and (NaN when no constraint asks it) the rig's measure, on the design cut
 // into `slices` slices (0: its own, or the model's).
 struct Scores {
-  double objective = nan, measure = nan;
+  Scored objective, measure;
+
+  double modes_error() const { return std::fmax(objective.modes_error, measure.modes_error); }
+  double step_error() const { return std::fmax(objective.step_error, measure.step_error); }
 };
 
 Scores scores_at(const OptimizationProblem& problem, const BatDesign& design, const ImpactScene& scene, int slices,
@@ -204,8 +246,7 @@ Scores scores_at(const OptimizationProblem& problem, const BatDesign& design, co
   const ModalBasis basis = design_modes(problem, bat, sampled_scenes(problem, scene, design.length));
   Scores s;
   s.objective = objective_value(problem, basis, scene, map);
-  if (std::ranges::any_of(problem.constraints, [](const Constraint& c) { return c.quantity == Quantity::measure; }))
-    s.measure = rig_maximum(problem, basis, design.length, map);
+  if (asks_measure(problem)) s.measure = rig_maximum(problem, basis, design.length, map);
   return s;
 }
 
@@ -216,34 +257,48 @@ double relative_slicing_error(const std::vector<double>& values) {
   return slicing_error(values, values.size() - 1) / std::abs(values.back());
 }
 
+std::string number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", v);
+  return text;
+}
+
 // The scores at a stated accuracy: the design cut at its own slices N, 2N, 4N ..., at least three
 // slicings and then one more while the objective's or the measure's Richardson estimate exceeds
-// the slicing's share; the finest are the answer. A design the slices cannot meet it for is
+// what the modes and the step leave of the accuracy (slicing_allowance, as certify --accuracy and
+// an impact's ladder); the finest are the answer. A design the slices cannot meet it for is
 // unscorable.
 Scores scores_within_accuracy(const OptimizationProblem& problem, const BatDesign& design, const ImpactScene& scene,
                               const PointMap& map, DesignEvaluation& e) {
-  const double share = accuracy_budget(problem.model.accuracy).slicing;
+  const double accuracy = problem.model.accuracy;
   std::vector<double> objectives, measures;
   for (int slices = build_bat(design).slices();; slices *= slicing_refinement) {
     const Scores s = scores_at(problem, design, scene, slices, map);
-    objectives.push_back(s.objective);
-    measures.push_back(s.measure);
+    objectives.push_back(s.objective.value);
+    measures.push_back(s.measure.value);
     const bool can_double = can_refine(slices, problem.model.theory);
     if (objectives.size() < 3 && can_double) continue;
     e.slices_used = slices;
     e.slicing_error = std::max(relative_slicing_error(objectives), relative_slicing_error(measures));
-    if (e.slicing_error <= share) return s;
+    e.modes_error = s.modes_error();
+    e.step_error = s.step_error();
+    e.total_error = e.slicing_error + e.modes_error + e.step_error;
+    const double allowance = slicing_allowance(accuracy, e.modes_error, e.step_error);
+    if (e.slicing_error <= allowance) return s;
+    if (!(allowance > 0))
+      throw Unscorable("accuracy " + number(accuracy) + ": the modes' and the step's estimated errors (" +
+                       number(e.modes_error) + " and " + number(e.step_error) + ") leave nothing of it for the slicing");
     if (!can_double)
-      throw Unscorable("accuracy " + std::to_string(problem.model.accuracy) + " needs the design cut finer than " +
-                       std::to_string(slices) + " slices (its slicing estimate there " +
-                       std::to_string(e.slicing_error) + ")");
+      throw Unscorable("accuracy " + number(accuracy) + " needs the design cut finer than " + std::to_string(slices) +
+                       " slices (its slicing estimate there " + number(e.slicing_error) +
+                       ", where the modes and the step leave it " + number(allowance) + ")");
   }
 }
 
 }  // namespace
 
-std::vector<double> serial_map(std::size_t count, const std::function<double(std::size_t)>& value) {
-  std::vector<double> values(count);
+std::vector<PointValue> serial_map(std::size_t count, const std::function<PointValue(std::size_t)>& value) {
+  std::vector<PointValue> values(count);
   for (std::size_t i = 0; i < count; ++i) values[i] = value(i);
   return values;
 }
@@ -269,12 +324,13 @@ DesignEvaluation evaluate_design(const OptimizationProblem& problem, const std::
     scene.oblique = problem.player.oblique;
     scene.vibrational_modes = problem.model.vibrational_modes;
     scene.accuracy = problem.model.accuracy;
+    scene.error_estimates = scene.accuracy > 0;  // the modes' and step's, free at a stated accuracy
     const Scores s = problem.model.accuracy > 0 ? scores_within_accuracy(problem, design, scene, map, e)
                                                 : scores_at(problem, design, scene, 0, map);
-    e.objective = s.objective;
+    e.objective = s.objective.value;
     const auto measure = std::ranges::find(problem.constraints, Quantity::measure, &Constraint::quantity);
     if (measure != problem.constraints.end())
-      e.constraints[static_cast<std::size_t>(measure - problem.constraints.begin())] = s.measure;
+      e.constraints[static_cast<std::size_t>(measure - problem.constraints.begin())] = s.measure.value;
   } catch (const std::exception& failure) {  // Unscorable, or an InputError of a rig off this bat
     e.status = EvaluationStatus::failed;
     e.message = failure.what();

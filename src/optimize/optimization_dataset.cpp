@@ -85,7 +85,7 @@ void constraint_variables(const OptimizationProblem& p, std::ptrdiff_t best, con
 }
 
 void evaluation_variables(const OptimizationProblem& p, const OptimizationHistory& h, Dataset& d) {
-  std::vector<double> design, objective, slices_used, slicing_error;
+  std::vector<double> design, objective, slices_used, slicing_error, modes_error, step_error, total_error;
   std::vector<std::int32_t> status, is_feasible;
   std::vector<std::string> messages;
   bool any_failed = false;
@@ -94,6 +94,9 @@ void evaluation_variables(const OptimizationProblem& p, const OptimizationHistor
     objective.push_back(e.objective);
     slices_used.push_back(e.slices_used);
     slicing_error.push_back(e.slicing_error);
+    modes_error.push_back(e.modes_error);
+    step_error.push_back(e.step_error);
+    total_error.push_back(e.total_error);
     status.push_back(static_cast<std::int32_t>(e.status));
     is_feasible.push_back(feasible(p, e) ? 1 : 0);
     messages.push_back(e.message);
@@ -112,6 +115,13 @@ void evaluation_variables(const OptimizationProblem& p, const OptimizationHistor
     d.variables.push_back({"slicing_error", "1",
                            "relative slicing error estimate: the larger of the objective's and the measure's",
                            {"evaluation"}, slicing_error, {}, {}});
+    d.variables.push_back({"modes_error", "1",
+                           "relative error estimate of the dropped modes: the largest of the design's impacts'",
+                           {"evaluation"}, modes_error, {}, {}});
+    d.variables.push_back({"step_error", "1",
+                           "relative error estimate of the time step: the largest of the design's impacts'",
+                           {"evaluation"}, step_error, {}, {}});
+    d.variables.push_back({"total_error", "1", "the sum of the three estimates", {"evaluation"}, total_error, {}, {}});
   }
   if (any_failed) d.variables.push_back({"failure", "", "why an evaluation failed", {"evaluation"}, messages, {}, {}});
 }

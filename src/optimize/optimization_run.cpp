@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 
+#include "sweetspot/bat/bat.hpp"
 #include "sweetspot/bat/bat_design_text.hpp"
 #include "sweetspot/optimize/optimization_dataset.hpp"
 #include "sweetspot/optimize/optimizer.hpp"
@@ -27,15 +28,22 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// ---- A journal row: the design's bits, its objective, its constraints, its status ----------
+// ---- A journal row: the design's bits, its objective, its constraints, its status, and what a
+// stated accuracy chose and estimated (slices_used, the slicing's, modes', step's and total errors)
 
-std::size_t row_width(const OptimizationProblem& p) { return p.free.size() + 1 + p.constraints.size() + 1; }
+constexpr std::size_t accuracy_fields = 5;
+
+std::size_t row_width(const OptimizationProblem& p) {
+  return p.free.size() + 1 + p.constraints.size() + 1 + accuracy_fields;
+}
 
 std::vector<double> to_row(const DesignEvaluation& e) {
   std::vector<double> row = e.x;
   row.push_back(e.objective);
   row.insert(row.end(), e.constraints.begin(), e.constraints.end());
   row.push_back(static_cast<double>(e.status));
+  row.insert(row.end(), {static_cast<double>(e.slices_used), e.slicing_error, e.modes_error, e.step_error,
+                         e.total_error});
   return row;
 }
 
@@ -47,6 +55,9 @@ DesignEvaluation from_row(const OptimizationProblem& p, const double* row) {
   e.constraints.assign(row + n + 1, row + n + 1 + m);
   e.status = static_cast<EvaluationStatus>(static_cast<int>(row[n + 1 + m]));
   if (e.status != EvaluationStatus::ok) e.message = "failed (as journaled)";
+  const double* chosen = row + n + 2 + m;
+  e.slices_used = static_cast<int>(chosen[0]);
+  e.slicing_error = chosen[1], e.modes_error = chosen[2], e.step_error = chosen[3], e.total_error = chosen[4];
   return e;
 }
 
@@ -60,6 +71,10 @@ std::string row_problem(const OptimizationProblem& p, const double* row) {
   if (status == 0 && !std::isfinite(row[n])) return "an ok evaluation without an objective";
   for (std::size_t j = 0; j < m; ++j)
     if (status == 0 && std::isnan(row[n + 1 + j])) return "an ok evaluation with a NaN constraint";
+  const double slices = row[n + 2 + m];
+  if (!(slices >= 0 && slices <= max_slices && slices == std::floor(slices))) return "a slice count out of range";
+  for (std::size_t k = 1; k < accuracy_fields; ++k)
+    if (row[n + 2 + m + k] < 0) return "a negative error estimate";
   return "";
 }
 

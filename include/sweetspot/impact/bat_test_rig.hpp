@@ -6,6 +6,7 @@
 #include "sweetspot/bat/modes.hpp"
 #include "sweetspot/contact/ball.hpp"
 #include "sweetspot/contact/collision.hpp"
+#include "sweetspot/impact/impact.hpp"
 #include "sweetspot/impact/rig_measures.hpp"
 #include "sweetspot/impact/scene.hpp"
 
@@ -33,8 +34,12 @@ double model_moi_about(const ModalBasis& basis, double z);
 // The rig striking the bat at z: a pivoted scene at rest.
 ImpactScene rig_scene(const RigSettings& rig, double z);
 
-// The rig's measures for a hit at z. Throws InputError for a bad scene (validate()), and
+// The rig's hit at z, whole. Throws InputError for a bad scene (validate()), and
 // std::runtime_error naming z and the status when the collision does not end ok.
-RigMeasures rig_hit(const ModalBasis& basis, const RigSettings& rig, double z);
+ImpactResult rig_impact(const ModalBasis& basis, const RigSettings& rig, double z);
+// Its measures alone.
+inline RigMeasures rig_hit(const ModalBasis& basis, const RigSettings& rig, double z) {
+  return rig_impact(basis, rig, z).rig;
+}
 
 }  // namespace sweetspot

@@ -14,11 +14,21 @@
 
 namespace sweetspot {
 
+// What one point of an evaluation gives: its number (a batted-ball speed, a carry, the rig's
+// measure) and its impact's estimated relative errors from the dropped modes and the time step
+// (error_estimates.hpp; NaN where not estimated: without a stated accuracy). NaN value: failed.
+struct PointValue {
+  double value = std::numeric_limits<double>::quiet_NaN();
+  double modes_error = std::numeric_limits<double>::quiet_NaN();
+  double step_error = std::numeric_limits<double>::quiet_NaN();
+};
+
 // Computes value(0), ..., value(count - 1) and returns them in that order. Called alike on every
 // worker that shares an evaluation (every MPI rank); value is safe to call from several threads.
-using PointMap = std::function<std::vector<double>(std::size_t count, const std::function<double(std::size_t)>& value)>;
+using PointMap =
+    std::function<std::vector<PointValue>(std::size_t count, const std::function<PointValue(std::size_t)>& value)>;
 // One after the other, on the calling thread.
-std::vector<double> serial_map(std::size_t count, const std::function<double(std::size_t)>& value);
+std::vector<PointValue> serial_map(std::size_t count, const std::function<PointValue(std::size_t)>& value);
 
 enum class EvaluationStatus {
   ok,
@@ -33,10 +43,15 @@ struct DesignEvaluation {
   std::vector<double> constraints;  // each constraint's quantity, in its units; NaN if unknown
   EvaluationStatus status = EvaluationStatus::ok;
   std::string message;              // why it failed
-  // At a stated accuracy: the slices the design was scored at, and the larger relative slicing
-  // estimate of its objective and measure there.
+  // At a stated accuracy: the slices the design was scored at, and the estimated relative errors
+  // there: the slicing's (Richardson, the larger of the objective's and the measure's), the
+  // dropped modes' and the step's (the largest of the impacts the objective and the measure were
+  // made from), and their sum.
   int slices_used = 0;
   double slicing_error = std::numeric_limits<double>::quiet_NaN();
+  double modes_error = std::numeric_limits<double>::quiet_NaN();
+  double step_error = std::numeric_limits<double>::quiet_NaN();
+  double total_error = std::numeric_limits<double>::quiet_NaN();
 };
 
 // Evaluates the design at x. Never throws for a design the bounds allow (load_optimization

@@ -7,9 +7,11 @@
 #include <functional>
 #include <vector>
 
+#include "sweetspot/optimize/evaluation.hpp"
+
 namespace sweetspot {
 
 // Collective: every rank of MPI_COMM_WORLD calls it with the same count.
-std::vector<double> mpi_map(std::size_t count, const std::function<double(std::size_t)>& value);
+std::vector<PointValue> mpi_map(std::size_t count, const std::function<PointValue(std::size_t)>& value);
 
 }  // namespace sweetspot
