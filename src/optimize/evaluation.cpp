@@ -57,7 +57,6 @@ struct Scored {
     modes_error = std::fmax(modes_error, p.modes_error);  // fmax: an estimate not made (NaN) adds nothing
     step_error = std::fmax(step_error, p.step_error);
   }
-  void include(const Scored& s) { include(PointValue{s.value, s.modes_error, s.step_error}); }
 };
 
 // Values at `points` through the map, their estimates included in `scored`; a point that throws
