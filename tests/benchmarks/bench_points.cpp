@@ -118,10 +118,9 @@ double repeated_seconds(const ModalBasis& basis, int modes) {
   return median(times);
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  const Bat bat = load_bat(argc > 1 ? argv[1] : SWEETSPOT_R161);
+// The whole benchmark on `bat_file`, or the setting whose name begins with `only` alone.
+void run(const char* bat_file, const std::string& only) {
+  const Bat bat = load_bat(bat_file);
   // The dense solve: every mode, from which modes = auto picks what each impact needs.
   const ModalBasis all = compute_modes(bat, BeamTheory::timoshenko);
   const ModalBasis rigid = compute_modes(bat, BeamTheory::timoshenko, ModeRequest::rigid_only());
@@ -137,7 +136,6 @@ int main(int argc, char** argv) {
               z_count * speed_count, z_count, speed_count, repeated_scenes(0).size());
   std::printf("%-28s %12s %16s %12s %16s  %s\n", "settings", "unique us", "unique /s/core", "repeated us",
               "repeated /s/core", "checksum (unique)");
-  const std::string only = argc > 2 ? argv[2] : "";
   for (const Setting& s : settings) {
     if (!only.empty() && s.name.rfind(only, 0) != 0) continue;
     Checksum checksum;
@@ -145,5 +143,23 @@ int main(int argc, char** argv) {
     const double repeated = repeated_seconds(*s.basis, s.modes);
     std::printf("%-28s %12.2f %16.0f %12.2f %16.0f  %016llx\n", s.name.c_str(), 1e6 * unique, 1 / unique,
                 1e6 * repeated, 1 / repeated, static_cast<unsigned long long>(checksum.value));
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string first = argc > 1 ? argv[1] : "", only = argc > 2 ? argv[2] : "";
+  const bool known = only.empty() || only == "default" || only == "all" || only == "rigid";
+  const bool wrong = argc > 3 || !known;
+  if (wrong || first == "-h" || first == "--help") {
+    std::fprintf(wrong ? stderr : stdout, "usage: bench_points [BAT_FILE [default|all|rigid]]\n");
+    return wrong ? 2 : 0;
+  }
+  try {  // a bad bat file: one line and status 2, as the program says it
+    run(argc > 1 ? argv[1] : SWEETSPOT_R161, only);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_points: %s\n", e.what());
+    return 2;
   }
 }
