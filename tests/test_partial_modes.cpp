@@ -133,6 +133,31 @@ TEST_CASE("The flexibility is the sum of psi^2 / omega^2 over every vibrational 
       // The same flexibility, from rigid modes that differ in the last bit (sparse or dense M).
       CHECK(std::abs(part.vibrational_compliance_at(z) - full.vibrational_compliance_at(z)) <= 1e-10 * sum);
       CHECK(std::abs(part.unsolved_compliance_at(z) - tail) <= tolerance * sum);
+      CHECK(std::abs(part.unsolved_cross_compliance(z, z) - tail) <= tolerance * sum);
+    }
+  }
+}
+
+TEST_CASE("What the unsolved modes share between two points is their sum over the full basis", "[partial_modes]") {
+  for (const Case& c : cases()) {
+    const auto [bat, full, part] = solve(c);
+    INFO(c.bat << ", " << to_string(c.theory) << ", N = " << c.slices);
+    CHECK(full.unsolved_cross_compliance(0.15, 0.7) == 0);
+    // A rig's pivot (6 in from the knob, between slice centres) against the bat from end to end.
+    for (const double pivot : {0.1524, bat.length / 2}) {
+      const Eigen::VectorXd at_pivot = full.shapes_at(pivot);
+      const double scale = part.unsolved_compliance_at(pivot);
+      for (double z = 0; z <= bat.length; z += bat.length / 53) {
+        const Eigen::VectorXd s = full.shapes_at(z);
+        double tail = 0;
+        for (int n = part.count(); n < full.count(); ++n) tail += s(n) * at_pivot(n) / (full.omega(n) * full.omega(n));
+        INFO("pivot " << pivot << ", z = " << z << ": tail " << tail << ", unsolved at the pivot " << scale);
+        const double tolerance = 1e-10 + 2 * roundoff(full, 2);
+        CHECK(std::abs(part.unsolved_cross_compliance(z, pivot) - tail) <=
+              tolerance * full.vibrational_compliance_at(pivot));
+        CHECK(part.unsolved_cross_compliance(z, pivot) == Approx(part.unsolved_cross_compliance(pivot, z))
+                                                               .margin(1e-12 * full.vibrational_compliance_at(pivot)));
+      }
     }
   }
 }

@@ -10,10 +10,14 @@
 
 namespace sweetspot {
 
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
 namespace {
 
-using Eigen::MatrixXd;
 constexpr int kd = beam_bandwidth;
+
+}  // namespace
 
 // The beam held at the knob: K without its first two degrees of freedom, positive definite,
 // Cholesky-factored in LAPACK's lower band storage (l[i - j + j (kd + 1)] = L(i, j)).
@@ -55,23 +59,26 @@ class HeldBeam {
   std::vector<double> l_;
 };
 
-}  // namespace
-
-MatrixXd vibrational_flexibility_band(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass,
-                                      const MatrixXd& rigid) {
-  const HeldBeam held(s.stiffness);
-  const MatrixXd mass_rigid = mass * rigid;
-  const MatrixXd v = held.displacement(mass_rigid);
-  const MatrixXd rigid_share = mass_rigid.transpose() * v;  // R^T M V, M symmetric
-  MatrixXd g = held.band();
-  const int n = static_cast<int>(g.rows());
+VibrationalFlexibility::VibrationalFlexibility(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass,
+                                               const MatrixXd& rigid)
+    : held_(std::make_shared<const HeldBeam>(s.stiffness)), rigid_(rigid), mass_rigid_(mass * rigid) {
+  const MatrixXd v = held_->displacement(mass_rigid_);
+  const MatrixXd rigid_share = mass_rigid_.transpose() * v;  // R^T M V, M symmetric
+  band_ = held_->band();
+  const int n = static_cast<int>(band_.rows());
   for (int i = 0; i < n; ++i)
     for (int d = 0; d <= kd && i + d < n; ++d) {
       const int j = i + d;
-      g(i, d) += -v.row(i).dot(rigid.row(j)) - rigid.row(i).dot(v.row(j)) +
-                 rigid.row(i).dot(rigid_share * rigid.row(j).transpose());
+      band_(i, d) += -v.row(i).dot(rigid.row(j)) - rigid.row(i).dot(v.row(j)) +
+                     rigid.row(i).dot(rigid_share * rigid.row(j).transpose());
     }
-  return g;
+}
+
+VectorXd VibrationalFlexibility::times(const VectorXd& w) const {
+  // P w = w - M R R^T w (balanced), C of it, then P^T y = y - R R^T M y.
+  const VectorXd balanced = w - mass_rigid_ * (rigid_.transpose() * w);
+  const VectorXd y = held_->displacement(balanced);
+  return y - rigid_ * (mass_rigid_.transpose() * y);
 }
 
 }  // namespace sweetspot

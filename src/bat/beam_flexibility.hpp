@@ -12,16 +12,31 @@
 // (P w), so G = P^T C P = C - V R^T - R V^T + R (R^T M V) R^T with V = C M R.
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
+#include <memory>
 
 #include "bat/beam_system.hpp"
 
 namespace sweetspot {
 
-// G(i, i + d) for d = 0 .. bandwidth (zero past the last degree of freedom): the entries a point
-// load, which reads at most bandwidth + 1 neighbouring degrees of freedom, needs. `mass` is M's
-// sparse copy; `rigid` holds the two exact M-orthonormal rigid modes (ModalBasis::vectors' first
-// two columns).
-Eigen::MatrixXd vibrational_flexibility_band(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass,
-                                             const Eigen::MatrixXd& rigid);
+class HeldBeam;
+
+class VibrationalFlexibility {
+ public:
+  // `mass` is M's sparse copy; `rigid` holds the two exact M-orthonormal rigid modes
+  // (ModalBasis::vectors' first two columns).
+  VibrationalFlexibility(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass, const Eigen::MatrixXd& rigid);
+
+  // G(i, i + d) at (i, d) for d = 0 .. bandwidth (zero past the last degree of freedom): the
+  // entries a point load, which reads at most bandwidth + 1 neighbouring degrees of freedom, needs.
+  const Eigen::MatrixXd& band() const { return band_; }
+  // G w, every degree of freedom's share of the vibrational modes' static yield under the load w:
+  // P^T C P w, one banded solve, O(n kd). What two points far apart share (a held bat's pivot and
+  // its struck point) lies outside the band.
+  Eigen::VectorXd times(const Eigen::VectorXd& w) const;
+
+ private:
+  std::shared_ptr<const HeldBeam> held_;
+  Eigen::MatrixXd rigid_, mass_rigid_, band_;
+};
 
 }  // namespace sweetspot

@@ -171,7 +171,8 @@ ModalBasis compute_modes(const Bat& bat, BeamTheory theory, ModeRequest request)
   basis.vectors = std::move(x);
   if (partial && !basis.complete())
     basis.solved_below = request.vibrational > 0 ? basis.omega(basis.count() - 1) : request.below_omega;
-  if (!request.is_rigid_only()) basis.flexibility = vibrational_flexibility_band(s, mass, basis.vectors.leftCols(2));
+  if (!request.is_rigid_only())
+    basis.flexibility = std::make_shared<const VibrationalFlexibility>(s, mass, basis.vectors.leftCols(2));
   basis.wall = barrel_wall(bat);
   for (const double d : bat.outer_diameter) basis.section_radius.push_back(d / 2);
   // About the long axis a section's polar moment is twice its diametral one: 2 rho I dz per slice.
@@ -200,13 +201,14 @@ double ModalBasis::section_radius_at(double z) const {
 }
 
 double ModalBasis::vibrational_compliance_at(double z) const {
-  if (flexibility.size() == 0) return 0;
+  if (!flexibility) return 0;
   const PointLoad p = layout.point(z);
+  const MatrixXd& band = flexibility->band();
   double sum = 0;
   for (int k = 0; k < 4; ++k)
     for (int l = 0; l < 4; ++l)
       if (p.weight[k] != 0 && p.weight[l] != 0)
-        sum += p.weight[k] * p.weight[l] * flexibility(std::min(p.dof[k], p.dof[l]), std::abs(p.dof[k] - p.dof[l]));
+        sum += p.weight[k] * p.weight[l] * band(std::min(p.dof[k], p.dof[l]), std::abs(p.dof[k] - p.dof[l]));
   return sum;
 }
 
@@ -216,6 +218,20 @@ double ModalBasis::unsolved_compliance_at(double z) const {
   double solved = 0;
   for (int n = 2; n < count(); ++n) solved += shapes(n) * shapes(n) / (omega(n) * omega(n));
   return std::max(0.0, vibrational_compliance_at(z) - solved);
+}
+
+double ModalBasis::unsolved_cross_compliance(double a, double b) const {
+  if (complete() || !flexibility) return 0;
+  const PointLoad at_a = layout.point(a), at_b = layout.point(b);
+  VectorXd load = VectorXd::Zero(vectors.rows());
+  for (int k = 0; k < 4; ++k) load(at_b.dof[k]) += at_b.weight[k];
+  const VectorXd yield = flexibility->times(load);
+  double all = 0;
+  for (int k = 0; k < 4; ++k) all += at_a.weight[k] * yield(at_a.dof[k]);
+  const VectorXd shapes_a = shapes_at(a), shapes_b = shapes_at(b);
+  double solved = 0;
+  for (int n = 2; n < count(); ++n) solved += shapes_a(n) * shapes_b(n) / (omega(n) * omega(n));
+  return all - solved;
 }
 
 std::vector<double> ModalBasis::vibrational_frequencies_hz() const {

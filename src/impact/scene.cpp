@@ -150,31 +150,41 @@ ModalContact held_contact(const ModalContact& free, const Eigen::VectorXd& at_pi
   return held;
 }
 
-// The bat held at a pivot over every solved mode, for auto. The free modes left unsolved follow
-// the pivot's force quasi-statically, as they follow the ball's: their static compliance there,
-// in series with the segment's yield, is the residual flexibility of component mode synthesis
-// (MacNeal, Comput. Struct. 1, 581 (1971)). Without it the pivot holds the bat too stiffly, more
-// so as the slices add modes above the solved ones: R161 on the rig at 672 slices, v_f erred up
-// to 35x auto's estimate near the handle.
-const HeldBasis& held_basis(const ModalBasis& basis, double pivot) {
-  const double compliance = basis.layout.point(pivot).compliance + basis.unsolved_compliance_at(pivot);
-  return held_modes(basis.omega, basis.shapes_at(pivot), compliance);
-}
-
 // auto on a held bat: the modes are chosen among the held bat's own, whose shapes at the impact
 // point are what the ball excites (choosing among the free bat's and holding those errs up to
 // 80x the estimate on a hollow bat: README "Numerics"). Sets the contact's modes, the held map
 // and the estimate; the dropped held modes' compliance goes into the residual.
+//
+// The bat is held over every solved mode. The free modes left unsolved follow the pivot's force
+// quasi-statically, as they follow the ball's: their static flexibility over the two loaded
+// points, [g_zz g_zp; g_zp g_pp], is the residual flexibility of component mode synthesis
+// (MacNeal, Comput. Struct. 1, 581 (1971)). At the pivot g_pp, in series with the segment's
+// yield, softens the constraint (without it the pivot holds the bat too stiffly, more so as the
+// slices add modes above the solved ones: R161 on the rig at 672 slices, v_f erred up to 35x
+// auto's estimate near the handle). The pivot's force F_p = -(psi_p . a + g_zp F) / c then also
+// answers the ball's force F through g_zp: condensed out, the struck point reads the modes as
+// psi_z - (g_zp / c) psi_p (and is forced so, symmetrically) and keeps g_zz - g_zp^2 / c of the
+// unsolved compliance. Struck near the pivot, g_zp is as large as g_zz and g_pp, and the pivot
+// holds the point as it should (counting g_zz alone there, aluminium on the rig 2.6 mm from its
+// pivot erred 1.6x the total estimate).
 void held_auto_geometry(const ImpactScene& scene, const ModalBasis& basis, SceneGeometry& g) {
-  const HeldBasis& h = held_basis(basis, g.pivot);
+  const Eigen::VectorXd at_pivot = basis.shapes_at(g.pivot);
+  const double compliance = basis.layout.point(g.pivot).compliance + basis.unsolved_compliance_at(g.pivot);
+  const HeldBasis& h = held_modes(basis.omega, at_pivot, compliance);
+  const double shared = basis.unsolved_cross_compliance(g.z, g.pivot);
+  const double condensed = shared != 0 ? shared / compliance : 0.0;
   const int n = static_cast<int>(h.omega.size());
-  const Eigen::VectorXd held_psi = h.modes.transpose() * basis.shapes_at(g.z);
+  Eigen::VectorXd struck = basis.shapes_at(g.z);
+  if (condensed != 0) struck -= condensed * at_pivot;
+  const Eigen::VectorXd held_psi = h.modes.transpose() * struck;
   // select_modes takes two rigid modes first: the held bat has one, so a still one goes before it.
   Eigen::VectorXd omega(n + 1), psi(n + 1);
   omega << 0, h.omega;
   psi << 0, held_psi;
   const UnsolvedModes unsolved =
-      basis.complete() ? UnsolvedModes{} : UnsolvedModes{basis.unsolved_compliance_at(g.z), basis.solved_below};
+      basis.complete() ? UnsolvedModes{}
+                       : UnsolvedModes{std::max(0.0, basis.unsolved_compliance_at(g.z) - condensed * shared),
+                                       basis.solved_below};
   const ModeSelection selection = select_modes(omega, psi, scene.ball, scene.ball_speed, g.bat_speed, g.recoil,
                                                scene.mode_tolerance, unsolved);
   std::vector<int> held = {0};

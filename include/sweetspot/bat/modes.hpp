@@ -4,6 +4,7 @@
 // 1 are the exact rigid modes (translation, rotation about the centre of mass) with omega = 0.
 #include <Eigen/Dense>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,6 +14,8 @@
 #include "sweetspot/bat/beam_layout.hpp"
 
 namespace sweetspot {
+
+class VibrationalFlexibility;
 
 struct ModalBasis {
   BeamTheory theory = BeamTheory::timoshenko;
@@ -35,10 +38,10 @@ struct ModalBasis {
   // A partial solve (ModeRequest) leaves the modes above this angular frequency unsolved (every
   // unsolved mode has omega >= solved_below); infinity when the basis is complete.
   double solved_below = std::numeric_limits<double>::infinity();
-  // The vibrational flexibility sum_n x_n x_n^T / omega_n^2 over ALL vibrational modes, solved or
-  // not, near its diagonal: flexibility(i, d) = G(i, i + d), d = 0..3 (beam_flexibility.hpp).
-  // Empty for a rigid-only basis.
-  Eigen::MatrixXd flexibility;
+  // The vibrational flexibility G = sum_n x_n x_n^T / omega_n^2 over ALL vibrational modes, solved
+  // or not (beam_flexibility.hpp): its band, and its product with any load. Null for a rigid-only
+  // basis.
+  std::shared_ptr<const VibrationalFlexibility> flexibility;
   // The barrel wall's hoop mode per slice (barrel_wall.hpp); empty for a solid bat.
   std::vector<WallMode> wall;
   // The bat's structural loss factor (Material::loss_factor): its vibrational modes' damping.
@@ -62,6 +65,10 @@ struct ModalBasis {
   // The part of it that the unsolved modes carry (0 for a complete basis): the total minus the
   // solved modes' psi^2 / omega^2, never below 0.
   double unsolved_compliance_at(double z) const;
+  // What the unsolved modes share between two points: sum over them of psi_n(a) psi_n(b) /
+  // omega_n^2, the displacement at a under a unit load at b (0 for a complete basis). At a = b,
+  // unsolved_compliance_at(a) to round-off.
+  double unsolved_cross_compliance(double a, double b) const;
   // The wall mode of the slice holding z, or nullptr where that slice is solid.
   const WallMode* wall_at(double z) const;
   // The outer radius at z, m, linear between slice centres; 0 when the basis has no slices.
