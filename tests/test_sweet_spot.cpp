@@ -41,11 +41,42 @@ TEST_CASE("The sweet spot of a parabola is its vertex and its exact width, betwe
       const SweetSpot s = sweet_spot(z, values(p, z), fraction);
       CHECK(s.z == Approx(p.vertex).epsilon(1e-12));
       CHECK(s.vf == Approx(p.peak).epsilon(1e-12));
-      if (p.vertex - p.width(fraction) / 2 > z.front() && p.vertex + p.width(fraction) / 2 < z.back())
+      if (p.vertex - p.width(fraction) / 2 > z.front() && p.vertex + p.width(fraction) / 2 < z.back()) {
         CHECK(s.width == Approx(p.width(fraction)).epsilon(1e-10));
-      else
+        // (1 - f) / f from the ends' slopes, times the Lagrange weights' spread between grid points
+        // (at most 1.25 on an even grid, more on an uneven one)
+        CHECK(s.width_sensitivity >= (1 - fraction) / fraction * (1 - 1e-9));
+        CHECK(s.width_sensitivity <= 1.5 * (1 - fraction) / fraction);
+      } else {
         CHECK(std::isnan(s.width));  // the zone runs off the scan
+      }
     }
+  }
+}
+
+TEST_CASE("The width's sensitivity bounds its change when every speed errs by a small fraction") {
+  const Parabola p{0.7137, 45.0, 2500.0};
+  const std::vector<double> z = grid(0.405, 0.01, 44);
+  const std::vector<double> exact = values(p, z);
+  for (const double fraction : {0.01, 0.05}) {
+    const SweetSpot s = sweet_spot(z, exact, fraction);
+    const double e = 1e-7;
+    double largest = 0;
+    // Each speed up or down by e in patterns that move the ends most (the zone's ends up and the
+    // peak down widen it) and in alternating ones.
+    for (int pattern = 0; pattern < 64; ++pattern) {
+      std::vector<double> vf = exact;
+      for (std::size_t i = 0; i < vf.size(); ++i) {
+        const bool near_peak = std::abs(z[i] - p.vertex) < s.width / 4;
+        const int sign = pattern == 0 ? (near_peak ? -1 : 1) : pattern == 1 ? (near_peak ? 1 : -1)
+                                                             : ((i * 7 + pattern) % 3 == 0 ? 1 : -1);
+        vf[i] *= 1 + sign * e;
+      }
+      largest = std::max(largest, std::abs(sweet_spot(z, vf, fraction).width / s.width - 1));
+    }
+    INFO("fraction " << fraction << ": largest relative change " << largest << " per " << e);
+    CHECK(largest <= s.width_sensitivity * e * (1 + 1e-3));  // first order in e
+    CHECK(largest >= 0.5 * s.width_sensitivity * e);  // and not far above what can happen
   }
 }
 

@@ -12,6 +12,7 @@
 #include "sweetspot/impact/error_estimates.hpp"
 #include "sweetspot/impact/impact.hpp"
 #include "sweetspot/impact/scan_maximum.hpp"
+#include "sweetspot/input_error.hpp"
 #include "sweetspot/study/sweet_spot.hpp"
 
 namespace sweetspot {
@@ -123,12 +124,30 @@ PointValue batted_ball_speed(const ModalBasis& basis, const ImpactScene& scene, 
   return {r.vf, r.modes_error, r.step_error};
 }
 
+// A carry's relative error over its exit speed's: a carry in vacuum goes as the launch speed
+// squared, and air makes it less sensitive (d ln carry / d ln speed 1.0-1.8 over 20-50 m/s launches).
+constexpr double carry_sensitivity = 2;
+
 // The batted ball's carry from the impact at z, in the trajectory calculator's air (flight.hpp),
-// with the impact's estimates doubled: a carry in vacuum goes as the launch speed squared, and
-// air makes it less sensitive (d ln carry / d ln speed 1.0-1.8 over 20-50 m/s launches).
+// with the impact's estimates times carry_sensitivity.
 PointValue carry(const ModalBasis& basis, const ImpactScene& scene, double z) {
   const ImpactResult r = impact_at(basis, scene, z);
-  return {batted_flight(r.launch, Air{}).distance, 2 * r.modes_error, 2 * r.step_error};
+  return {batted_flight(r.launch, Air{}).distance, carry_sensitivity * r.modes_error,
+          carry_sensitivity * r.step_error};
+}
+
+// How many times its speeds' relative error the objective's may be, as its impacts are held to
+// it: a carry's carry_sensitivity; a sweet spot's width (1 - f) / f on a parabolic peak, and up to
+// 1.25 times that read between the points of an even scan (SweetSpot::width_sensitivity); a peak
+// speed's or a mean's once.
+double assumed_sensitivity(const ObjectiveSpec& o) {
+  switch (o.kind) {
+    case ObjectiveKind::peak_distance: return carry_sensitivity;
+    case ObjectiveKind::sweet_spot_width: return 1.25 * (1 - o.fraction) / o.fraction;
+    case ObjectiveKind::peak_bbs:
+    case ObjectiveKind::mean_bbs: break;
+  }
+  return 1;
 }
 
 Scored objective_value(const OptimizationProblem& problem, const ModalBasis& basis, const ImpactScene& scene,
@@ -145,9 +164,11 @@ Scored objective_value(const OptimizationProblem& problem, const ModalBasis& bas
     case ObjectiveKind::sweet_spot_width: {
       Scored scored;
       const std::vector<double> z = scan_points(o.z_from, o.z_to, o.z_step);
-      scored.value = sweet_spot(z, values_at(z, bbs, map, "the impact", scored), o.fraction).width;
-      if (!std::isfinite(scored.value))
+      const SweetSpot spot = sweet_spot(z, values_at(z, bbs, map, "the impact", scored), o.fraction);
+      if (!std::isfinite(spot.width))
         throw Unscorable("the sweet spot is not inside the z scan (its peak at an end, or its zone running off it)");
+      scored.value = spot.width;
+      scored.modes_error *= spot.width_sensitivity, scored.step_error *= spot.width_sensitivity;
       return scored;
     }
     case ObjectiveKind::mean_bbs: {
@@ -272,7 +293,15 @@ Scores scores_within_accuracy(const OptimizationProblem& problem, const BatDesig
   const double accuracy = problem.model.accuracy;
   std::vector<double> objectives, measures;
   for (int slices = build_bat(design).slices();; slices *= slicing_refinement) {
-    const Scores s = scores_at(problem, design, scene, slices, map);
+    Scores s;
+    try {
+      s = scores_at(problem, design, scene, slices, map);
+    } catch (const InputError& refused) {  // a finer slicing whose modes cannot be solved
+      if (objectives.empty()) throw;
+      throw Unscorable("accuracy " + number(accuracy) + " needs the design cut finer than " +
+                       std::to_string(slices / slicing_refinement) + " slices, and the next slicing cannot be solved: " +
+                       refused.what());
+    }
     objectives.push_back(s.objective.value);
     measures.push_back(s.measure.value);
     const bool can_double = can_refine(slices, problem.model.theory);
@@ -322,7 +351,10 @@ DesignEvaluation evaluate_design(const OptimizationProblem& problem, const std::
     scene.swing = design_swing(problem.player, exact);
     scene.oblique = problem.player.oblique;
     scene.vibrational_modes = problem.model.vibrational_modes;
-    scene.accuracy = problem.model.accuracy;
+    // The impacts are held to the accuracy over the objective's sensitivity to them, so that their
+    // estimates, multiplied by it, take the modes' and step's quarters and leave the slicing its half.
+    if (problem.model.accuracy > 0)
+      scene.accuracy = std::max(problem.model.accuracy / assumed_sensitivity(problem.objective), min_accuracy);
     scene.error_estimates = scene.accuracy > 0;  // the modes' and step's, free at a stated accuracy
     const Scores s = problem.model.accuracy > 0 ? scores_within_accuracy(problem, design, scene, map, e)
                                                 : scores_at(problem, design, scene, 0, map);

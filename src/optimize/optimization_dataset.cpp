@@ -116,10 +116,12 @@ void evaluation_variables(const OptimizationProblem& p, const OptimizationHistor
                            "relative slicing error estimate: the larger of the objective's and the measure's",
                            {"evaluation"}, slicing_error, {}, {}});
     d.variables.push_back({"modes_error", "1",
-                           "relative error estimate of the dropped modes: the largest of the design's impacts'",
+                           "relative error estimate of the dropped modes: the largest of the design's impacts', "
+                           "times the objective's sensitivity to them (a carry's 2, a sweet spot width's as read)",
                            {"evaluation"}, modes_error, {}, {}});
     d.variables.push_back({"step_error", "1",
-                           "relative error estimate of the time step: the largest of the design's impacts'",
+                           "relative error estimate of the time step: the largest of the design's impacts', "
+                           "times the objective's sensitivity to them (a carry's 2, a sweet spot width's as read)",
                            {"evaluation"}, step_error, {}, {}});
     d.variables.push_back({"total_error", "1", "the sum of the three estimates", {"evaluation"}, total_error, {}, {}});
   }

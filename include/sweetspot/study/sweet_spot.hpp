@@ -10,6 +10,13 @@ struct SweetSpot {
   double z;      // m: the vertex of the parabola through the largest v_f and its neighbours
   double vf;     // m/s: v_f there
   double width;  // m: from where v_f first falls below (1 - fraction) vf on the left to the right
+  // The most the width can change, relative to itself, per unit relative error of every v_f (each
+  // off by at most that fraction e, either way), to first order: each end moves by the error of
+  // the parabola read there less the level's, over |v_f'|, about 2 e level / |v_f'| (the parabolas'
+  // Lagrange weights add up to a little more between grid points). About (1 - fraction) / fraction
+  // on a parabola: a zone within 1 % of the peak is some 99 times as sensitive as the speeds it is
+  // read from.
+  double width_sensitivity;
 };
 
 // z strictly ascending, vf the exit speeds there, fraction in (0, 1). Every field is NaN when a
