@@ -207,6 +207,26 @@ TEST_CASE("certify refuses a bad standard, pivot or option with one line", "[cer
   require_refused(run_program("certify " + r161_file + " --accuracy 1e-4 --modes 5"), {"modes 5", "accuracy"});
 }
 
+TEST_CASE("A certification whose next slicing cannot be solved reports the accuracy not met, and why",
+          "[certification]") {
+  // 1e-7 asks maple 271's modes to 8e6 rad/s: at 1344 slices more than a partial solve takes
+  // (numerics.md). The answer is the 672-slice certification, its estimates, and the reason.
+  BatSource source;
+  CertifyOptions stated;
+  stated.accuracy = 1e-7;
+  const Certification c =
+      certify(load_bat_design(source_path("studies/bats/maple_271.toml"), source), find_standard("bbcor"), stated);
+  CHECK_FALSE(c.accurate);
+  CHECK(c.slices_used == 672);
+  CHECK_THAT(c.unmet, Catch::Contains("the next slicing cannot be solved") && Catch::Contains("slices = 1344"));
+  CHECK(c.slicing_error > 1e-7);
+  CHECK(c.total_error == c.slicing_error + c.modes_error + c.step_error);
+  const ProgramRun run = run_program("certify maple_271 --accuracy 1e-7");
+  INFO(run.output);
+  CHECK(run.exit_code == 0);  // the bat passes the rules; the accuracy's miss is reported, not an input error
+  CHECK_THAT(run.output, Catch::Contains("NOT MET: the next slicing cannot be solved"));
+}
+
 TEST_CASE("A certification at a stated accuracy bounds its error against a converged reference", "[certification]") {
   // The reference: Richardson over 672 and 1344 slices (second order, error_estimates.hpp), at the
   // rig's own step and modes, far finer than the 1e-3 asked. Each bat's estimate must bound the

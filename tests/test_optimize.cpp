@@ -330,6 +330,7 @@ TEST_CASE("a journaled evaluation of another design is dropped with the later on
                                                       static_cast<std::uint64_t>(p.optimizer.max_evaluations), width),
                     false, [](const double*) { return std::string(); });
     std::vector<double> row(width, 0.0);
+    std::fill(row.end() - 4, row.end(), std::nan(""));  // no stated accuracy: no estimates
     row[0] = 2999.5;  // a density inside the bounds that the search does not start from
     row[p.free.size()] = 1.0;  // an objective; status ok
     journal.append({0}, row);
@@ -357,6 +358,7 @@ TEST_CASE("a journaled ok evaluation with a NaN constraint is dropped on reading
                                                       static_cast<std::uint64_t>(p.optimizer.max_evaluations), width),
                     false, [](const double*) { return std::string(); });
     std::vector<double> row(width, 0.0);
+    std::fill(row.end() - 4, row.end(), std::nan(""));  // no stated accuracy: no estimates
     row[0] = 700;
     row[p.free.size()] = 30;
     row[p.free.size() + 1] = std::nan("");
@@ -366,6 +368,71 @@ TEST_CASE("a journaled ok evaluation with a NaN constraint is dropped on reading
   INFO(resumed.output);
   REQUIRE(resumed.exit_code == 0);
   CHECK(resumed.output.find("an ok evaluation with a NaN constraint") != std::string::npos);
+}
+
+TEST_CASE("optimize at a stated accuracy holds a sweet spot's width, not only the speeds it is read from",
+          "[optimize]") {
+  // A 1 % zone's ends lie where v_f is flat: the speeds' errors move them some 99 times as much.
+  // The width at 1e-2 must lie within the two estimates of the width at 1e-4.
+  TempDir dir;
+  const std::string text = "bat = \"" + maple + "\"\n[free]\nbarrel_diameter = { min = 0.060325, max = 0.066675 }\n"
+                           "[player]\ncenter = 0.09\nomega = 51\nball_speed = 40\n[objective]\n"
+                           "maximize = \"sweet_spot_width\"\nz = { start = 0.50, stop = 0.82, step = 0.01 }\n"
+                           "fraction = 0.01\n[model]\n";
+  const auto scored = [&](const char* accuracy) {
+    const DesignEvaluation e =
+        evaluate_design(load_optimization(dir.write("opt.toml", text + "accuracy = " + accuracy + "\n")), {0.0635},
+                        serial_map);
+    INFO(e.message);
+    REQUIRE(e.status == EvaluationStatus::ok);
+    return e;
+  };
+  const DesignEvaluation coarse = scored("1e-2"), fine = scored("1e-4");
+  INFO("width " << coarse.objective << " at 1e-2 (" << coarse.total_error << "), " << fine.objective << " at 1e-4 ("
+                << fine.total_error << ")");
+  CHECK(std::abs(coarse.objective / fine.objective - 1) <= coarse.total_error + fine.total_error);
+  CHECK(coarse.total_error <= 1e-2);
+  CHECK(fine.total_error <= 1e-4);
+  // The speeds' modes and step estimates, scaled by the width's sensitivity, take about their quarters.
+  CHECK(coarse.modes_error <= 0.25e-2);
+  CHECK(coarse.modes_error >= 0.25e-2 / 10);
+}
+
+TEST_CASE("a journaled ok evaluation whose estimates cannot be true at the stated accuracy is dropped on reading",
+          "[optimize][program]") {
+  TempDir dir;
+  const auto opt = dir.write(
+      "opt.toml", "bat = \"" + maple + "\"\n[free]\nbarrel_diameter = { min = 0.0603, max = 0.0667 }\n"
+                  "[player]\ncenter = 0.09\nomega = 51\nball_speed = 40\n[objective]\nmaximize = \"peak_bbs\"\n"
+                  "z = { start = 0.60, stop = 0.80, step = 0.02 }\n[model]\naccuracy = 1e-2\n"
+                  "[optimizer]\nmax_evaluations = 1\n");
+  const OptimizationProblem p = load_optimization(opt);
+  // design, objective, status, then slices_used, the slicing's, modes', step's and total errors
+  const std::size_t width = p.free.size() + 1 + p.constraints.size() + 1 + 5;
+  const std::vector<std::pair<std::vector<double>, std::string>> forged = {
+      {{336, 1e-4, 1e-4, 1e-4, 0.5}, "a total error that is not its estimates' sum"},
+      {{336, 1e-2, 1e-2, 1e-2, 3e-2}, "total error passes the accuracy"},
+      {{336, 1e-4, INFINITY, 1e-4, INFINITY}, "infinite error estimate"},
+      {{336, 1e-4, std::nan(""), 1e-4, std::nan("")}, "without its error estimates"},
+      {{0, 1e-4, 1e-4, 1e-4, 3e-4}, "fewer slices than three slicings give"}};
+  for (const auto& [chosen, why] : forged) {
+    INFO(why);
+    const std::string out = dir / "forged.h5";
+    {
+      Journal journal(Journal::path_for(out), journal_key(p.text, {p.base_source, p.reference_source},
+                                                        static_cast<std::uint64_t>(p.optimizer.max_evaluations), width),
+                      false, [](const double*) { return std::string(); });
+      std::vector<double> row = {0.0635, 45.0, 0.0};  // a design, its objective, status ok
+      row.insert(row.end(), chosen.begin(), chosen.end());
+      REQUIRE(row.size() == width);
+      journal.append({0}, row);
+    }
+    const ProgramRun resumed = run_program("optimize " + opt.string() + " -o " + out + " --resume");
+    INFO(resumed.output);
+    REQUIRE(resumed.exit_code == 0);
+    CHECK(resumed.output.find(why) != std::string::npos);
+    std::filesystem::remove(out);
+  }
 }
 
 TEST_CASE("optimize refuses an output name too long for its journal or best bat file", "[optimize][program]") {

@@ -153,8 +153,12 @@ Certification certify_at_slices(const BatDesign& design, const Standard& standar
 
 // What a stated accuracy cannot be given with, refused before any work.
 void check_accuracy_options(const CertifyOptions& options) {
-  if (!(*options.accuracy >= min_accuracy && *options.accuracy <= max_accuracy))
-    reject("accuracy", *options.accuracy, accuracy_expected);
+  if (!(*options.accuracy >= min_accuracy && *options.accuracy <= max_accuracy)) {
+    // With the digits that tell it from the bound it broke: 0.10000001, not 0.1.
+    const double bound = *options.accuracy > max_accuracy ? max_accuracy : min_accuracy;
+    throw InputError("certify: accuracy " + detail::format_apart(*options.accuracy, bound).first + ": expected " +
+                     accuracy_expected);
+  }
   if (options.slices > 0)
     throw InputError("certify: slices " + std::to_string(options.slices) +
                      " with accuracy: the accuracy chooses the slices; give one of them");
@@ -166,24 +170,39 @@ void check_accuracy_options(const CertifyOptions& options) {
 // The certification on the design cut at its own slices N, then 2N, 4N ...: at least three
 // slicings, then one more while the measure's Richardson estimate (error_estimates.hpp) exceeds
 // what the modes and the step leave of the accuracy (as impact's SlicingLadder). The finest is
-// the answer.
+// the answer; where the next slicing cannot be made (4096 slices, or its modes too many to solve)
+// the finest so far, not accurate, says why.
 Certification certify_within_accuracy(const BatDesign& design, const Standard& standard, CertifyOptions options) {
   check_accuracy_options(options);
+  const double accuracy = *options.accuracy;
   std::vector<double> measures;
   int evaluations = 0;
+  Certification c;
+  const auto finish = [&](const std::string& unmet) {
+    c.slicing_error = measures.size() >= 2 ? slicing_error(measures, measures.size() - 1) / std::abs(c.measure)
+                                           : std::numeric_limits<double>::quiet_NaN();
+    c.total_error = c.slicing_error + c.modes_error + c.step_error;
+    c.accurate = unmet.empty();
+    c.unmet = unmet;
+    c.evaluations = evaluations;
+    return c;
+  };
   for (options.slices = build_bat(design).slices();; options.slices *= slicing_refinement) {
-    Certification c = certify_at_slices(design, standard, options);
+    try {
+      c = certify_at_slices(design, standard, options);
+    } catch (const InputError& refused) {
+      if (measures.empty()) throw;  // the design's own slices: the input's fault, not the accuracy's
+      return finish(std::string("the next slicing cannot be solved: ") + refused.what());
+    }
     evaluations += c.evaluations;
     measures.push_back(c.measure);
     const bool can_double = can_refine(options.slices, options.theory);
     if (measures.size() < 3 && can_double) continue;
-    c.slicing_error = slicing_error(measures, measures.size() - 1) / std::abs(c.measure);
-    const double allowance = slicing_allowance(*options.accuracy, c.modes_error, c.step_error);
-    if (c.slicing_error > allowance && allowance > 0 && can_double) continue;
-    c.accurate = c.slicing_error <= allowance;
-    c.total_error = c.slicing_error + c.modes_error + c.step_error;
-    c.evaluations = evaluations;
-    return c;
+    const double allowance = slicing_allowance(accuracy, c.modes_error, c.step_error);
+    const double estimate = slicing_error(measures, measures.size() - 1) / std::abs(c.measure);
+    if (estimate > allowance && allowance > 0 && can_double) continue;
+    if (estimate <= allowance) return finish("");
+    return finish(allowance > 0 ? "the slices cannot double again" : "the modes and the step leave nothing for the slicing");
   }
 }
 

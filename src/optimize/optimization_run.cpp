@@ -61,6 +61,29 @@ DesignEvaluation from_row(const OptimizationProblem& p, const double* row) {
   return e;
 }
 
+// Why a row's slices_used and estimates (`chosen`) cannot be an evaluation's, or "". Without a
+// stated accuracy there are none (0 and NaN); with one, an ok evaluation was scored on its
+// design's own slices doubled at least twice (the design's own are min_slices or more), with
+// finite estimates summing to a total within the accuracy; a failed one may hold the last rung's.
+std::string accuracy_row_problem(const OptimizationProblem& p, bool ok, const double* chosen) {
+  const double slices = chosen[0], accuracy = p.model.accuracy;
+  const double *estimates = chosen + 1, total = chosen[4];
+  if (accuracy == 0)
+    return slices == 0 && std::all_of(estimates, estimates + 4, [](double e) { return std::isnan(e); })
+               ? ""
+               : "estimates of an accuracy the problem does not state";
+  if (!(slices >= 0 && slices <= max_slices && slices == std::floor(slices))) return "a slice count out of range";
+  if (std::any_of(estimates, estimates + 4, [](double e) { return e < 0 || std::isinf(e); }))
+    return "a negative or infinite error estimate";
+  if (!ok) return "";
+  if (slices < 4 * min_slices) return "an ok evaluation on fewer slices than three slicings give";
+  if (std::any_of(estimates, estimates + 4, [](double e) { return std::isnan(e); }))
+    return "an ok evaluation without its error estimates";
+  if (total != chosen[1] + chosen[2] + chosen[3]) return "a total error that is not its estimates' sum";
+  if (!(total <= accuracy)) return "an ok evaluation whose total error passes the accuracy";
+  return "";
+}
+
 // Why a journaled row cannot be one of this problem's evaluations, or "".
 std::string row_problem(const OptimizationProblem& p, const double* row) {
   const std::size_t n = p.free.size(), m = p.constraints.size();
@@ -71,11 +94,7 @@ std::string row_problem(const OptimizationProblem& p, const double* row) {
   if (status == 0 && !std::isfinite(row[n])) return "an ok evaluation without an objective";
   for (std::size_t j = 0; j < m; ++j)
     if (status == 0 && std::isnan(row[n + 1 + j])) return "an ok evaluation with a NaN constraint";
-  const double slices = row[n + 2 + m];
-  if (!(slices >= 0 && slices <= max_slices && slices == std::floor(slices))) return "a slice count out of range";
-  for (std::size_t k = 1; k < accuracy_fields; ++k)
-    if (row[n + 2 + m + k] < 0) return "a negative error estimate";
-  return "";
+  return accuracy_row_problem(p, status == 0, row + n + 2 + m);
 }
 
 // ---- The output claimed by rank 0 ----------------------------------------------------------

@@ -135,6 +135,7 @@ py::dict certification(const BatHandle& b, const std::string& standard, std::opt
     d["step_error"] = c.step_error;
     d["total_error"] = c.total_error;
     d["accurate"] = c.accurate;
+    if (!c.accurate) d["unmet"] = c.unmet;
   }
   if (c.hollow) {
     py::dict b;

@@ -36,7 +36,7 @@ ImpactResult certification_point(const GridPoint& point) {
   r.slices_used = c.slices_used;
   r.slicing_error = c.slicing_error, r.modes_error = c.modes_error, r.step_error = c.step_error;
   r.total_error = c.total_error;
-  if (!c.accurate) r.status = CollisionStatus::inaccurate, r.message = "the measure's slicing estimate exceeds its share at the finest slices";
+  if (!c.accurate) r.status = CollisionStatus::inaccurate, r.message = "accuracy not met: " + c.unmet;
   if (!std::isfinite(c.measure)) r.status = CollisionStatus::non_finite, r.message = "the rig's measure is not finite";
   return r;
 }

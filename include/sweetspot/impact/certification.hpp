@@ -43,8 +43,8 @@ struct CertifyOptions {
   BarrelScan scan;
   // The total relative error the measure may carry (error_estimates.hpp), or 0 for none: its
   // modes' and step's shares set every rig hit, and the bat is cut at its own slices, twice and
-  // four times them, and finer while the measure's slicing estimate exceeds its share. Excludes
-  // `slices` and a fixed mode count.
+  // four times them, and finer while the measure's slicing estimate exceeds what they leave.
+  // Excludes `slices` and a fixed mode count.
   std::optional<double> accuracy;
 };
 
@@ -87,6 +87,8 @@ struct Certification {
   double step_error = std::numeric_limits<double>::quiet_NaN();
   double total_error = std::numeric_limits<double>::quiet_NaN();
   bool accurate = true;
+  std::string unmet;  // why not accurate: the slices could not double again, or their modes be
+                      // solved, or the modes and the step left the slicing nothing
   std::vector<RuleCheck> checks;
   bool pass = false;     // every check passes
 };
