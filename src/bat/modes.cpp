@@ -119,7 +119,7 @@ std::optional<std::string> impractical_solve(int slices, BeamTheory theory, Mode
   const bool every = request.is_all() || request.vibrational == -2 || request.vibrational + 2 >= dofs;
   if (every && dofs > 2 * max_full_solve_slices)
     return "every mode (the full eigen-solve) is practical up to " + std::to_string(max_full_solve_slices) +
-           " slices (its time grows as the cube of the slices: 8.5 s at 1024, some 10 min at 4096); " +
+           " slices (its time grows as the cube of the slices: about 7 s at 1024, some 8 min at 4096); " +
            alternatives(dofs);
   if (!every && request.vibrational + 2 > practical_mode_count(dofs))
     return std::to_string(request.vibrational) + " vibrational modes" + too_many(dofs);
