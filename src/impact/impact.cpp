@@ -310,8 +310,7 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& stated)
   }
   const ImpactScene& scene = adjusted ? *adjusted : given;
   SceneGeometry g = scene_geometry(scene, basis);
-  const bool drops_solved = g.kept.size() < static_cast<std::size_t>(basis.count());
-  const bool reruns_if_caught_again = scene.vibrational_modes == auto_modes && drops_solved;
+  const bool reruns_if_caught_again = scene.vibrational_modes == auto_modes && g.drops_solved;
   // A scene whose modes' share was divided took its dropped modes past their share before (a
   // coarser rung, or this one on a narrower basis: widened_scene), mostly by a ball caught again:
   // every solved mode at once.

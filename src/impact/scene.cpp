@@ -50,6 +50,7 @@ std::vector<int> kept_modes(const ImpactScene& scene, const ModalBasis& basis, S
     kept.insert(kept.end(), selection.kept.begin(), selection.kept.end());
     g.contact.residual_compliance = selection.residual_compliance;
     g.modes_error = selection.error_estimate;
+    g.drops_solved = kept.size() < static_cast<std::size_t>(basis.count());
   } else {
     const int count = scene.vibrational_modes == all_modes ? basis.count() : 2 + scene.vibrational_modes;
     for (int i = 2; i < count; ++i) kept.push_back(i);
@@ -189,6 +190,7 @@ void held_auto_geometry(const ImpactScene& scene, const ModalBasis& basis, Scene
                                                scene.mode_tolerance, unsolved);
   std::vector<int> held = {0};
   for (const int i : selection.kept) held.push_back(i - 1), g.modes_kept.push_back(i - 1);
+  g.drops_solved = static_cast<int>(held.size()) < n;
   g.kept.resize(basis.count());
   for (int i = 0; i < basis.count(); ++i) g.kept[i] = i;
   g.held = h.modes(Eigen::all, held);

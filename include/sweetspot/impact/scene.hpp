@@ -183,6 +183,7 @@ struct SceneGeometry {
   ModalContact contact;     // kept modes; for a pivoted bat, the modes of the constrained bat
   std::vector<int> modes_kept;  // vibrational mode numbers kept (1 = the first vibrational mode)
   double modes_error = 0;       // auto_modes: estimated relative vf error of those dropped
+  bool drops_solved = false;    // auto_modes: a solved mode (a held one, for a pivoted bat) was dropped
   std::vector<int> kept;        // the basis's modes behind `contact` (0, 1 rigid)
   Eigen::MatrixXd held;         // pivoted: the held bat's modes in the kept ones; empty if free
   // A hollow struck slice's wall mode (barrel_wall.hpp), the contact's last mode; -1 for none.
