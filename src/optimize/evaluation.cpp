@@ -48,23 +48,19 @@ std::string failure_at(const PointFunction& f, double z, const char* what) {
   }
 }
 
-// A value made from points, with the largest of their impacts' error estimates: a maximum or a
+// A value made from points carries the largest of their impacts' estimates: a maximum or a
 // weighted mean (weights summing to 1) of relative errors at most e errs by at most e relative to
-// the maximum, or the mean, itself.
-struct Scored {
-  double value = nan, modes_error = nan, step_error = nan;
-
-  void include(const PointValue& p) {
-    modes_error = std::fmax(modes_error, p.modes_error);  // fmax: an estimate not made (NaN) adds nothing
-    step_error = std::fmax(step_error, p.step_error);
-  }
-};
+// the maximum, or the mean, itself. fmax: an estimate not made (NaN) adds nothing.
+void include_estimates(PointValue& scored, const PointValue& p) {
+  scored.modes_error = std::fmax(scored.modes_error, p.modes_error);
+  scored.step_error = std::fmax(scored.step_error, p.step_error);
+}
 
 // Values at `points` through the map, their estimates included in `scored`; a point that throws
 // or fails gives NaN, and any NaN makes the evaluation unscorable, saying what was computed there
 // and how it ended.
 std::vector<double> values_at(const std::vector<double>& points, const PointFunction& f, const PointMap& map,
-                              const char* what, Scored& scored) {
+                              const char* what, PointValue& scored) {
   const std::vector<PointValue> mapped = map(points.size(), [&](std::size_t i) {
     try {
       return f(points[i]);
@@ -76,7 +72,7 @@ std::vector<double> values_at(const std::vector<double>& points, const PointFunc
   for (std::size_t i = 0; i < mapped.size(); ++i) {
     if (!std::isfinite(mapped[i].value)) throw Unscorable(failure_at(f, points[i], what));
     values.push_back(mapped[i].value);
-    scored.include(mapped[i]);
+    include_estimates(scored, mapped[i]);
   }
   return values;
 }
@@ -84,9 +80,9 @@ std::vector<double> values_at(const std::vector<double>& points, const PointFunc
 // The maximum of f between from and to as scan_maximum finds it, its uniform samples computed
 // through the map (bitwise the values scan_maximum would compute itself), the golden section
 // after them on every worker alike; with the largest estimates of every point computed.
-Scored mapped_scan_maximum(const PointFunction& f, double from, double to, double step, double tolerance,
+PointValue mapped_scan_maximum(const PointFunction& f, double from, double to, double step, double tolerance,
                            const PointMap& map, const char* what) {
-  Scored scored;
+  PointValue scored;
   const std::vector<double> points = scan_points(from, to, step);
   const std::vector<double> values = values_at(points, f, map, what, scored);
   const auto sampled_or_computed = [&](double x) {
@@ -94,7 +90,7 @@ Scored mapped_scan_maximum(const PointFunction& f, double from, double to, doubl
     if (at != points.end()) return values[static_cast<std::size_t>(at - points.begin())];
     const PointValue v = f(x);
     if (!std::isfinite(v.value)) throw Unscorable(failure_at(f, x, what));
-    scored.include(v);
+    include_estimates(scored, v);
     return v.value;
   };
   scored.value = scan_maximum(sampled_or_computed, from, to, step, tolerance).value;
@@ -150,7 +146,7 @@ double assumed_sensitivity(const ObjectiveSpec& o) {
   return 1;
 }
 
-Scored objective_value(const OptimizationProblem& problem, const ModalBasis& basis, const ImpactScene& scene,
+PointValue objective_value(const OptimizationProblem& problem, const ModalBasis& basis, const ImpactScene& scene,
                        const PointMap& map) {
   const ObjectiveSpec& o = problem.objective;
   const auto bbs = [&](double z) { return batted_ball_speed(basis, scene, z); };
@@ -162,7 +158,7 @@ Scored objective_value(const OptimizationProblem& problem, const ModalBasis& bas
       return mapped_scan_maximum(distance, o.z_from, o.z_to, o.z_step, o.tolerance, map, "the impact");
     }
     case ObjectiveKind::sweet_spot_width: {
-      Scored scored;
+      PointValue scored;
       const std::vector<double> z = scan_points(o.z_from, o.z_to, o.z_step);
       const SweetSpot spot = sweet_spot(z, values_at(z, bbs, map, "the impact", scored), o.fraction);
       if (!std::isfinite(spot.width))
@@ -172,7 +168,7 @@ Scored objective_value(const OptimizationProblem& problem, const ModalBasis& bas
       return scored;
     }
     case ObjectiveKind::mean_bbs: {
-      Scored scored;
+      PointValue scored;
       const std::vector<double> vf = values_at(o.z, bbs, map, "the impact", scored);
       scored.value = 0;
       for (std::size_t i = 0; i < vf.size(); ++i) scored.value += o.weights[i] * vf[i];
@@ -184,7 +180,7 @@ Scored objective_value(const OptimizationProblem& problem, const ModalBasis& bas
 
 // The standard's measure at its maximum over the barrel, as certify finds it. A measure's
 // relative error is at most its hit's exit speed's (certification.hpp).
-Scored rig_maximum(const OptimizationProblem& problem, const ModalBasis& basis, double length, const PointMap& map) {
+PointValue rig_maximum(const OptimizationProblem& problem, const ModalBasis& basis, double length, const PointMap& map) {
   const RigSettings rig = certification_rig(problem.standard, problem.rig, length);
   const BarrelScan& scan = problem.rig.scan;
   const auto measure = [&](double z) {
@@ -252,7 +248,7 @@ ModalBasis design_modes(const OptimizationProblem& problem, const Bat& bat, cons
 // The design's objective and (NaN when no constraint asks it) the rig's measure, on the design cut
 // into `slices` slices (0: its own, or the model's).
 struct Scores {
-  Scored objective, measure;
+  PointValue objective, measure;
 
   double modes_error() const { return std::fmax(objective.modes_error, measure.modes_error); }
   double step_error() const { return std::fmax(objective.step_error, measure.step_error); }
