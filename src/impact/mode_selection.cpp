@@ -40,7 +40,7 @@ ModeSelection select_modes(const Eigen::VectorXd& omega, const Eigen::VectorXd& 
   const double approach = ball_speed + bat_speed;
   s.pulse_duration = pulse_duration(ball, approach, recoil);
   const double vf = rigid_exit_speed(ball.e0, recoil, ball_speed, bat_speed);
-  const double scale = std::max(std::abs(vf), 0.05 * std::abs(approach));
+  const double scale = s.error_scale = std::max(std::abs(vf), 0.05 * std::abs(approach));
   // A dropped mode errs twice. Dynamically, it would take R_n of the recoil: d v_f / d(sum R)
   // of the rigid formula. Statically, its compliance is kept, but a mode only follows the force
   // quasi-statically to within (omega_pulse / omega_n)^2 of it; the compliance c in series with

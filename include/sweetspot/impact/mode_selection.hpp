@@ -17,7 +17,10 @@ namespace sweetspot {
 struct ModeSelection {
   std::vector<int> kept;           // indices of the kept vibrational modes (2, 3, ...), ascending
   double residual_compliance = 0;  // sum psi_n^2 / omega_n^2 over the dropped ones
-  double error_estimate = 0;       // bound on the relative exit-speed error of dropping them
+  double error_estimate = 0;       // bound on the exit-speed error of dropping them, over error_scale
+  // m/s: the rigid bat's max(|v_f|, 5 % of the approach speed), the only scale known before the
+  // impact; the impact restates the estimate against its own (impact.cpp).
+  double error_scale = 0;
   double pulse_duration = 0;       // s, the rigid-bat estimate used
 };
 
