@@ -113,7 +113,7 @@ double slicing_allowance(double accuracy, double modes_error, double step_error)
 // slower: 1-1.5x over R161's barrel, about 2x toward its handle, up to 7x on maple_271 at 30 cm.
 // With the whole share as the tolerance, most points off the sweet spot would pass it and run
 // again on a wider basis (widened_scene): the design-space study at 1e-4 ran 3 700 points/s
-// against 4 100-4 300.
+// against about 4 300.
 inline constexpr double mode_share_overrun = 2;
 
 // The tolerance `auto` keeps the dropped modes within for the scene: its mode_tolerance, or at a
