@@ -11,6 +11,7 @@
 #include "sweetspot/impact/batted_ball.hpp"
 #include "sweetspot/impact/error_estimates.hpp"
 #include "sweetspot/impact/formulas.hpp"
+#include "sweetspot/impact/mode_selection.hpp"
 #include "sweetspot/impact/oblique_impact.hpp"
 #include "sweetspot/impact/step_selection.hpp"
 
@@ -283,9 +284,10 @@ double step_error_estimate(const ImpactScene& scene, const ModalBasis& basis, co
 // error_scale as every other estimate is: where the flexible bat returns the ball slower than the
 // rigid one the same error in m/s is a larger share of it (1-1.5x over R161's barrel, about 2x
 // toward its handle, up to 7x on maple_271 at 30 cm, 2.4x on the low-impact scene).
-double restated_modes_error(const SceneGeometry& g, double vf, double ball_speed) {
+double restated_modes_error(const SceneGeometry& g, const ImpactScene& scene, double vf) {
   if (!(g.modes_error > 0) || !std::isfinite(vf)) return g.modes_error;
-  return g.modes_error * g.modes_error_scale / error_scale(vf, ball_speed);
+  return g.modes_error * selection_error_scale(scene.ball, scene.ball_speed, g.bat_speed, g.recoil) /
+         error_scale(vf, scene.ball_speed);
 }
 
 // validate() lets points lie a rounding error past the bat's ends (bat_extent_tolerance): the
@@ -352,7 +354,7 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& stated)
     r.barrel_compression_eff = g.wall_compression;
   }
   r.modes_kept = g.modes_kept;
-  r.modes_error = restated_modes_error(g, r.vf, scene.ball_speed);
+  r.modes_error = restated_modes_error(g, scene, r.vf);
   r.slices_used = basis.slices();
   r.step_used = c.step;
   if (scene.error_estimates && c.status == CollisionStatus::ok) {

@@ -33,14 +33,18 @@ double pulse_duration(const Ball& ball, double approach_speed, double recoil) {
   return u_max / v * (detail::whole_branch_time(q) + detail::whole_branch_time(b + 1) / ball.e0);
 }
 
+double selection_error_scale(const Ball& ball, double ball_speed, double bat_speed, double recoil) {
+  const double vf = rigid_exit_speed(ball.e0, recoil, ball_speed, bat_speed);
+  return std::max(std::abs(vf), 0.05 * std::abs(ball_speed + bat_speed));
+}
+
 ModeSelection select_modes(const Eigen::VectorXd& omega, const Eigen::VectorXd& psi, const Ball& ball,
                            double ball_speed, double bat_speed, double recoil, double tolerance,
                            const UnsolvedModes& unsolved) {
   ModeSelection s;
   const double approach = ball_speed + bat_speed;
   s.pulse_duration = pulse_duration(ball, approach, recoil);
-  const double vf = rigid_exit_speed(ball.e0, recoil, ball_speed, bat_speed);
-  const double scale = s.error_scale = std::max(std::abs(vf), 0.05 * std::abs(approach));
+  const double scale = selection_error_scale(ball, ball_speed, bat_speed, recoil);
   // A dropped mode errs twice. Dynamically, it would take R_n of the recoil: d v_f / d(sum R)
   // of the rigid formula. Statically, its compliance is kept, but a mode only follows the force
   // quasi-statically to within (omega_pulse / omega_n)^2 of it; the compliance c in series with

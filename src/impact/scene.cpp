@@ -49,7 +49,7 @@ std::vector<int> kept_modes(const ImpactScene& scene, const ModalBasis& basis, S
                      scene.mode_tolerance, unsolved);
     kept.insert(kept.end(), selection.kept.begin(), selection.kept.end());
     g.contact.residual_compliance = selection.residual_compliance;
-    g.modes_error = selection.error_estimate, g.modes_error_scale = selection.error_scale;
+    g.modes_error = selection.error_estimate;
     g.drops_solved = kept.size() < static_cast<std::size_t>(basis.count());
   } else {
     const int count = scene.vibrational_modes == all_modes ? basis.count() : 2 + scene.vibrational_modes;
@@ -199,7 +199,7 @@ void held_auto_geometry(const ImpactScene& scene, const ModalBasis& basis, Scene
   g.contact.psi = held_psi(held);
   g.contact.velocity0 = g.held.transpose() * velocity0;
   g.contact.residual_compliance = selection.residual_compliance;
-  g.modes_error = selection.error_estimate, g.modes_error_scale = selection.error_scale;
+  g.modes_error = selection.error_estimate;
 }
 
 void validate_history(const HistoryRequest& h, double length) {

@@ -111,9 +111,9 @@ double slicing_allowance(double accuracy, double modes_error, double step_error)
 // them against the rigid bat's exit speed, the one scale known before the impact; the impact
 // states the estimate against its own (impact.cpp), larger where the flexible bat returns the ball
 // slower: 1-1.5x over R161's barrel, about 2x toward its handle, up to 7x on maple_271 at 30 cm.
-// With the whole share as the tolerance, 33 118 of the design-space study's 38 808 points passed
-// it at 1e-4 (all but those near the sweet spot) and ran again on a wider basis (widened_scene):
-// 3 700 points/s against about 4 300 at 2 (3 508 run again).
+// With the whole share as the tolerance, 33 118 of the design-space study's 38 808 points would
+// pass it at 1e-4 (all but those near the sweet spot) and run again on a wider basis
+// (widened_scene): 3 700 points/s instead of about 4 300 at 2 (3 508 run again).
 inline constexpr double mode_share_overrun = 2;
 
 // The tolerance `auto` keeps the dropped modes within for the scene: its mode_tolerance, or at a

@@ -17,10 +17,7 @@ namespace sweetspot {
 struct ModeSelection {
   std::vector<int> kept;           // indices of the kept vibrational modes (2, 3, ...), ascending
   double residual_compliance = 0;  // sum psi_n^2 / omega_n^2 over the dropped ones
-  double error_estimate = 0;       // bound on the exit-speed error of dropping them, over error_scale
-  // m/s: the rigid bat's max(|v_f|, 5 % of the approach speed), the only scale known before the
-  // impact; the impact restates the estimate against its own (impact.cpp).
-  double error_scale = 0;
+  double error_estimate = 0;       // bound on the exit-speed error of dropping them, over selection_error_scale
   double pulse_duration = 0;       // s, the rigid-bat estimate used
 };
 
@@ -43,6 +40,11 @@ struct UnsolvedModes {
 // (omega^2 g(omega) and the lag), so their sum is at most that factor at `unsolved.omega` times
 // their compliance (infinite, i.e. every solved mode kept and the error unknown, when the pulse
 // could still ring them: unsolved.omega below 2 pi / T).
+// m/s: what the tolerance and the estimate are relative to, the rigid bat's max(|v_f|, 5 % of the
+// approach speed), the only scale known before the impact; the impact restates the estimate
+// against its own (impact.cpp).
+double selection_error_scale(const Ball& ball, double ball_speed, double bat_speed, double recoil);
+
 ModeSelection select_modes(const Eigen::VectorXd& omega, const Eigen::VectorXd& psi, const Ball& ball,
                            double ball_speed, double bat_speed, double recoil, double tolerance,
                            const UnsolvedModes& unsolved = {});

@@ -182,8 +182,7 @@ struct SceneGeometry {
   double recoil = 0;        // R0 of the rigid bat, free or pivoted (physics.md §5)
   ModalContact contact;     // kept modes; for a pivoted bat, the modes of the constrained bat
   std::vector<int> modes_kept;  // vibrational mode numbers kept (1 = the first vibrational mode)
-  double modes_error = 0;       // auto_modes: estimated vf error of those dropped, over modes_error_scale
-  double modes_error_scale = 0;  // m/s (ModeSelection::error_scale)
+  double modes_error = 0;       // auto_modes: estimated vf error of those dropped, over selection_error_scale
   bool drops_solved = false;    // auto_modes: a solved mode (a held one, for a pivoted bat) was dropped
   std::vector<int> kept;        // the basis's modes behind `contact` (0, 1 rigid)
   Eigen::MatrixXd held;         // pivoted: the held bat's modes in the kept ones; empty if free
