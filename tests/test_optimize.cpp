@@ -345,6 +345,42 @@ TEST_CASE("a journaled evaluation of another design is dropped with the later on
         read(dir / "whole_best.toml").substr(read(dir / "whole_best.toml").find("\nname")));
 }
 
+TEST_CASE("a resumed run's failed evaluation says why it failed, as an uninterrupted run's does", "[optimize][program]") {
+  // A bat at rest and a ball at rest never approach: every evaluation fails, with a reason. The
+  // journal keeps numbers only, so a failed row is evaluated again on resuming, for its reason.
+  TempDir dir;
+  std::string text = density_problem();
+  text.replace(text.find("omega = 51"), 10, "omega = 0");
+  text.replace(text.find("ball_speed = 40"), 15, "ball_speed = 0");
+  text.replace(text.find("max_evaluations = 400"), 21, "max_evaluations = 3");
+  const auto opt = dir.write("opt.toml", text);
+  const ProgramRun whole = run_program("optimize " + opt.string() + " -o " + dir / "whole.h5 --quiet");
+  INFO(whole.output);
+  REQUIRE(whole.exit_code == 0);
+
+  const OptimizationProblem p = load_optimization(opt);
+  const std::size_t width = p.free.size() + 1 + p.constraints.size() + 1 + 5;
+  const std::string out = dir / "resumed.h5";
+  {
+    Journal journal(Journal::path_for(out), journal_key(p.text, {p.base_source, p.reference_source},
+                                                      static_cast<std::uint64_t>(p.optimizer.max_evaluations), width),
+                    false, [](const double*) { return std::string(); });
+    std::vector<double> row(width, std::nan(""));  // no objective, no estimates
+    row[0] = p.free[0].start;                       // the design the search asks first
+    row[p.free.size() + 1] = 1;                     // status failed
+    row[p.free.size() + 2] = 0;                     // slices_used: none stated
+    journal.append({0}, row);
+  }
+  const ProgramRun resumed = run_program("optimize " + opt.string() + " -o " + out + " --resume --quiet");
+  INFO(resumed.output);
+  REQUIRE(resumed.exit_code == 0);
+  const ProgramRun same = run_command(std::string(python) + " -c \"import h5py; a = h5py.File('" + dir / "whole.h5" +
+                                      "'); b = h5py.File('" + out + "'); f = [x.decode() for x in b['failure'][()]]; "
+                                      "print(f == [x.decode() for x in a['failure'][()]], f[0].startswith('the impact at z = 0.7 m ended no_contact'))\"");
+  INFO(same.output);
+  CHECK(same.output == "True True\n");
+}
+
 TEST_CASE("a journaled ok evaluation with a NaN constraint is dropped on reading", "[optimize][program]") {
   TempDir dir;
   const auto opt = dir.write("opt.toml", density_problem("[constraints]\nmass = { max = 2 }\n"));

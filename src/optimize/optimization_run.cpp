@@ -54,7 +54,6 @@ DesignEvaluation from_row(const OptimizationProblem& p, const double* row) {
   e.objective = row[n];
   e.constraints.assign(row + n + 1, row + n + 1 + m);
   e.status = static_cast<EvaluationStatus>(static_cast<int>(row[n + 1 + m]));
-  if (e.status != EvaluationStatus::ok) e.message = "failed (as journaled)";
   const double* chosen = row + n + 2 + m;
   e.slices_used = static_cast<int>(chosen[0]);
   e.slicing_error = chosen[1], e.modes_error = chosen[2], e.step_error = chosen[3], e.total_error = chosen[4];
@@ -172,11 +171,24 @@ void serve(const OptimizationProblem& p) {
 // journaled before the optimiser sees it.
 class JournaledEvaluator {
  public:
+  // A failed evaluation's reason is text, which the journal's rows of numbers do not hold: such
+  // rows are dropped from the journal and evaluated again when asked (a design's evaluation is
+  // deterministic, and failures are rare), so that the resumed run's `failure` says what an
+  // uninterrupted run's does.
   JournaledEvaluator(const OptimizationProblem& p, Journal& journal, Verbosity verbosity)
       : problem_(p), journal_(journal), verbosity_(verbosity), recovered_(static_cast<std::size_t>(p.optimizer.max_evaluations)) {
     const std::size_t width = row_width(p);
-    for (std::size_t k = 0; k < journal.recovered_points().size(); ++k)
-      recovered_[journal.recovered_points()[k]] = from_row(p, journal.recovered_values().data() + k * width);
+    std::vector<std::uint64_t> ok_points;
+    std::vector<double> ok_rows;
+    for (std::size_t k = 0; k < journal.recovered_points().size(); ++k) {
+      const double* row = journal.recovered_values().data() + k * width;
+      DesignEvaluation e = from_row(p, row);
+      if (e.status != EvaluationStatus::ok) continue;
+      ok_points.push_back(journal.recovered_points()[k]);
+      ok_rows.insert(ok_rows.end(), row, row + width);
+      recovered_[ok_points.back()] = std::move(e);
+    }
+    if (ok_points.size() < journal.recovered_points().size()) journal.rewrite(ok_points, ok_rows);
   }
 
   DesignEvaluation operator()(const std::vector<double>& x) {
