@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "commands.hpp"
 #include "sweetspot/bat/bat_file.hpp"
@@ -99,13 +100,22 @@ void run(const ConvergenceCommandOptions& o) {
   if (study.kind != StudyKind::impact)
     throw InputError(o.study + ": kind = \"" + to_string(study.kind) +
                      "\": convergence needs a study of kind \"impact\" (a ball on a bat)");
+  const GridPoint point = grid_point(study, 0);
+  // The table sets every integrator's step and tolerance itself, and the sweep each accuracy: a
+  // study's own choice of step would stand in for theirs at every row.
+  const std::pair<const char*, double> chosen[] = {{"accuracy", point.scene.accuracy},
+                                                   {"step_accuracy", point.scene.step_accuracy}};
+  for (const auto& [key, value] : chosen)
+    if (value > 0)
+      throw InputError(fmt::format("{}: key '{}' = {:g}: convergence runs every integrator at its own steps and "
+                                   "each accuracy of its sweep itself; expected no {} in the study",
+                                   o.study, key, value, key));
   const std::filesystem::path out =
       o.output_given ? o.output : std::filesystem::path(o.study).stem().string() + "_convergence.h5";
   // Before any work, and held to the end: a run or another convergence writing the same output
   // would share its temporary file.
   check_output_paths(out, {dataset_temporary_path(out), OutputLock::path_for(out)}, study_inputs(study));
   const OutputLock lock(out);
-  const GridPoint point = grid_point(study, 0);
   if (!study.axes.empty())
     spdlog::info("{} has {} grid points: using grid point 0 ({})", o.study, study.points(),
                  describe_point(study, point));

@@ -302,15 +302,12 @@ void resolve_integrator(const CLI::App& cmd, CollisionOptions& options) {
 // --accuracy (the total) and --step-accuracy, as a study's keys: each in its range, and neither
 // beside what it chooses itself (it would be silently overridden).
 void check_accuracy(const CLI::App& cmd, const ImpactScene& scene) {
-  const auto value = [](double x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", x);
-    return std::string(text);
-  };
+  // The value as written (an empty one reads as 0).
+  const auto value = [&cmd](const char* name) { return "'" + cmd.get_option(name)->results().front() + "'"; };
   if (cmd.count("--accuracy") && !(scene.accuracy >= min_accuracy && scene.accuracy <= max_accuracy))
-    throw InputError(cmd.get_name() + ": --accuracy " + value(scene.accuracy) + ": expected " + accuracy_expected);
+    throw InputError(cmd.get_name() + ": --accuracy " + value("--accuracy") + ": expected " + accuracy_expected);
   if (cmd.count("--step-accuracy") && !(std::isfinite(scene.step_accuracy) && scene.step_accuracy > 0))
-    throw InputError(cmd.get_name() + ": --step-accuracy " + value(scene.step_accuracy) + ": expected " +
+    throw InputError(cmd.get_name() + ": --step-accuracy " + value("--step-accuracy") + ": expected " +
                      step_accuracy_expected);
   const auto option = [](std::string key) {
     std::ranges::replace(key, '_', '-');
@@ -406,7 +403,12 @@ void add_impact_command(CLI::App& app) {
     check_oblique_options(o->scene.oblique);
     resolve_integrator(*cmd, o->scene.integrator);
     resolve_ball(*cmd, o->named_ball, o->scene.ball);
-    if (cmd->count("--n2000") && cmd->count("--modes") == 0) o->modes = std::to_string(n2000_modes);
+    if (cmd->count("--n2000") && cmd->count("--modes") == 0) {
+      if (cmd->count("--accuracy"))
+        throw InputError("impact: --n2000 keeps N2000's 18 modes, which cannot be held to --accuracy: give --modes "
+                         "auto or all beside it, or no --n2000");
+      o->modes = std::to_string(n2000_modes);
+    }
     if (!o->cm_speed && !o->center) throw InputError("impact: give the swing as --cm-speed or as --center");
     run_impact(*o);
   });

@@ -67,13 +67,17 @@ void check_step_or_accuracy(const Settings& s) {
                  accuracy->where.key + "' is also given, and chooses " + pair.chooses + " itself");
   }
   // A fixed mode count has no estimate of what its dropped modes cost: it cannot be held to one.
-  const Setting *accuracy = s["accuracy"], *modes = s["modes"];
+  const Setting *accuracy = s["accuracy"], *modes = s["modes"], *preset = s["preset"];
   if (accuracy && modes)
     for (const double count : modes->values)
       if (count >= 0)
         reject(modes->where, format_number(count),
                "a fixed number of modes cannot be held to key '" + accuracy->where.key +
                    "': expected \"auto\" (the default) or \"all\"");
+  if (accuracy && preset && !modes)
+    reject(preset->where, "\"n2000\"",
+           "the preset keeps N2000's 18 modes, which cannot be held to key '" + accuracy->where.key +
+               "': expected modes = \"auto\" or \"all\" beside it, or no preset");
 }
 
 // The bat files, each read once into its design.
