@@ -171,3 +171,32 @@ TEST_CASE("An output name too long for what is written beside it is refused befo
     CHECK(s.snapshot() == before);
   }
 }
+
+TEST_CASE("An output named like another output's side file, or whose side file is a link, is refused before any work",
+          "[run][output]") {
+  // `-o out.h5.lock` would be taken (and deleted) by a run with `-o out.h5` as its lock; a link at
+  // a side file's name would be written through, over the file it points to.
+  StudyDir s;
+  s.dir.write("victim.txt", "somebody's file");
+  const auto refused_everywhere = [&](const std::string& output, const std::string& expected, bool convergence) {
+    const auto before = s.snapshot();
+    for (const std::string command : {"run", "convergence --quick"}) {
+      if (command != "run" && !convergence) continue;
+      const std::string arguments = command + " " + s.study.string() + " -o " + output;
+      INFO(arguments);
+      require_refused(run_program(arguments), expected);
+      CHECK(s.snapshot() == before);
+    }
+  };
+  for (const char* side : {"out.h5.lock", "out.h5.tmp", "out.h5.journal", "out.h5.journal.new"})
+    refused_everywhere(s / side, "the name of the", true);
+  // The journal and its rewrite are `run`'s alone; both commands take the lock and a temporary file.
+  for (const auto& [side, convergence] : {std::pair{".lock", true}, {".tmp", true}, {".journal", false},
+                                         {".journal.new", false}}) {
+    const fs::path link = s.dir.path / (std::string("out.h5") + side);
+    fs::create_symlink(s.dir.path / "victim.txt", link);
+    refused_everywhere(s / "out.h5", std::string("out.h5") + side + ": is a symbolic link", convergence);
+    fs::remove(link);
+  }
+  CHECK(file_text(s / "victim.txt") == "somebody's file");
+}

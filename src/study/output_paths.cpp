@@ -82,6 +82,18 @@ void check_name_length(const fs::path& output, const fs::path& file) {
                        " its file system allows; expected a shorter output name");
 }
 
+// An output named like another output's side file would be taken by that output's run for its
+// own, and deleted or overwritten (`-o out.h5.lock` by the lock of a run with `-o out.h5`).
+void check_not_a_side_file(const fs::path& output) {
+  const std::string name = output.filename().string();
+  const std::pair<const char*, const char*> sides[] = {
+      {".lock", "lock"}, {".tmp", "temporary file"}, {".journal", "journal"}, {".journal.new", "rewritten journal"}};
+  for (const auto& [suffix, what] : sides)
+    if (name.size() > std::strlen(suffix) && name.ends_with(suffix))
+      refuse(output, std::string("ends with '") + suffix + "', the name of the " + what + " sweetspot writes beside " +
+                         "another output; expected an output name without it (e.g. a .h5 file)");
+}
+
 }  // namespace
 
 std::vector<fs::path> study_inputs(const Study& study) {
@@ -103,10 +115,16 @@ void check_output_paths(const fs::path& output, const std::vector<fs::path>& bes
     refuse(output, "is a directory; expected the name of a file to write (e.g. " + (output / "result.h5").string() + ")");
   if (fs::exists(status) && !fs::is_regular_file(status))
     refuse(output, "exists and is not a regular file; expected the name of a file to write");
+  check_not_a_side_file(output);
   check_directory(output);
   check_name_length(output, output);
   for (const fs::path& file : beside) check_name_length(output, file);
   for (const fs::path& file : beside) {
+    // Written through, a link would overwrite whatever file it points to.
+    std::error_code ignored;
+    if (fs::is_symlink(fs::symlink_status(file, ignored)))
+      refuse(file, "is a symbolic link; expected no file there or a regular one (sweetspot writes it beside " +
+                       output.string() + ")");
     const fs::file_status s = status_of(file);
     if (fs::exists(s) && !fs::is_regular_file(s))
       refuse(file, std::string(fs::is_directory(s) ? "is a directory" : "is not a regular file") +
