@@ -492,7 +492,8 @@ class Progress {
 };
 
 // Why a journal's row cannot be a finished point of this study, or "" when it can: a status
-// outside the enumeration, a failed point with values, an ok point without its exit speed.
+// outside the enumeration, a failed point with values, an ok point without its exit speed (an
+// inaccurate point keeps what it got, which may be NaN where a finer slicing could not be solved).
 std::string recovered_row_problem(const OutputLayout& layout, const double* row) {
   const auto column = [&layout](const std::string& name) {
     const auto it = std::find(layout.names.begin(), layout.names.end(), name);
@@ -506,6 +507,7 @@ std::string recovered_row_problem(const OutputLayout& layout, const double* row)
   if (!named) return fmt::format("status {} is none of the statuses", status);
   if (status == static_cast<double>(CollisionStatus::ok))
     return vf_at >= 0 && !std::isfinite(row[vf_at]) ? fmt::format("status ok with vf = {}", row[vf_at]) : "";
+  if (stores_values(static_cast<CollisionStatus>(static_cast<int>(status)))) return "";
   for (int i = 0; i < layout.width; ++i)
     if (i != status_at && !std::isnan(row[i])) return fmt::format("a failed point with a value {}", row[i]);
   return "";

@@ -188,7 +188,7 @@ double energy_value(const ImpactEnergy& e, const std::string& name) {
 
 double scalar_value(const ImpactResult& r, const std::string& name) {
   if (name == "status") return static_cast<double>(r.status);
-  if (r.status != CollisionStatus::ok) return missing;
+  if (!stores_values(r.status)) return missing;
   if (name == "vf" || name == "bbs") return r.vf;  // the ball's exit speed is the batted-ball speed
   if (name == "bat_speed") return r.bat_speed;
   if (name == "hoop_frequency") return r.hoop_frequency;
@@ -372,8 +372,8 @@ void OutputLayout::extract(const ImpactResult& result, double* row) const {
       continue;
     }
     // A failed point has none; a point keeping fewer modes than the dimension leaves NaN after them.
-    const std::vector<double> values = result.status == CollisionStatus::ok ? array_value(result, names[i])
-                                                                             : std::vector<double>{};
+    const std::vector<double> values = stores_values(result.status) ? array_value(result, names[i])
+                                                                     : std::vector<double>{};
     for (int n = 0; n < widths[i]; ++n) row[offsets[i] + n] = n < static_cast<int>(values.size()) ? values[n] : missing;
   }
 }

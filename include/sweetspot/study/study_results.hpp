@@ -16,6 +16,12 @@
 
 namespace sweetspot {
 
+// Whether a point of this status stores its values: an ok one, and an inaccurate one (a stated
+// accuracy not met: its result and estimates say how close it came). Any other gives NaN.
+inline bool stores_values(CollisionStatus status) {
+  return status == CollisionStatus::ok || status == CollisionStatus::inaccurate;
+}
+
 // Where each requested output sits in a point's row of values.
 struct OutputLayout {
   std::vector<std::string> names;
