@@ -19,7 +19,7 @@ module_dir, program, source, build, work = sys.argv[1:6]
 sys.path.insert(0, module_dir)
 import numpy as np  # noqa: E402
 import sweetspot  # noqa: E402
-from python_checks import check, finish  # noqa: E402
+from python_checks import check, finish, refused  # noqa: E402
 
 BAT = f"{source}/studies/bats/r161.toml"
 
@@ -244,6 +244,11 @@ check(accurate["status"] == "ok" and accurate["total_error"] <= 1e-3 and accurat
 many = sweetspot.impacts(bat, z=[0.6, 0.7], ball_speed=40, cm_speed=10, accuracy=1e-3)
 check(many.vf.values[1] == accurate["vf"] and many.slices_used.values[1] == accurate["slices_used"],
       "impacts at an accuracy as impact")
+# ... with every estimate and their sum, and the step chosen.
+check(all(many[k].values[1] == accurate[k] for k in ("slicing_error", "modes_error", "step_error", "total_error")) and
+      many.step_used.values[1] > 0 and
+      (many.total_error == many.slicing_error + many.modes_error + many.step_error).all(),
+      f"impacts' estimates at an accuracy as impact's: total {many.total_error.values}")
 # Near the handle the ball is caught again and auto's unsolved modes pass their share: the rung
 # runs again on a wider basis (docs/numerics.md), which Python solves as the program does.
 handle = dict(z=0.405, ball_speed=30, e0=0.44, center=0.09, omega=51, accuracy=1e-3)
@@ -253,6 +258,11 @@ program_widened = program_json(["--z", "0.405", "--ball-speed", "30", "--e0", "0
 check(widened["status"] == "ok" and widened["contacts"] > 1 and widened["modes_error"] <= 2.5e-4 and
       widened["vf"] == program_widened["vf"], f"a widened rung as the program's: {widened['modes_error']}")
 check(sweetspot.Bat.from_knots(*rod_args, density=np.float64(700), slices=np.int64(40)).slices == 40, "numpy args")
+# A numpy integer is a mode count as an int is; numpy's bool is not.
+check(len(sweetspot.impact(bat, **swing, modes=np.int64(18))["modes_kept"]) == 18 and
+      sweetspot.certify(bat, modes=np.int32(18))["bbcor"] == sweetspot.certify(bat, modes=18)["bbcor"], "numpy modes")
+check(refused(lambda: sweetspot.impact(bat, **swing, modes=np.bool_(True)), "modes True", "expected a number"),
+      "numpy bool is no mode count")
 
 # 4. The GIL released: two Python threads each run impacts; both finish with the same numbers.
 zs = np.linspace(0.45, 0.84, 3000)

@@ -72,9 +72,14 @@ ImpactResult checked(ImpactResult r) {
   return r;
 }
 
-// One impact as `impacts` runs it: its estimates only those a stated accuracy needs.
+// One impact as `impacts` runs it: estimates only at a stated accuracy, where the modes' and the
+// step's cost nothing (the modes' bound and the step's share) and the slicing's is the ladder's.
 ImpactResult run_impact(BatHandle& bat, const SceneArgs& args) {
-  if (args.scene.accuracy > 0) return checked(run_within_accuracy(bat, args));
+  if (args.scene.accuracy > 0) {
+    SceneArgs estimated = args;
+    estimated.scene.error_estimates = true;
+    return checked(run_within_accuracy(bat, estimated));
+  }
   return checked(simulate_impact(*scene_basis(bat, args), args.scene));
 }
 
@@ -158,7 +163,7 @@ const std::vector<std::string> impacts_outputs = {
     "bpf",    "contact_time", "collision_time", "u_max",      "peak_force", "impulse",
     "energy_initial", "energy_ball", "energy_bat_translation", "energy_bat_rotation", "energy_vibration",
     "energy_ball_dissipated", "energy_residual", "modes_error", "hoop_frequency", "energy_barrel",
-    "energy_damped", "barrel_compression", "slicing_error", "total_error", "slices_used",
+    "energy_damped", "barrel_compression", "slicing_error", "step_error", "total_error", "slices_used", "step_used",
     "launch_angle", "backspin", "sidespin", "energy_ball_spin", "energy_bat_tangential", "energy_friction"};
 
 // Point i of the output columns (impacts_outputs' order).
@@ -188,8 +193,10 @@ void fill_point(const ImpactResult& r, double* const* columns, py::ssize_t i) {
                            r.energy.damped,
                            r.barrel_compression,
                            r.slicing_error,
+                           r.step_error,
                            r.total_error,
                            static_cast<double>(r.slices_used),
+                           r.step_used,
                            r.launch.angle,
                            r.launch.backspin,
                            r.launch.sidespin,

@@ -194,10 +194,14 @@ int parse_modes(const py::handle& value) {
     const std::string text = value.cast<std::string>();
     if (text == "all") return all_modes;
     if (text == "auto") return auto_modes;
-  } else if (py::isinstance<py::int_>(value) && !py::isinstance<py::bool_>(value)) {
-    // Compared as Python ints: 10**20 is no C++ integer, and refused like any other count too large.
-    if (value.attr("__ge__")(0).cast<bool>() && value.attr("__le__")(2 * max_slices).cast<bool>())
-      return value.cast<int>();
+  } else if (!py::isinstance<py::bool_>(value) &&
+             py::isinstance(value, py::module_::import("numbers").attr("Integral"))) {
+    // Any integer (numpy's too; not numpy's bool, which is no Integral), compared as a Python int:
+    // 10**20 is no C++ integer, and refused like any other count too large.
+    const auto count = py::reinterpret_steal<py::int_>(PyNumber_Index(value.ptr()));
+    if (!count) throw py::error_already_set();
+    if (count.attr("__ge__")(0).cast<bool>() && count.attr("__le__")(2 * max_slices).cast<bool>())
+      return count.cast<int>();
   }
   throw InputError("modes " + py::str(value).cast<std::string>() +
                    ": expected a number of vibrational modes (0, 1, 2, ...), 'all' or 'auto'");
