@@ -294,8 +294,16 @@ variables = ["bbcor", "status"]
   CHECK(within(0.6, triple("bbcor")));
   CHECK(within(0.49, triple("bbcor_mean")));
   CHECK(within(0.1 / std::sqrt(12.0), triple("bbcor_std")));
-  // A bat given as well is refused: the study names its bat.
+  // A bat given as well is refused: the study names its bat. So is any of the rig's settings,
+  // which the study sets (ignored, it would certify what was not asked).
   require_refused(run_program("certify r161 --uncertainty " + study.string()), "give one or the other");
+  for (const std::string option :
+       {"--accuracy 5", "--accuracy 1e-3", "--modes 18", "--standard besr", "--ball-speed 93mph"}) {
+    INFO(option);
+    require_refused(run_program("certify --uncertainty " + study.string() + " " + option),
+                    {"certify: " + option.substr(0, option.find(' ')), "with --uncertainty",
+                     "the study sets the rig's settings"});
+  }
 }
 
 TEST_CASE("A killed uncertainty study resumes to the file of an uninterrupted run", "[uncertainty]") {

@@ -4,6 +4,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "bat_argument.hpp"
 #include "certify_uncertainty.hpp"
@@ -186,8 +187,20 @@ void add_certify_command(CLI::App& app) {
                   "total relative error of the measure (1e-7 to 0.1): chooses the slices, modes and step");
   cmd->add_flag("--json", o->json, "print one JSON object (in SI units)");
   o->units.add_option(*cmd);
-  cmd->callback([o] {
+  cmd->callback([o, cmd] {
     o->units.check_text_output("certify", o->json);
+    // An uncertainty study sets the rig's settings itself: these would be silently ignored.
+    if (!o->uncertainty.empty())
+      for (const char* name : {"--standard", "--ball", "--e0", "--ball-speed", "--pivot-point", "--theory", "--slices",
+                               "--modes", "--accuracy"})
+        if (cmd->count(name) > 0) {
+          // A quantity's value is kept converted to SI: its option is named alone.
+          const bool quantity = std::string_view(name) == "--ball-speed" || std::string_view(name) == "--pivot-point";
+          throw InputError(std::string("certify: ") + name +
+                           (quantity ? "" : " " + cmd->get_option(name)->results().front()) + " with --uncertainty " +
+                           o->uncertainty +
+                           ": the study sets the rig's settings; give it in the study's [scene] instead");
+        }
     run_certify(*o);
   });
 }
