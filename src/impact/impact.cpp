@@ -93,7 +93,7 @@ void close_balance(ImpactResult& r) {
   char text[200];
   std::snprintf(text, sizeof text,
                 "the energy balance is off by %.2g of the initial energy: the step is too coarse for this pulse "
-                "(take a smaller dt, or state accuracy)",
+                "(take a smaller dt or tolerance, or a tighter accuracy or step_accuracy)",
                 std::abs(e.residual) / e.initial);
   r.status = CollisionStatus::unbalanced;
   r.message = text;

@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -44,8 +45,16 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 struct RankTally {
   double impact_seconds = 0;
   std::size_t past_radius = 0;
-  std::size_t failed = 0;      // points with status failed or inaccurate, each logged with its reason up to
-  std::size_t inaccurate = 0;  // failures_logged; of them, those that missed a stated accuracy
+  // Points by status. Every one but ok and no_contact (ball and bat never approach: an outcome,
+  // not a failure) is logged with its reason, up to failures_logged.
+  std::array<std::size_t, static_cast<std::size_t>(last_collision_status) + 1> by_status{};
+  std::size_t failed() const {
+    std::size_t n = 0;
+    for (std::size_t k = 0; k < by_status.size(); ++k)
+      if (is_failure(static_cast<CollisionStatus>(k))) n += by_status[k];
+    return n;
+  }
+  static bool is_failure(CollisionStatus s) { return s != CollisionStatus::ok && s != CollisionStatus::no_contact; }
 };
 
 // Failed points logged one by one per rank; the rest are only counted, so that a study whose
@@ -60,10 +69,17 @@ void log_rank_summary(int rank, int solves, double solve_seconds, const RankTall
     spdlog::warn("rank {}: {} points compressed the ball past its radius (u_max > radius): the force law is not "
                  "meant for that",
                  rank, tally.past_radius);
-  if (tally.failed > 0)
-    spdlog::warn("rank {}: {} points failed ({} with status failed, {} inaccurate; {} of them with their reason above)",
-                 rank, tally.failed, tally.failed - tally.inaccurate, tally.inaccurate,
-                 std::min(tally.failed, failures_logged));
+  if (const std::size_t failed = tally.failed(); failed > 0) {
+    std::string statuses;
+    for (std::size_t k = 0; k < tally.by_status.size(); ++k)
+      if (RankTally::is_failure(static_cast<CollisionStatus>(k)) && tally.by_status[k] > 0)
+        statuses += fmt::format("{}{} {}", statuses.empty() ? "" : ", ", tally.by_status[k],
+                                to_string(static_cast<CollisionStatus>(k)));
+    spdlog::warn("rank {}: {} points failed ({}; {} of them with their reason above)", rank, failed, statuses,
+                 std::min(failed, failures_logged));
+  }
+  if (const std::size_t none = tally.by_status[static_cast<std::size_t>(CollisionStatus::no_contact)]; none > 0)
+    spdlog::info("rank {}: {} points without contact (ball and bat never approach there)", rank, none);
 }
 
 // "point 17 (z = 0.84, ball_speed = 30)": a grid point by its index and its axis values.
@@ -440,12 +456,10 @@ std::vector<double> compute_chunk(const Study& study, const OutputLayout& layout
   }
   refine_to_accuracy(study, cache, grid, results);
   std::vector<double> rows(points.size() * layout.width);
-  std::vector<char> failed(points.size(), 0);
   std::size_t past_radius = 0;
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (lost[i]) {
       std::fill_n(rows.data() + i * layout.width, layout.width, std::nan(""));
-      failed[i] = 1;
       continue;
     }
     const ImpactResult& r = results[i];
@@ -454,18 +468,15 @@ std::vector<double> compute_chunk(const Study& study, const OutputLayout& layout
         r.u_max > grid[i].scene.ball.radius)
       ++past_radius;
     layout.extract(r, rows.data() + i * layout.width);
-    failed[i] = r.status == CollisionStatus::failed || r.status == CollisionStatus::inaccurate;
-    if (failed[i]) reasons[i] = r.message;
+    if (RankTally::is_failure(r.status)) reasons[i] = r.message;
   }
   tally.impact_seconds += seconds_since(start);
   tally.past_radius += past_radius;
   for (std::size_t i = 0; i < points.size(); ++i) {
-    if (!failed[i]) continue;
-    const bool inaccurate = !lost[i] && results[i].status == CollisionStatus::inaccurate;
-    tally.inaccurate += inaccurate;
-    if (tally.failed++ < failures_logged)
-      spdlog::warn("{} {}: {}", describe_point(study, points[i], grid[i]), inaccurate ? "inaccurate" : "failed",
-                   reasons[i]);
+    const CollisionStatus status = lost[i] ? CollisionStatus::failed : results[i].status;
+    if (RankTally::is_failure(status) && tally.failed() < failures_logged)
+      spdlog::warn("{} {}: {}", describe_point(study, points[i], grid[i]), to_string(status), reasons[i]);
+    ++tally.by_status[static_cast<std::size_t>(status)];
   }
   return rows;
 }
