@@ -249,6 +249,12 @@ check(all(many[k].values[1] == accurate[k] for k in ("slicing_error", "modes_err
       many.step_used.values[1] > 0 and
       (many.total_error == many.slicing_error + many.modes_error + many.step_error).all(),
       f"impacts' estimates at an accuracy as impact's: total {many.total_error.values}")
+# A point of a failing status has no values, as in a study's dataset (Dormand-Prince at 1e-2 on a
+# nearly dead ball at the tip ends unbalanced); the other point is ok.
+statuses = sweetspot.impacts(sweetspot.Bat.load("torpedo"), z=np.array([0.83, 0.7]), ball_speed=150, center=0.09,
+                             omega=51, e0=0.2, integrator="dopri", accuracy=1e-2)
+check(list(statuses.status.values) == [4, 0] and np.isnan(statuses.vf.values[0]) and statuses.vf.values[1] > 0,
+      f"impacts: an unbalanced point without values: {statuses.status.values} {statuses.vf.values}")
 # Near the handle the ball is caught again and auto's unsolved modes pass their share: the rung
 # runs again on a wider basis (docs/numerics.md), which Python solves as the program does.
 handle = dict(z=0.405, ball_speed=30, e0=0.44, center=0.09, omega=51, accuracy=1e-3)

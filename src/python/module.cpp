@@ -271,6 +271,9 @@ py::dict run_impacts(BatHandle& bat, const py::dict& scalars, const py::dict& ar
           for (const auto& [which, values] : data) set_point_argument(args.scene, which, values[i]);
           const ImpactResult r = run_impact(bat, args);
           fill_point(r, outputs.data(), i);
+          // As a study's dataset stores it: a point of a failing status has no values.
+          if (!stores_values(r.status))
+            for (double* output : outputs) output[i] = std::nan("");
           status[i] = static_cast<int>(r.status), contacts[i] = r.contacts;
           kept[i] = static_cast<int>(r.modes_kept.size());
         } catch (const InputError& e) {
