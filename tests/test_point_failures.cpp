@@ -73,7 +73,8 @@ TEST_CASE("Points that throw fail alone under threads and ranks, with their reas
 TEST_CASE("A killed run with failed points resumes to the dataset of an uninterrupted one", "[run][failures]") {
   TempDir dir;
   const auto study = dir.write("study.toml", faulty_study(200));  // 2000 points
-  REQUIRE(run_faulty(1, "run " + study.string() + " -o " + dir / "whole.h5 --quiet").exit_code == 0);
+  const ProgramRun whole = run_faulty(1, "run " + study.string() + " -o " + dir / "whole.h5 --quiet");
+  REQUIRE(whole.exit_code == 0);
   const std::string out = dir / "killed.h5";
   const ProgramRun killed = run_and_kill(std::string(SWEETSPOT_FAULTY_PROGRAM), "run " + study.string() + " -o " + out + " --quiet", out);
   INFO(killed.output);
@@ -84,6 +85,17 @@ TEST_CASE("A killed run with failed points resumes to the dataset of an uninterr
   CHECK_THAT(resumed.output, Catch::Contains("resuming:"));
   require_identical(dir / "whole.h5", out);
   require_statuses(out, "ball_speed 13,17 failed");
+  // The journal keeps no reasons: its failed points are computed again, and the resumed run counts
+  // and logs every failed point, as the uninterrupted one did.
+  const auto failed_count = [](const std::string& log) {  // "rank 0: N points failed (": N
+    const std::size_t at = log.find(" points failed (");
+    if (at == std::string::npos) return std::string();
+    const std::size_t from = log.rfind(' ', at - 1) + 1;
+    return log.substr(from, at - from);
+  };
+  CHECK_FALSE(failed_count(whole.output).empty());
+  CHECK(failed_count(resumed.output) == failed_count(whole.output));
+  CHECK_THAT(resumed.output, Catch::Contains("failed: test fault at ball_speed = 13"));
 }
 
 TEST_CASE("A point at the very end of a bat is on it, whatever its slice centres round to", "[run][failures]") {

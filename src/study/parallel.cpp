@@ -571,11 +571,8 @@ class Coordinator {
   Coordinator(const Study& study, const OutputLayout& layout, const RunOptions& options, int ranks, Journal& journal)
       : study_(study), layout_(layout), ranks_(ranks), cache_(study), journal_(journal),
         rows_(study.points() * layout.width, std::nan("")), done_(study.points(), false),
-        progress_(study.points(), journal.recovered_points().size(), options.verbosity) {
-    const std::vector<std::uint64_t>& recovered = journal_.recovered_points();
-    for (std::size_t i = 0; i < recovered.size(); ++i)
-      store_row(recovered[i], journal_.recovered_values().data() + i * layout.width);
-    if (!recovered.empty()) spdlog::info("resuming: {} of {} points already done", recovered.size(), study.points());
+        resumed_(resume_journaled()), progress_(study.points(), resumed_, options.verbosity) {
+    if (resumed_ > 0) spdlog::info("resuming: {} of {} points already done", resumed_, study.points());
     for (std::size_t point : task_order(study))
       if (!done_[point]) todo_.push_back(point);
     const std::size_t threads = static_cast<std::size_t>(omp_get_max_threads());
@@ -598,9 +595,31 @@ class Coordinator {
   void log_summary(Clock::time_point start) const { log_rank_summary(0, cache_.solves(), cache_.solve_seconds(), tally_, start); }
 
   const std::vector<double>& rows() const { return rows_; }
-  std::size_t resumed_points() const { return journal_.recovered_points().size(); }
+  std::size_t resumed_points() const { return resumed_; }
 
  private:
+  // The journal's points kept as done, but those of a failing status: the journal holds no text,
+  // so they are computed again (deterministic, and rare) for the reason the log gives, and dropped
+  // from the journal, which will hold them once more. Returns how many are kept.
+  std::size_t resume_journaled() {
+    const std::vector<std::uint64_t>& recovered = journal_.recovered_points();
+    const auto status_name = std::ranges::find(layout_.names, "status");
+    const int status_at =
+        status_name == layout_.names.end() ? -1 : layout_.offsets[status_name - layout_.names.begin()];
+    std::vector<std::uint64_t> kept;
+    std::vector<double> kept_rows;
+    for (std::size_t i = 0; i < recovered.size(); ++i) {
+      const double* row = journal_.recovered_values().data() + i * layout_.width;
+      if (status_at >= 0 && RankTally::is_failure(static_cast<CollisionStatus>(static_cast<int>(row[status_at]))))
+        continue;
+      store_row(recovered[i], row);
+      kept.push_back(recovered[i]);
+      kept_rows.insert(kept_rows.end(), row, row + layout_.width);
+    }
+    if (kept.size() < recovered.size()) journal_.rewrite(kept, kept_rows);
+    return kept.size();
+  }
+
   std::vector<std::uint64_t> take_chunk(std::size_t size) {
     const std::size_t end = std::min(next_ + size, todo_.size());
     std::vector<std::uint64_t> chunk(todo_.begin() + next_, todo_.begin() + end);
@@ -657,6 +676,7 @@ class Coordinator {
   Journal& journal_;
   std::vector<double> rows_;
   std::vector<bool> done_;
+  std::size_t resumed_;
   Progress progress_;
   std::vector<std::uint64_t> todo_;
   std::size_t next_ = 0, chunk_ = 1, own_chunk_ = 1;
