@@ -447,6 +447,27 @@ TEST_CASE("A stated accuracy the bat cannot be solved finely enough for ends ina
   CHECK_THROWS_AS(simulate_within_accuracy(basis_at, 336, BeamTheory::timoshenko, scene), InputError);
 }
 
+TEST_CASE("A bat that cannot be cut finer at all ends inaccurate, saying its slicing cannot be estimated",
+          "[error_estimates]") {
+  // Euler-Bernoulli at its 400 slices: no finer slicing exists, so no Richardson estimate either.
+  BatSource source;
+  const BatDesign design = load_bat_design(source_path("studies/bats/r161.toml"), source);
+  ImpactScene scene = high_impact();
+  scene.z = 0.605;
+  scene.accuracy = 1e-3;
+  std::map<int, ModalBasis> bases;
+  const auto basis_at = [&](int slices, const ImpactScene&) -> const ModalBasis& {
+    return bases.try_emplace(slices, compute_modes(bat_with_slices(design, slices), BeamTheory::euler_bernoulli))
+        .first->second;
+  };
+  const ImpactResult r =
+      simulate_within_accuracy(basis_at, max_euler_bernoulli_slices, BeamTheory::euler_bernoulli, scene);
+  CHECK(r.status == CollisionStatus::inaccurate);
+  CHECK(std::isnan(r.slicing_error));
+  CHECK_THAT(r.message, Catch::Contains("the bat's 400 slices cannot be cut finer") &&
+                            Catch::Contains("its slicing error cannot be estimated"));
+}
+
 TEST_CASE("A stated accuracy's honesty over the shipped bats and scenes", "[.honesty]") {
   const std::vector<double> zs = {0.255, 0.455, 0.555, 0.655, 0.755};
   for (const double accuracy : {1e-3, 1e-4})

@@ -131,6 +131,11 @@ bool SlicingLadder::add(ImpactResult r, const ImpactScene& ran) {
                   "nothing of it for the slicing", accuracy_, result_.modes_error,
                   std::isnan(result_.step_error) ? accuracy_budget(accuracy_).step : result_.step_error,
                   std::isnan(result_.step_error) ? ", its share: not estimated here" : "");
+  else if (std::isnan(result_.slicing_error))  // the bat's own slicing could not be cut even once
+    std::snprintf(why, sizeof why,
+                  "accuracy %.3g: the bat's %d slices cannot be cut finer (max_slices %d, or %d for Euler-Bernoulli), "
+                  "so its slicing error cannot be estimated; expected a bat of fewer slices",
+                  accuracy_, result_.slices_used, max_slices, max_euler_bernoulli_slices);
   else
     std::snprintf(why, sizeof why,
                   "accuracy %.3g needs the bat cut finer than %d slices (max_slices %d, or %d for Euler-Bernoulli); "
