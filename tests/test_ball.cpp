@@ -273,6 +273,32 @@ TEST_CASE("The ball file of docs/balls.md gives its lab's CORs", "[ball]") {
     CHECK(ball_lab_test(ball, speed, 0, fine()).cor == Approx(cor).margin(1e-3));
 }
 
+TEST_CASE("Beside a preset, what a [ball] table does not give stays the preset's: one COR keeps its speed and slope",
+          "[ball]") {
+  const TempDir dir;
+  const Ball mlb = load_ball("mlb").ball;
+  REQUIRE(mlb.cor_slope < 0);
+  // The preset's own COR restated: the same ball, bit for bit.
+  const Ball same = load_ball(dir.write("same.toml", "[ball]\npreset = \"mlb\"\ncor = " + std::to_string(mlb.e0) +
+                                                         "\n").string()).ball;
+  CHECK(same.e0 == Approx(mlb.e0).epsilon(1e-15));
+  CHECK(same.cor_speed == mlb.cor_speed);
+  CHECK(same.cor_slope == mlb.cor_slope);
+  // Another COR at a speed given: that speed, the preset's slope; a slope given replaces it.
+  const Ball moved = load_ball(dir.write("moved.toml", "[ball]\npreset = \"mlb\"\ncor = 0.5\ncor_speed = \"60 mph\"\n")
+                                   .string()).ball;
+  CHECK(moved.e0 == 0.5);
+  CHECK(moved.cor_speed == Approx(26.8224));
+  CHECK(moved.cor_slope == mlb.cor_slope);
+  const Ball flat =
+      load_ball(dir.write("flat.toml", "[ball]\npreset = \"mlb\"\ncor = 0.5\ncor_slope = 0\n").string()).ball;
+  CHECK(flat.cor_slope == 0);
+  // CORs at several speeds are the whole law: their own slope, not the preset's.
+  const Ball lab = load_ball(dir.write("lab.toml", "[ball]\npreset = \"mlb\"\ncor = [[26.8, 0.55], [53.6, 0.55]]\n")
+                                 .string()).ball;
+  CHECK(lab.cor_slope == Approx(0).margin(1e-12));
+}
+
 TEST_CASE("Dynamic stiffness measured twice at one speed is a replicate: N2000's exponent, not a linear spring", "[ball]") {
   const TempDir dir;
   const auto once = dir.write("once.toml", "[ball]\npreset = \"mlb\"\ndynamic_stiffness = [[\"60 mph\", 1.9e6]]\n");

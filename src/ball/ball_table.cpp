@@ -114,8 +114,14 @@ BallFit read_ball_table(const toml::table& table, const std::string& where) {
   if (table.contains("radius"))
     t.radius = ranged_quantity(table, "radius", Dimension::length, ball_radius_range, where);
   if (table.contains("cor")) {
+    // One COR beside a preset replaces the preset's at the preset's speed (unless cor_speed says
+    // another) and keeps its slope, the ball's own fall with speed (unless cor_slope is given):
+    // what is not given stays the preset's. CORs at several speeds are the whole law.
+    const bool one = table.get("cor")->is_number(), from_preset = table.contains("preset") && t.cor.size() == 1;
+    const double preset_speed = from_preset ? t.cor[0].speed : 0;
     t.cor = speed_values(table, "cor", "cor_speed", where);
-    t.cor_slope = 0;
+    if (one && from_preset && !table.contains("cor_speed")) t.cor[0].speed = preset_speed;
+    if (!(one && from_preset)) t.cor_slope = 0;
   } else if (table.contains("cor_speed")) {
     reject(where, "cor_speed", *table.get("cor_speed"), "cor beside it (the COR at that speed)");
   }
