@@ -196,6 +196,7 @@ TEST_CASE("Dry air is an ideal gas and humid air the trajectory calculator's den
   Air dry;
   dry.relative_humidity = 0;
   dry.temperature = 288.15;
+  dry.pressure = 101325;
   CHECK(air_density(dry) == Approx(101325 / (287.058 * 288.15)).epsilon(1e-14));
   // The calculator's own formula (pybaseball's parameters.py): 70 F, 50 %, 29.92 inHg, 15 ft.
   Air ballpark;
@@ -332,6 +333,23 @@ TEST_CASE("A study's distance is the flight of each impact's launch, in the stud
     CHECK(r.apex == Approx(f.apex).epsilon(1e-12));
     CHECK(r.hang_time == Approx(f.hang_time).epsilon(1e-12));
     CHECK(r.landing_angle == Approx(f.landing_angle).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("A study's air defaults to the calculator's, and its wind direction is in degrees however written",
+          "[flight][study]") {
+  // `flight`'s defaults read "29.92 inHg" through the units table: a study's air is the same.
+  const ProgramRun json = run_program("flight --speed 40 --angle 30 --json");
+  REQUIRE(json.exit_code == 0);
+  char pressure[40];
+  std::snprintf(pressure, sizeof pressure, "\"pressure\": %.17g", Air{}.pressure);
+  CHECK_THAT(json.output, Catch::Contains(pressure));
+  // "180 deg", "3.141592653589793 rad" and 180 are one direction: degrees, not radians.
+  for (const std::string written : {"180", "\"180 deg\"", "\"3.141592653589793 rad\""}) {
+    INFO(written);
+    const StudyDir d(1, "friction = 0.5\nundercut = \"1 in\"\nwind_speed = 5\nwind_direction = " + written + "\n");
+    const auto file = d.dir.write("wind.toml", file_text(d.study) + "[output]\nvariables = [\"distance\"]\n");
+    CHECK(grid_point(load_study(file), 0).air.wind_direction == Approx(180).epsilon(1e-15));
   }
 }
 

@@ -1,6 +1,7 @@
 // Reading a study file's values: [scene] keys, axes (lists and ranges), the kind and [output].
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -104,9 +105,20 @@ struct Value {
   std::string written = {};
 };
 
+// A study's angles (wind_direction) are in degrees, as the flight calculator's: a plain number
+// is one, and a quantity written with its unit is converted to them, not to SI's radians.
+double in_key_units(Dimension dimension, double si) {
+  return dimension == Dimension::angle ? si / (std::numbers::pi / 180) : si;
+}
+
+std::string key_quantity_hint(Dimension dimension) {
+  if (dimension == Dimension::angle) return "(a number in deg, or a string such as \"30 deg\"; units deg, rad)";
+  return quantity_hint(dimension);
+}
+
 // A value the key takes, with the units it may be written in when it has a dimension.
 std::string expected_value(const KeySpec& spec, std::optional<Dimension> dimension) {
-  return std::string(spec.expected) + (dimension ? " " + quantity_hint(*dimension) : "");
+  return std::string(spec.expected) + (dimension ? " " + key_quantity_hint(*dimension) : "");
 }
 
 Value read_number(const Where& at, const KeySpec& spec, std::optional<Dimension> dimension, const toml::node& node) {
@@ -118,7 +130,7 @@ Value read_number(const Where& at, const KeySpec& spec, std::optional<Dimension>
   if (numeric && dimension && node.is_string()) {
     const std::optional<double> x = detail::quantity(node, *dimension);
     if (!x) bad();
-    v.number = *x;
+    v.number = in_key_units(*dimension, *x);
   } else if (numeric && node.is_number())
     v.number = *detail::number(node);
   else if ((spec.type == Type::integer || spec.type == Type::modes) && node.is_integer())
@@ -184,8 +196,8 @@ double range_bound(const Where& at, const toml::table& range, std::string_view n
     const std::optional<double> x = detail::quantity(*node, *dimension);
     if (!x || !std::isfinite(*x))
       reject(at.child(name, *node), describe_quantity(*node),
-             "expected a finite " + std::string(dimension_name(*dimension)) + " " + quantity_hint(*dimension));
-    return *x;
+             "expected a finite " + std::string(dimension_name(*dimension)) + " " + key_quantity_hint(*dimension));
+    return in_key_units(*dimension, *x);
   }
   if (!(integer ? node->is_integer() : node->is_number()) || !std::isfinite(*detail::number(*node)))
     reject(at.child(name, *node), describe(*node), integer ? "expected an integer" : "expected a finite number");

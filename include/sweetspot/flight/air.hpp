@@ -32,7 +32,9 @@ struct InputProblem {
 
 struct Air {
   double temperature = 294.261111111111111;  // K (70 deg F, the calculator's default)
-  double pressure = 101325;                   // Pa, reduced to sea level (29.92 inHg)
+  // Pa, reduced to sea level: 29.92 inHg (the calculator's), 29.92 x 3386.388640341 rounded once,
+  // as "29.92 inHg" reads (two roundings would give the next double up).
+  double pressure = 101320.74811900272;
   double elevation = 0;                       // m above sea level
   double relative_humidity = 0.5;             // 0..1
   double wind_speed = 0;                      // m/s, horizontal, uniform
