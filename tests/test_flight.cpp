@@ -10,6 +10,7 @@
 #include "sweetspot/flight/flight.hpp"
 #include "study_dir.hpp"
 #include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/impact/batted_flight.hpp"
 #include "sweetspot/impact/impact.hpp"
 #include "sweetspot/study/study_point.hpp"
 #include "program.hpp"
@@ -351,6 +352,30 @@ TEST_CASE("A study's air defaults to the calculator's, and its wind direction is
     const auto file = d.dir.write("wind.toml", file_text(d.study) + "[output]\nvariables = [\"distance\"]\n");
     CHECK(grid_point(load_study(file), 0).air.wind_direction == Approx(180).epsilon(1e-15));
   }
+}
+
+TEST_CASE("A batted ball launched past the vertical flies back, the mirror image of one short of it", "[flight]") {
+  // Mirrored in the vertical plane across the heading, a launch at 90 + d deg with backspin b is
+  // one at 90 - d deg with backspin -b (spin is an axial vector): the same distance, apex and time.
+  for (const double backspin : {0.0, 2500.0, -1500.0}) {
+    INFO("backspin " << backspin << " rpm");
+    const FlightResult back = batted_flight(BallLaunch{35, 104, backspin, 0}, Air{});
+    const FlightResult mirror = batted_flight(BallLaunch{35, 76, -backspin, 0}, Air{});
+    CHECK(back.distance == Approx(mirror.distance).epsilon(1e-12));
+    CHECK(back.apex == Approx(mirror.apex).epsilon(1e-12));
+    CHECK(back.hang_time == Approx(mirror.hang_time).epsilon(1e-12));
+  }
+  // A study's pop-up undercut 6 cm below the ball's centre leaves at about 107 deg: it keeps its
+  // impact and flies (it was refused as an angle past 90, and the point failed).
+  const StudyDir d(1, "friction = 0.5\nswing_tilt = 8\nundercut = 0.06\n");
+  const auto file = d.dir.write("popup.toml", file_text(d.study) + "[output]\nvariables = [\"distance\"]\n");
+  const GridPoint p = grid_point(load_study(file), 0);
+  const ModalBasis basis = compute_modes(load_bat(source_path("studies/bats/r161.toml")), BeamTheory::timoshenko,
+                                         ModeRequest::lowest(18));
+  const ImpactResult r = simulate_point(p, &basis);
+  CHECK(r.status == CollisionStatus::ok);
+  CHECK(r.launch.angle > 100);
+  CHECK(r.distance > 0);
 }
 
 TEST_CASE("A study refuses air that is not air, naming the key", "[flight][study]") {
