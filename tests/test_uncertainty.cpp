@@ -294,6 +294,11 @@ variables = ["bbcor", "status"]
   CHECK(within(0.6, triple("bbcor")));
   CHECK(within(0.49, triple("bbcor_mean")));
   CHECK(within(0.1 / std::sqrt(12.0), triple("bbcor_std")));
+  // Under mpirun, rank 0 alone prints, the same numbers (the other rank failed reading its empty dataset).
+  const ProgramRun ranks = run_program_mpi(2, 1, "certify --uncertainty " + study.string() + " --json");
+  INFO(ranks.output);
+  CHECK(ranks.exit_code == 0);
+  CHECK(ranks.output.find(run.output) != std::string::npos);
   // A bat given as well is refused: the study names its bat. So is any of the rig's settings,
   // which the study sets (ignored, it would certify what was not asked).
   require_refused(run_program("certify r161 --uncertainty " + study.string()), "give one or the other");

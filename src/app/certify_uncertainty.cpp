@@ -126,6 +126,9 @@ void certify_under_uncertainty(const std::string& file, const std::string& outpu
     result = d;
   };
   run_study(u.study, options);
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (rank != 0) return;  // rank 0 made the dataset, and says what it holds
   if (json) print_json(u, result, measure);
   else print_text(u, result, measure);
 }
