@@ -190,7 +190,7 @@ ball_speed = 40
 e0 = { distribution = "truncated_normal", mean = 0.5, sd = 0.02, lower = 0.46, upper = 0.54 }
 [sampling]
 method = "latin_hypercube"
-size = 6
+size = 64
 sensitivity = true
 seed = 11
 [output]
@@ -248,6 +248,21 @@ TEST_CASE("A bad uncertainty study is refused with one line before any work", "[
       {"[uncertain]\ne0 = { distribution = \"normal\", mean = 0.5, sd = 0.01 }\nk1 = { distribution = \"normal\", "
        "mean = 6.53e7, sd = 1e6 }\n[sampling]\nsize = 10\ncorrelation = [[\"e0\", \"k1\", 1.5]]\n",
        "key 'sampling.correlation[0]'"},
+      // A pair twice (the later overruled the earlier), a seed past OpenTURNS's 32 bits (it aliased
+      // a smaller one), Sobol' indices from too few samples, a quantile level twice.
+      {"[uncertain]\ne0 = { distribution = \"normal\", mean = 0.5, sd = 0.01 }\nk1 = { distribution = \"normal\", "
+       "mean = 6.53e7, sd = 1e6 }\n[sampling]\nsize = 10\nmethod = \"monte_carlo\"\n"
+       "correlation = [[\"e0\", \"k1\", 0.5], [\"k1\", \"e0\", -0.5]]\n",
+       "key 'sampling.correlation[1]' = [...] (array): expected each pair of keys once"},
+      {"[uncertain]\ne0 = { distribution = \"normal\", mean = 0.5, sd = 0.01 }\n[sampling]\nsize = 10\n"
+       "seed = 4294967296\n",
+       "key 'sampling.seed' = 4294967296: expected a whole number from 0 to 4294967295"},
+      {"[uncertain]\ne0 = { distribution = \"normal\", mean = 0.5, sd = 0.01 }\n[sampling]\nsize = 16\n"
+       "sensitivity = true\n",
+       "key 'sampling.size' = 16: expected at least 64 samples with sensitivity = true"},
+      {"[uncertain]\ne0 = { distribution = \"normal\", mean = 0.5, sd = 0.01 }\n[sampling]\nsize = 10\n"
+       "quantiles = [0.5, 0.5]\n",
+       "expected each level once"},
   };
   for (const auto& [tail, expected] : cases) {
     const auto file = dir.write("bad.toml", head + tail);

@@ -19,6 +19,7 @@ using detail::quote;
 namespace {
 
 constexpr double max_points = 1e9;  // as any study's grid
+constexpr std::size_t min_sensitivity_size = 64;
 
 // The entries of a table in the order written (toml++ keeps them sorted).
 std::vector<std::pair<std::string, const toml::node*>> in_written_order(const toml::table& table) {
@@ -149,6 +150,10 @@ std::vector<InputCorrelation> read_correlations(const Where& at, const toml::tab
     if (!r || !(*r > -1 && *r < 1)) reject(item, describe(list[i]), expected);
     const InputCorrelation c{index_of(item, inputs, (*triple)[0]), index_of(item, inputs, (*triple)[1]), *r};
     if (c.first == c.second) reject(item, describe(list[i]), expected);
+    // A pair given twice (in either order) would have the later silently overrule the earlier.
+    for (const InputCorrelation& earlier : correlations)
+      if (std::minmax(earlier.first, earlier.second) == std::minmax(c.first, c.second))
+        reject(item, describe(list[i]), "expected each pair of keys once: this pair's correlation is given before");
     correlations.push_back(c);
   }
   return correlations;
@@ -164,13 +169,21 @@ SamplingPlan read_plan(const Where& top, const toml::table& doc, const std::vect
                                 "expected a whole number of samples >= 2");
   plan.size = static_cast<std::size_t>(size);
   if (const toml::node* seed = t.get("seed")) {
+    // OpenTURNS's generator takes 32 bits: a larger seed would alias a smaller one.
     const std::optional<std::int64_t> s = seed->value_exact<std::int64_t>();
-    if (!s || *s < 0) reject(at.child("seed", *seed), describe(*seed), "expected a whole number >= 0");
+    if (!s || *s < 0 || *s > 4294967295)
+      reject(at.child("seed", *seed), describe(*seed), "expected a whole number from 0 to 4294967295");
     plan.seed = static_cast<std::uint64_t>(*s);
   }
   if (const toml::node* sensitivity = t.get("sensitivity")) {
     if (!sensitivity->is_boolean()) reject(at.child("sensitivity", *sensitivity), describe(*sensitivity), "expected true or false");
     plan.sensitivity = sensitivity->as_boolean()->get();
+    // The Sobol' intervals are asymptotic: at a handful of samples they exclude the index itself
+    // (size 2: a first-order index of 1.0 in [0.95, 1.05] for an input whose share is 0.05).
+    if (plan.sensitivity && plan.size < min_sensitivity_size)
+      reject(at.child("size", *t.get("size")), std::to_string(plan.size),
+             "expected at least " + std::to_string(min_sensitivity_size) +
+                 " samples with sensitivity = true (the Sobol' indices' intervals are asymptotic)");
   }
   if (t.get("confidence"))
     plan.confidence = number_at(at, t, "confidence", open_unit, "expected a confidence level in (0, 1), e.g. 0.95");
@@ -182,6 +195,8 @@ SamplingPlan read_plan(const Where& top, const toml::table& doc, const std::vect
     for (const toml::node& level : *levels->as_array()) {
       const std::optional<double> p = detail::number(level);
       if (!p || !open_unit(*p)) reject(levels_at, describe(level), expected);
+      if (std::ranges::count(plan.quantiles, *p) > 0)
+        reject(levels_at, describe(level), "expected each level once (the dataset's quantile coordinate)");
       plan.quantiles.push_back(*p);
     }
   }
