@@ -289,17 +289,23 @@ TEST_CASE("sweetspot flight --vacuum --json is the parabola", "[flight][program]
 }
 
 TEST_CASE("sweetspot flight refuses unphysical air and launches in one line, as written", "[flight][program]") {
-  require_refused(run_program("flight --speed -3"), {"--speed \"-3\"", "speed >= 0"});
+  require_refused(run_program("flight --speed -3"), {"--speed \"-3\"", "a speed from 0 to 1000 m/s"});
   require_refused(run_program("flight --speed nan"), {"--speed \"nan\""});
   require_refused(run_program("flight --speed 40 --humidity 150"), {"--humidity \"150\"", "0 to 100"});
   require_refused(run_program("flight --speed 40 --humidity -1"), {"--humidity \"-1\""});
   require_refused(run_program("flight --speed 40 --pressure -1inHg"), {"--pressure \"-1inHg\"", "pressure > 0"});
-  require_refused(run_program("flight --speed 40 --temperature -500F"), {"--temperature \"-500F\"", "above 0 K"});
+  require_refused(run_program("flight --speed 40 --temperature -500F"), {"--temperature \"-500F\"", "above 173.15 K"});
+  // Down to 16 K the vapour pressure's formula ran, and the humidity was blamed.
+  require_refused(run_program("flight --speed 40 --temperature 1K"), {"--temperature \"1K\"", "above 173.15 K"});
   require_refused(run_program("flight --speed 40 --temperature 0"), {"--temperature \"0\""});
   require_refused(run_program("flight --speed 40 --temperature 70mph"), {"--temperature \"70mph\"", "units K, C, F"});
   require_refused(run_program("flight --speed 40 --angle 100"), {"--angle \"100\"", "-90 to 90"});
   require_refused(run_program("flight --speed 40 --wind-direction nan"), {"--wind-direction \"nan\""});
   require_refused(run_program("flight --speed 40 --spin-decay-time 0"), {"--spin-decay-time"});
+  // Past these no flight landed within its minute: refused before any work, not failed after it.
+  require_refused(run_program("flight --speed 40 --spin-decay-time 1e-9"), {"--spin-decay-time", ">= 0.01 s"});
+  require_refused(run_program("flight --speed 40 --backspin 1e30"), {"--backspin \"1e30\"", "-1e5 to 1e5 rpm"});
+  require_refused(run_program("flight --speed 1e300"), {"--speed \"1e300\"", "from 0 to 1000 m/s"});
   require_refused(run_program("flight --angle 30"), {"--speed"});
 }
 

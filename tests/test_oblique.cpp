@@ -249,3 +249,16 @@ TEST_CASE("oblique: a ball off the bat misses (a status), bad values are refused
   bad.oblique.swing_tilt = 90;
   CHECK_THROWS_AS(simulate_impact(r161(), bad), InputError);
 }
+
+TEST_CASE("A pitch's spin past 1e5 rpm is refused before any work", "[oblique]") {
+  // At 1e200 rpm the impact ran and its energy balance came out NaN ("unbalanced").
+  const ProgramRun run = run_program("impact --bat " + source_path("studies/bats/r161.toml") +
+                                     " --z 0.71 --ball-speed 40 --center 0.09 --omega 51 --pitch-spin 1e200");
+  INFO(run.output);
+  CHECK(run.exit_code == 2);
+  CHECK_THAT(run.output, Catch::Contains("--pitch-spin 1e+200: expected a spin from -1e5 to 1e5 rpm"));
+  ImpactScene s = n2000_high_impact(0.71);
+  s.oblique.friction = 0.5;
+  s.oblique.pitch_spin = -1e5;  // the bound itself runs
+  CHECK(simulate_impact(r161(), s).status == CollisionStatus::ok);
+}

@@ -26,8 +26,8 @@ double air_density(const Air& air) {
 }
 
 std::optional<InputProblem> air_problem(const Air& air) {
-  if (!(air.temperature > 0) || !(air.temperature < 373.15))
-    return InputProblem{"temperature", air.temperature, "an absolute temperature above 0 K and below 373.15 K"};
+  if (!(air.temperature > min_air_temperature) || !(air.temperature < max_air_temperature))
+    return InputProblem{"temperature", air.temperature, air_temperature_expected};
   if (!(air.pressure > 0) || !std::isfinite(air.pressure))
     return InputProblem{"pressure", air.pressure, "a finite pressure > 0"};
   if (!(air.elevation > -1000 && air.elevation < 10000))

@@ -6,13 +6,18 @@
 namespace sweetspot {
 
 std::optional<InputProblem> launch_problem(const Launch& launch) {
-  if (!(launch.speed >= 0) || !std::isfinite(launch.speed))
-    return InputProblem{"speed", launch.speed, "a finite speed >= 0"};
+  // Past these the flight is no ball's: it did not land within max_time, and the run failed after
+  // its work instead of refusing before it.
+  constexpr double max_speed = 1000, max_spin = 1e5 * 2 * 3.141592653589793 / 60;  // m/s; 1e5 rpm in rad/s
+  if (!(launch.speed >= 0 && launch.speed <= max_speed))
+    return InputProblem{"speed", launch.speed, "a speed from 0 to 1000 m/s"};
   if (!(launch.angle >= -90 && launch.angle <= 90))
     return InputProblem{"angle", launch.angle, "an angle from -90 to 90 deg above the horizontal"};
   if (!std::isfinite(launch.direction)) return InputProblem{"direction", launch.direction, "a finite angle in deg"};
-  if (!std::isfinite(launch.backspin)) return InputProblem{"backspin", launch.backspin, "a finite spin"};
-  if (!std::isfinite(launch.sidespin)) return InputProblem{"sidespin", launch.sidespin, "a finite spin"};
+  if (!(std::abs(launch.backspin) <= max_spin))
+    return InputProblem{"backspin", launch.backspin, "a spin from -1e5 to 1e5 rpm (-10472 to 10472 rad/s)"};
+  if (!(std::abs(launch.sidespin) <= max_spin))
+    return InputProblem{"sidespin", launch.sidespin, "a spin from -1e5 to 1e5 rpm (-10472 to 10472 rad/s)"};
   if (!(launch.height >= 0 && launch.height <= 1000))
     return InputProblem{"height", launch.height, "a launch height from 0 to 1000 m"};
   return std::nullopt;
@@ -32,7 +37,10 @@ std::optional<InputProblem> flight_options_problem(const FlightOptions& o) {
                                    std::pair{"cl0", a.cl0}, std::pair{"cl1", a.cl1}, std::pair{"cl2", a.cl2}})
     if (!std::isfinite(value)) return InputProblem{key, value, "a finite coefficient"};
   if (!(a.cl0 > 0) || !(a.cl1 >= 0)) return InputProblem{"cl0", a.cl0, "cl0 > 0 and cl1 >= 0 (a finite C_L)"};
-  if (!(a.spin_decay_time > 0)) return InputProblem{"spin_decay_time", a.spin_decay_time, "a time > 0 (s)"};
+  // Shorter, the spin's decay is too stiff for the integrator (1e-9 s never landed); the spin is
+  // then gone within the first centimetres anyway.
+  if (!(a.spin_decay_time >= 0.01))
+    return InputProblem{"spin_decay_time", a.spin_decay_time, "a time >= 0.01 s"};
   return std::nullopt;
 }
 

@@ -34,7 +34,7 @@ bool ball_cor(double x) { return in_range(ball_cor_range, x); }
 bool swing_exponent(double x) { return valid_swing_exponent(x); }
 bool mode_count(double x) { return x >= 0 && x <= 1e6; }    // "all" and "auto" are not checked
 bool total_accuracy(double x) { return x >= min_accuracy && x <= max_accuracy; }
-bool air_temperature(double x) { return x > 0 && x < 373.15; }  // as flight/air.hpp's air_problem
+bool air_temperature(double x) { return x > min_air_temperature && x < max_air_temperature; }
 bool elevation(double x) { return x > -1000 && x < 10000; }
 bool humidity(double x) { return x >= 0 && x <= 100; }
 bool non_negative(double x) { return std::isfinite(x) && x >= 0; }
@@ -105,7 +105,7 @@ constexpr KeySpec keys[] = {
     {"undercut", Type::number, undercut_expected, valid_undercut,
      [](GridPoint& p, double x) { p.scene.oblique.undercut = x; }, impact, 0, true, Dimension::length},
     // The air the batted ball flies through (flight/air.hpp), for the flight's outputs.
-    {"temperature", Type::number, "an absolute temperature above 0 K and below 373.15 K", air_temperature,
+    {"temperature", Type::number, air_temperature_expected, air_temperature,
      [](GridPoint& p, double x) { p.air.temperature = x; }, impact, 0, true, Dimension::temperature},
     {"pressure", Type::number, "a finite pressure > 0 (reduced to sea level)", positive,
      [](GridPoint& p, double x) { p.air.pressure = x; }, impact, 0, true, Dimension::pressure},

@@ -44,6 +44,11 @@ struct Air {
 };
 
 inline constexpr double standard_pressure = 101325;                // Pa
+// The air's temperatures, K: the vapour pressure's formula (Buck's, the calculator's) holds down to
+// about -80 C and has a pole at 16 K; colder air was refused later as too humid, naming humidity.
+inline constexpr double min_air_temperature = 173.15, max_air_temperature = 373.15;  // -100 C, 100 C
+inline constexpr const char* air_temperature_expected =
+    "an absolute temperature above 173.15 K (-100 C) and below 373.15 K (100 C)";
 inline constexpr double pressure_decay_per_metre = 1.217e-4;       // beta, 1/m (the calculator's)
 inline constexpr double dry_air_gas_constant = 287.058;            // R_d, J/(kg K)
 

@@ -75,11 +75,15 @@ struct ObliqueImpact {
 // What the oblique keys must be, wherever they are given (study keys, impact options, Python).
 inline constexpr const char* undercut_expected = "a finite length (the ball's centre above the bat's axis; negative below)";
 inline constexpr const char* swing_tilt_expected = "a finite angle in degrees, above -90 and below 90";
-inline constexpr const char* pitch_spin_expected = "a finite spin in rpm (positive: the pitch's backspin)";
+// A pitch spins at most about 3500 rpm; 1e5 bounds what the tangential contact can follow (at
+// 1e200 rpm the energy balance came out NaN).
+inline constexpr double max_pitch_spin = 1e5;  // rpm
+inline constexpr const char* pitch_spin_expected =
+    "a spin from -1e5 to 1e5 rpm (positive: the pitch's backspin)";
 inline constexpr const char* friction_expected = "a finite coefficient of friction >= 0";
 inline bool valid_undercut(double x) { return std::isfinite(x); }
 inline bool valid_swing_tilt(double x) { return std::isfinite(x) && x > -90 && x < 90; }
-inline bool valid_pitch_spin(double x) { return std::isfinite(x); }
+inline bool valid_pitch_spin(double x) { return std::abs(x) <= max_pitch_spin; }
 inline bool valid_friction(double x) { return std::isfinite(x) && x >= 0; }
 
 inline constexpr int all_modes = -1;
