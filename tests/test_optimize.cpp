@@ -256,6 +256,13 @@ TEST_CASE("optimize refuses a bound no design can take, naming the file and the 
   const auto wall = dir.write("wall.toml", density_problem("", "wall_thickness = { min = -0.001, max = 0.004, start = 0.002 }"));
   REQUIRE_THROWS_WITH(load_optimization(wall),
                       Catch::Contains("wall.toml") && Catch::Contains("free.wall_thickness.min") && Catch::Contains("-0.001"));
+  // So is a constraint no bat meets: the search ran every evaluation to find none feasible.
+  for (const std::string window : {"mass = { max = -1 }", "mass = { max = 0 }", "moi_knob = { min = 0.1, max = 0 }"}) {
+    INFO(window);
+    const auto none = dir.write("none.toml", density_problem("[constraints]\n" + window + "\n"));
+    REQUIRE_THROWS_WITH(load_optimization(none), Catch::Contains("none.toml") && Catch::Contains(".max") &&
+                                                    Catch::Contains("expected a bound above"));
+  }
 }
 
 TEST_CASE("optimize killed mid-run resumes to the same best design, and 2 ranks give the same bits", "[optimize][program]") {
@@ -714,4 +721,19 @@ TEST_CASE("a rerun into the same output that finds no feasible design removes th
                                        "'); print(int(f['best_evaluation'][()]))\"");
   INFO(check.output);
   CHECK(check.output == "-1\n");
+}
+
+TEST_CASE("A free hoop modulus starts from what the bat takes: absent, its Young's modulus", "[optimize]") {
+  // alloy_bbcor gives no hoop_modulus: its wall's is youngs_modulus, 7e10 Pa, inside [1e10, 1e11].
+  // It was read as 0 and the bounds refused as not around the base bat's value.
+  TempDir dir;
+  const auto opt = dir.write("hoop.toml", "bat = \"" + source_path("studies/bats/alloy_bbcor.toml") +
+                                              "\"\n[free]\nhoop_modulus = { min = 1e10, max = 1e11 }\n[player]\n"
+                                              "center = 0.09\nomega = 51\nball_speed = 40\n[model]\nmodes = 0\n"
+                                              "[objective]\nmaximize = \"peak_bbs\"\nz = { start = 0.6, stop = 0.8, "
+                                              "step = 0.05 }\n[optimizer]\nmax_evaluations = 5\n");
+  const OptimizationProblem p = load_optimization(opt);
+  REQUIRE(p.free.size() == 1);
+  CHECK(p.free[0].start == p.base.material.youngs_modulus);
+  CHECK(p.base.material.hoop_modulus == 0);  // the file's: absent
 }

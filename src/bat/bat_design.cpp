@@ -193,7 +193,7 @@ void set_design_parameter(BatDesign& design, std::string_view name, double value
 double design_parameter(const BatDesign& design, std::string_view name) {
   const double* parameter = find_parameter(design, name);
   if (!parameter) no_parameter(design, name, "");
-  return *parameter;
+  return name == "hoop_modulus" ? design.material.wall_hoop_modulus() : *parameter;
 }
 
 const std::vector<std::string>& material_presets() {

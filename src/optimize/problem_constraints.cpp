@@ -16,13 +16,15 @@ struct WindowKey {
   Quantity quantity;
   const char* unit;
   std::optional<Dimension> dimension;
+  bool positive;  // no bat has a value of 0 or below: a window there admits none
 };
-constexpr WindowKey windows[] = {{"barrel_diameter", Quantity::barrel_diameter, "m", Dimension::length},
-                                 {"drop", Quantity::drop, "length in inches minus weight in ounces", std::nullopt},
-                                 {"mass", Quantity::mass, "kg", Dimension::mass},
-                                 {"moi_knob", Quantity::moi_knob, "kg m^2", std::nullopt},
-                                 {"moi_pivot", Quantity::moi_pivot, "kg m^2", std::nullopt},
-                                 {"length", Quantity::length, "m", Dimension::length}};
+constexpr WindowKey windows[] = {
+    {"barrel_diameter", Quantity::barrel_diameter, "m", Dimension::length, true},
+    {"drop", Quantity::drop, "length in inches minus weight in ounces", std::nullopt, false},
+    {"mass", Quantity::mass, "kg", Dimension::mass, true},
+    {"moi_knob", Quantity::moi_knob, "kg m^2", std::nullopt, true},
+    {"moi_pivot", Quantity::moi_pivot, "kg m^2", std::nullopt, true},
+    {"length", Quantity::length, "m", Dimension::length, true}};
 
 void read_window(const Where& at, const toml::node& node, const WindowKey& w, std::vector<Constraint>& out) {
   const std::string expected = std::string("{ min = ..., max = ... } (") + w.unit + "), either or both";
@@ -34,6 +36,10 @@ void read_window(const Where& at, const toml::node& node, const WindowKey& w, st
                hi = number_key(at, t, "max", nan, finite, "a finite bound", w.dimension);
   if (t.get("min") && t.get("max") && !(lo < hi))
     reject(at.child("max", *t.get("max")), format_number(hi), "expected a bound above min = " + format_number(lo));
+  // The search would run every evaluation to find no feasible design.
+  if (w.positive && t.get("max") && !(hi > 0))
+    reject(at.child("max", *t.get("max")), format_number(hi),
+           std::string("expected a bound above 0: no bat has a ") + std::string(w.name) + " of 0 or below");
   if (t.get("min")) out.push_back({w.quantity, std::string(w.name), false, lo});
   if (t.get("max")) out.push_back({w.quantity, std::string(w.name), true, hi});
 }

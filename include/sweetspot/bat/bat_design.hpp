@@ -52,6 +52,7 @@ std::vector<std::string> design_parameters(const BatDesign& design);
 // Sets one; throws InputError naming the parameter, the value and what was expected when the
 // design has no such parameter (e.g. a dimension of a bat given by a CSV profile).
 void set_design_parameter(BatDesign& design, std::string_view name, double value);
+// The value the bat takes for it: an absent hoop_modulus (stored as 0) is the Young's modulus.
 double design_parameter(const BatDesign& design, std::string_view name);
 // Length for the length and every dimension (which may then be written "2.625 in"); nothing for
 // the material's constants, which are read in SI only.
