@@ -305,6 +305,10 @@ TEST_CASE("Bad wall input is refused with the file, key and value", "[barrel]") 
       {"wall_thickness = 0.0026", "wall_thickness = 0.02", "dimensions.wall_thickness", "0.02", "radius"},
       {"wall_thickness = 0.0026", "wall_thickness = -0.0026", "dimensions.wall_thickness", "-0.0026", "positive"},
       {"wall_thickness = 0.0026", "wall_thickness = 0", "dimensions.wall_thickness", "0", "positive"},
+      // In the documented range, but calibrated so soft that the wall is no tube: refused on
+      // reading, naming the file (it was a bare "[barrel]" line when the modes were solved).
+      {"wall_thickness = 0.0026", "wall_thickness = 0.0026\n[barrel]\ncompression = 10", "compression", "10",
+       "expected a stiffer barrel"},
   };
   for (const auto& c : cases) {
     DYNAMIC_SECTION(c.to) {

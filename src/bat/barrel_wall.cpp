@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "sweetspot/input_error.hpp"
@@ -218,8 +219,15 @@ std::vector<WallMode> barrel_wall(const Bat& bat) {
   Material calibrated = bat.material;
   calibrated.hoop_modulus = bat.material.wall_hoop_modulus() * scale;
   wall = uncalibrated_wall(bat, calibrated);
-  if (!(wall[reference].mass > 0))
-    throw InputError("[barrel]: the calibrated wall of the reference section is no longer a tube");
+  if (!(wall[reference].mass > 0)) {
+    char why[240];
+    std::snprintf(why, sizeof why,
+                  "[barrel] %s = %g: the hoop modulus that gives it (%.3g Pa) leaves the barrel no tube (its "
+                  "ovaling would spread past the bore); expected a stiffer barrel",
+                  barrel.compression > 0 ? "compression" : "hoop_frequency",
+                  barrel.compression > 0 ? barrel.compression : barrel.hoop_frequency, calibrated.hoop_modulus);
+    throw InputError(why);
+  }
   if (barrel.compression > 0 && barrel.hoop_frequency > 0) {
     // Both measured: E_t from the compression, the modes' mass from the frequency (every section
     // of the barrel by the reference's ratio).

@@ -570,6 +570,13 @@ std::string rule_key(const BatDesign& design, const std::string& parameter) {
 // refused naming itself and the key, not later by build_bat.
 void check_possible(const Section& top, const BatDesign& design) {
   if (const auto rule = rule_break(design)) fail(top.where(rule_key(design, rule->parameter)), rule->message);
+  // A calibration the wall cannot take (a compression so low that the calibrated wall is no tube)
+  // is refused here, naming the file, not when the bat's modes are first solved.
+  if (design.material.barrel.calibrated()) try {
+      barrel_wall(build_bat(design));
+    } catch (const InputError& e) {
+      fail(top.where("barrel"), e.what());
+    }
 }
 
 }  // namespace
