@@ -263,6 +263,15 @@ TEST_CASE("A bad uncertainty study is refused with one line before any work", "[
       {"[uncertain]\ne0 = { distribution = \"normal\", mean = 0.5, sd = 0.01 }\n[sampling]\nsize = 10\n"
        "quantiles = [0.5, 0.5]\n",
        "expected each level once"},
+      // Parameters OpenTURNS cannot take (its own error left with exit 1), and a truncated normal
+      // so wide that its draws left their window.
+      {"[uncertain]\npitch_spin = { distribution = \"uniform\", lower = -1e308, upper = 1e308 }\n" + sampling,
+       "key 'uncertain.pitch_spin.upper' = 1e+308: expected bounds whose difference is a finite number"},
+      {"[uncertain]\n\"bat.density\" = { distribution = \"lognormal\", mean = 649, sd = 1e-300 }\n" + sampling,
+       "key 'uncertain.bat.density.sd' = 1e-300: expected sd / mean from 1e-100 to 1e100"},
+      {"[uncertain]\ne0 = { distribution = \"truncated_normal\", mean = 0.5, sd = 1e15, lower = 0.4, upper = 0.6 }\n" +
+           sampling,
+       "key 'uncertain.e0.sd' = 1e+15: expected sd at most 1e6 times upper - lower"},
   };
   for (const auto& [tail, expected] : cases) {
     const auto file = dir.write("bad.toml", head + tail);

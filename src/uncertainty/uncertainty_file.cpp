@@ -78,6 +78,11 @@ InputDistribution read_distribution(const Where& at, const std::string& key, con
     d.shape = Shape::lognormal;
     d.mean = number_at(at, t, "mean", positive, "expected a mean > 0 (a log-normal variable is positive)");
     d.sd = number_at(at, t, "sd", positive, sd_expected);
+    // Its logarithm's spread, log(1 + (sd/mean)^2), must be finite and above 0 for OpenTURNS.
+    const double variation = d.sd / d.mean;
+    if (!(variation >= 1e-100 && variation <= 1e100))
+      reject(at.child("sd", *t.get("sd")), format_number(d.sd),
+             "expected sd / mean from 1e-100 to 1e100 (the log-normal's parameters are its logarithm's)");
   } else if (name == "uniform") {
     d.shape = Shape::uniform;
   } else {
@@ -89,7 +94,15 @@ InputDistribution read_distribution(const Where& at, const std::string& key, con
     if (!(d.lower < d.upper))
       reject(at.child("upper", *t.get("upper")), format_number(d.upper),
              "expected an upper bound above the lower bound " + format_number(d.lower));
+    if (!std::isfinite(d.upper - d.lower))
+      reject(at.child("upper", *t.get("upper")), format_number(d.upper),
+             "expected bounds whose difference is a finite number");
   }
+  // Far wider than its window a truncated normal is the uniform one, and OpenTURNS's draw from it
+  // no longer stays inside the window (sd 1e15 on [0.4, 0.6] drew 0.36).
+  if (d.shape == Shape::truncated_normal && !(d.sd <= 1e6 * (d.upper - d.lower)))
+    reject(at.child("sd", *t.get("sd")), format_number(d.sd),
+           "expected sd at most 1e6 times upper - lower (wider, the distribution is \"uniform\" on them)");
   if (d.shape == Shape::truncated_normal && (d.mean < d.lower || d.mean > d.upper))
     reject(at.child("mean", *t.get("mean")), format_number(d.mean),
            "expected a mean within the bounds [" + format_number(d.lower) + ", " + format_number(d.upper) + "]");
