@@ -172,6 +172,14 @@ std::vector<InputCorrelation> read_correlations(const Where& at, const toml::tab
   return correlations;
 }
 
+// How many outputs the study asks (each at least one value per point); the study's [output]
+// checks them later, after the draw.
+double output_count(const toml::table& doc) {
+  const toml::node* output = doc.get("output");
+  const toml::node* variables = output && output->is_table() ? output->as_table()->get("variables") : nullptr;
+  return variables && variables->is_array() ? static_cast<double>(variables->as_array()->size()) : 1;
+}
+
 SamplingPlan read_plan(const Where& top, const toml::table& doc, const std::vector<InputDistribution>& inputs) {
   const toml::table& t = table_at(top, doc, "sampling", true);
   const Where at = top.child("sampling", t);
@@ -222,17 +230,19 @@ SamplingPlan read_plan(const Where& top, const toml::table& doc, const std::vect
     reject(at.child("sensitivity", *t.get("sensitivity")), "true",
            "Sobol' indices need independent inputs: drop sampling.correlation or the sensitivity");
   // The points and the memory the draw takes (its columns, OpenTURNS's sample and the study's
-  // copy, and at least two results per point), checked before a single value is drawn; the
-  // study's own check of its results follows the draw (check_study_memory).
+  // copy) with the outputs asked (each twice: the rows and the dataset), checked before a single
+  // value is drawn; the study's own, finer, check of its results follows the draw
+  // (check_study_memory).
   const double points = static_cast<double>(plan.size) * (plan.sensitivity ? static_cast<double>(inputs.size()) + 2 : 1);
   if (points > max_points)
     reject(at.child("size", *t.get("size")), format_number(size),
            "makes " + format_number(points) + " points; at most 1e9");
-  const double bytes = points * (3 * static_cast<double>(inputs.size()) + 2) * sizeof(double);
+  const double outputs = std::max(1.0, output_count(doc));
+  const double bytes = points * (3 * static_cast<double>(inputs.size()) + 2 * outputs) * sizeof(double);
   if (bytes > machine_memory_bytes() / 2)
     reject(at.child("size", *t.get("size")), format_number(size),
-           "the samples alone need " + format_number(bytes / 1e9) + " GB, more than half the " +
-               format_number(machine_memory_bytes() / 1e9) + " GB this machine has");
+           "the samples and their " + format_number(outputs) + " outputs need " + format_number(bytes / 1e9) +
+               " GB, more than half the " + format_number(machine_memory_bytes() / 1e9) + " GB this machine has");
   return plan;
 }
 
