@@ -277,8 +277,11 @@ void validate(const ImpactScene& scene, const ModalBasis& basis) {
       reject("cor_speed", scene.ball.cor_speed, "must lie in [0, 100] m/s");
     for (const double v : {0.0, max_cor_law_speed})
       if (!in_range(ball_cor_range, scene.ball.cor_at(v)))
-        reject("cor_slope", scene.ball.cor_slope,
-               "gives a COR of " + detail::format_number(scene.ball.cor_at(v)) + " at " + detail::format_number(v) +
+        // The law is e0 and the slope together: an e0 given (--e0 1.0 on mlb's ball) is named too.
+        reject("e0", scene.ball.e0,
+               "with cor_slope = " + detail::format_number(scene.ball.cor_slope) + " per m/s about " +
+                   detail::format_number(scene.ball.cor_speed) + " m/s gives a COR of " +
+                   detail::format_number(scene.ball.cor_at(v)) + " at " + detail::format_number(v) +
                    " m/s: not a physical ball (expected " + range_text(ball_cor_range) + ")");
   }
   require_positive("dt", scene.integrator.dt);
