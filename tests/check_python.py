@@ -264,6 +264,11 @@ program_widened = program_json(["--z", "0.405", "--ball-speed", "30", "--e0", "0
 check(widened["status"] == "ok" and widened["contacts"] > 1 and widened["modes_error"] <= 2.5e-4 and
       widened["vf"] == program_widened["vf"], f"a widened rung as the program's: {widened['modes_error']}")
 check(sweetspot.Bat.from_knots(*rod_args, density=np.float64(700), slices=np.int64(40)).slices == 40, "numpy args")
+# Knots one per value: a 2-D array (read flattened), a masked array (its mask ignored) and bools
+# among numbers are refused, naming the argument.
+for bad in (np.array([[0, 0.3], [0.5, 0.84]]), np.ma.masked_array([0, 0.84], mask=[False, True]), [False, 0.84]):
+    check(refused(lambda: sweetspot.Bat.from_knots("rod", 0.84, bad, [0.06, 0.06]), "z ", "1-D array"),
+          f"from_knots refuses z = {bad!r}")
 # A numpy integer is a mode count as an int is; numpy's bool is not.
 check(len(sweetspot.impact(bat, **swing, modes=np.int64(18))["modes_kept"]) == 18 and
       sweetspot.certify(bat, modes=np.int32(18))["bbcor"] == sweetspot.certify(bat, modes=18)["bbcor"], "numpy modes")

@@ -282,6 +282,15 @@ TEST_CASE("A bad uncertainty study is refused with one line before any work", "[
     CHECK(!std::filesystem::exists(out));
     CHECK(!std::filesystem::exists(out + ".journal"));
   }
+  // A key that may be an axis but is no number cannot be drawn, and the keys the refusal offers
+  // are those that can (it offered slices, theory and pivot too).
+  const auto file =
+      dir.write("bad.toml", head + "[uncertain]\nslices = { distribution = \"uniform\", lower = 10, upper = 100 }\n" +
+                                sampling);
+  const ProgramRun run = run_program("run " + file.string() + " -o " + dir / "out.h5");
+  require_refused(run, "key 'uncertain.slices' = {...}: expected a numeric key of kind \"impact\"");
+  for (const char* not_drawable : {" slices,", " theory,", " pivot,", " modes,", " curved_contact,"})
+    CHECK(run.output.find(not_drawable) == std::string::npos);
 }
 
 TEST_CASE("certify --uncertainty: a rigid bat's BBCOR is the drawn e0, so it passes as often as e0 <= 0.5",

@@ -32,10 +32,9 @@ std::vector<Setting> drawn_settings(const Where& top, const SampledKeys& sampled
     const Axis& key = sampled.keys[k];
     const KeySpec* spec = find_key(key.name);
     const Where where{top.file, "uncertain." + key.name, sampled.lines[k]};
-    if (!spec || !(spec->kinds & bit(sampled.model)) || !spec->axis ||
-        (spec->type != Type::number && spec->type != Type::bat_parameter))
+    if (!spec || !drawable(*spec, sampled.model))
       reject(where, "{...}", "expected a numeric key of kind " + kind_text(sampled.model) + " that may be an axis: " +
-                                 key_list(sampled.model, true) + ", or \"bat.PARAMETER\"");
+                                 drawable_key_list(sampled.model) + ", or \"bat.PARAMETER\"");
     if (find(given.scene, key.name))
       reject(where, "{...}", "is drawn here and set in [scene]: give it in one place");
     if (find(given.axes, key.name)) reject(where, "{...}", "is drawn here and is an axis: give it in one place");

@@ -261,6 +261,17 @@ std::string key_list(StudyKind kind, bool axes_only) {
   return list;
 }
 
+bool drawable(const KeySpec& k, StudyKind kind) {
+  return (k.kinds & bit(kind)) && k.axis && (k.type == Type::number || k.type == Type::bat_parameter);
+}
+
+std::string drawable_key_list(StudyKind kind) {
+  std::string list;
+  for (const KeySpec& k : keys)
+    if (drawable(k, kind)) list += (list.empty() ? "" : ", ") + std::string(k.name);
+  return list;
+}
+
 }  // namespace study_detail
 
 using namespace study_detail;

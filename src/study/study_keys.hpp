@@ -59,6 +59,10 @@ const KeySpec* find_key(std::string_view name);
 std::optional<Dimension> key_dimension(const KeySpec& spec, std::string_view name);
 // The keys of a kind (only those that may be axes, with axes_only), comma-separated for messages.
 std::string key_list(StudyKind kind, bool axes_only);
+// The keys an uncertainty study may draw: numbers (and bat parameters) a study of this kind takes
+// as an axis; and their list, for a refusal.
+bool drawable(const KeySpec& k, StudyKind kind);
+std::string drawable_key_list(StudyKind kind);
 
 // An output variable (an ImpactResult field), the kinds that give it and those that write it when
 // [output] names none. The order of the table is the order of output_names() and default_outputs().

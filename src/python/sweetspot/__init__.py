@@ -37,7 +37,8 @@ __all__ = ["Bat", "Result", "ball", "impact", "impacts", "run_study", "certify",
 # pybind11's RuntimeError "Unable to cast" or TypeError "incompatible function arguments").
 
 def _refuse(name, value, expected):
-    raise ValueError(f"{name} {value!r}: expected {expected}")
+    shown = " ".join(repr(value).split())  # one line, an array's repr too
+    raise ValueError(f"{name} {shown}: expected {expected}")
 
 
 def _text(name, value, expected="a string", path=False):
@@ -200,6 +201,21 @@ def ball(name="n2000"):
     return _ball(_text("name", name, "a ball preset's name or a TOML file's path", path=True))
 
 
+def _knot_values(name, value):
+    """One value per knot: a 1-D sequence of real numbers (not a 2-D array, which would be read
+    flattened, nor a masked array, whose mask would be ignored, nor bools)."""
+    if value is None:
+        return None
+    expected = "a 1-D array of real numbers, one per knot (m)"
+    if np.ma.isMaskedArray(value) or (isinstance(value, (list, tuple)) and
+                                      any(isinstance(x, (bool, np.bool_)) for x in value)):
+        _refuse(name, value, expected)
+    array = _real(name, value, arrays=True)
+    if np.ndim(array) != 1:
+        _refuse(name, value, expected)
+    return [float(x) for x in array]
+
+
 def _from_knots(name, length, z, outer_diameter, inner_diameter=None, *, interpolation="linear", slices=None,
                 material="maple", density=None, youngs_modulus=None, shear_modulus=None, shear_coefficient=None):
     """A bat from its diameters at knots, as a profile CSV with a z_m column gives them.
@@ -210,8 +226,8 @@ def _from_knots(name, length, z, outer_diameter, inner_diameter=None, *, interpo
     (kg/m^3), youngs_modulus, shear_modulus (Pa) and shear_coefficient overriding the preset's.
     length may be a string with a unit ("33 in"); the knot arrays are numbers in m.
     Returns: a Bat. Its results store its name and slices but no bat file (it has none)."""
-    knots = {k: None if v is None else [float(x) for x in np.ravel(_real(k, v, arrays=True))]
-             for k, v in (("z", z), ("outer_diameter", outer_diameter), ("inner_diameter", inner_diameter))}
+    knots = {k: _knot_values(k, v) for k, v in (("z", z), ("outer_diameter", outer_diameter),
+                                                ("inner_diameter", inner_diameter))}
     return Bat._from_knots(_text("name", name), _real("length", length, "length"), knots["z"], knots["outer_diameter"],
                            knots["inner_diameter"], _text("interpolation", interpolation, '"linear", "pchip" or "stepped"'),
                            _slices(slices), _text("material", material, "a wood preset's name"),
