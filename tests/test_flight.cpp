@@ -384,6 +384,25 @@ TEST_CASE("A batted ball launched past the vertical flies back, the mirror image
   CHECK(r.distance > 0);
 }
 
+TEST_CASE("A ball launched level from the ground with a lift above its weight rises, as from a hair above it",
+          "[flight]") {
+  // 9000 rpm of backspin at 40 m/s: the Magnus lift beats gravity. From height 0 the flight
+  // landed at once (distance 0); without the lift it still does.
+  Launch l;
+  l.speed = 40;
+  l.angle = 0;
+  l.backspin = 9000 * 2 * std::numbers::pi / 60;
+  l.height = 0;
+  const FlightResult ground = simulate_flight(l, Air{});
+  l.height = 1e-9;
+  const FlightResult above = simulate_flight(l, Air{});
+  CHECK(ground.distance > 5);
+  CHECK(ground.distance == Approx(above.distance).epsilon(1e-6));
+  l.height = 0;
+  l.backspin = 0;
+  CHECK(simulate_flight(l, Air{}).distance == 0);
+}
+
 TEST_CASE("A study refuses air that is not air, naming the key", "[flight][study]") {
   for (const auto& [scene, words] : std::vector<std::pair<std::string, std::string>>{
            {"humidity = 150\n", "humidity"}, {"temperature = -5\n", "temperature"}, {"pressure = 0\n", "pressure"},

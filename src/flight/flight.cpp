@@ -83,9 +83,15 @@ FlightResult simulate_flight(const Launch& launch, const Air& air, const FlightO
   r.apex = launch.height;
   const bool sampling = options.sample_interval > 0;
   if (sampling) record(r, 0, state);
-  if (launch.height == 0 && !(state[5] > 0)) {  // on the ground and not rising: it lands at once
-    land(r, 0, state);
-    return r;
+  if (launch.height == 0 && !(state[5] > 0)) {
+    // On the ground and not rising: it lands at once, unless launched level with a lift above
+    // its weight (heavy backspin), which takes it up.
+    FlightState rate{};
+    equations(state, rate, 0.0);
+    if (!(state[5] == 0 && rate[5] > 0)) {
+      land(r, 0, state);
+      return r;
+    }
   }
   auto stepper =
       odeint::make_dense_output(options.tolerance, options.tolerance, odeint::runge_kutta_dopri5<FlightState>());
