@@ -46,14 +46,21 @@ void print_test(const char* surface, const BallLabTest& t) {
               1e3 * t.contact_time);
 }
 
+// A number as short as it reads (0, not 0.000000).
+std::string shown(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.10g", x);
+  return text;
+}
+
 void run_ball(const BallCommand& o) {
   for (const double v : o.speeds_mph)
     if (!(v > 0 && v * mph <= max_cor_law_speed))
-      throw InputError("ball: --speeds " + std::to_string(v) + ": expected speeds in (0, 223.7] mph");
+      throw InputError("ball: --speeds " + shown(v) + ": expected speeds in (0, 223.7] mph");
   if (!(o.cylinder_diameter > 0 && o.cylinder_diameter < 1))
-    throw InputError("ball: --cylinder-diameter " + std::to_string(o.cylinder_diameter) + ": expected (0, 1) m");
+    throw InputError("ball: --cylinder-diameter " + shown(o.cylinder_diameter) + ": expected (0, 1) m");
   if (!(o.cylinder_speed_mph > 0 && o.cylinder_speed_mph * mph <= max_cor_law_speed))
-    throw InputError("ball: --cylinder-speed " + std::to_string(o.cylinder_speed_mph) + ": expected (0, 223.7] mph");
+    throw InputError("ball: --cylinder-speed " + shown(o.cylinder_speed_mph) + ": expected (0, 223.7] mph");
   const BallFit fit = load_ball(o.ball);
   const Ball& b = fit.ball;
   std::vector<BallLabTest> flat;
