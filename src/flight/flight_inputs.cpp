@@ -1,5 +1,6 @@
 // What a flight refuses before any work: the launch and the options (the air: air.cpp).
 #include <cmath>
+#include <numbers>
 
 #include "sweetspot/flight/flight.hpp"
 
@@ -8,7 +9,7 @@ namespace sweetspot {
 std::optional<InputProblem> launch_problem(const Launch& launch) {
   // Past these the flight is no ball's: it did not land within max_time, and the run failed after
   // its work instead of refusing before it.
-  constexpr double max_speed = 1000, max_spin = 1e5 * 2 * 3.141592653589793 / 60;  // m/s; 1e5 rpm in rad/s
+  constexpr double max_speed = 1000, max_spin = 1e5 * 2 * std::numbers::pi / 60;  // m/s; 1e5 rpm in rad/s
   if (!(launch.speed >= 0 && launch.speed <= max_speed))
     return InputProblem{"speed", launch.speed, "a speed from 0 to 1000 m/s"};
   if (!(launch.angle >= -90 && launch.angle <= 90))
