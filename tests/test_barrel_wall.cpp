@@ -309,6 +309,9 @@ TEST_CASE("Bad wall input is refused with the file, key and value", "[barrel]") 
       // reading, naming the file (it was a bare "[barrel]" line when the modes were solved).
       {"wall_thickness = 0.0026", "wall_thickness = 0.0026\n[barrel]\ncompression = 10", "compression", "10",
        "expected a stiffer barrel"},
+      // ... or so stiff that its hoop modulus is no material's (past 1e12 Pa, the moduli's bound).
+      {"wall_thickness = 0.0026", "wall_thickness = 0.0026\n[barrel]\nhoop_frequency = 20000", "hoop_frequency",
+       "20000", "is no material's"},
   };
   for (const auto& c : cases) {
     DYNAMIC_SECTION(c.to) {

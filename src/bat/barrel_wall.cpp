@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <string>
 
+#include "sweetspot/bat/parameter_bounds.hpp"
 #include "sweetspot/input_error.hpp"
 
 namespace sweetspot {
@@ -185,6 +186,16 @@ double compression_scale(const Bat& bat, int reference, double target) {
   return std::exp(x1);
 }
 
+// "[barrel] compression = 10: the hoop modulus that gives it (3.71e+07 Pa)": what a refused
+// calibration was given and made.
+std::string calibration_given(const BarrelCalibration& barrel, double hoop_modulus) {
+  char text[120];
+  std::snprintf(text, sizeof text, "[barrel] %s = %g: the hoop modulus that gives it (%.3g Pa)",
+                barrel.compression > 0 ? "compression" : "hoop_frequency",
+                barrel.compression > 0 ? barrel.compression : barrel.hoop_frequency, hoop_modulus);
+  return text;
+}
+
 }  // namespace
 
 int barrel_reference_slice(const Bat& bat, const std::vector<WallMode>& wall) {
@@ -218,16 +229,15 @@ std::vector<WallMode> barrel_wall(const Bat& bat) {
   }
   Material calibrated = bat.material;
   calibrated.hoop_modulus = bat.material.wall_hoop_modulus() * scale;
+  // The calibrated modulus is a material's too (a hoop frequency of 20 kHz asked 1.2e13 Pa).
+  const ParameterBound& moduli = *parameter_bound("hoop_modulus");
+  if (!within(moduli, calibrated.hoop_modulus))
+    throw InputError(calibration_given(barrel, calibrated.hoop_modulus) + " is no material's; expected " +
+                     expected_range(moduli));
   wall = uncalibrated_wall(bat, calibrated);
-  if (!(wall[reference].mass > 0)) {
-    char why[240];
-    std::snprintf(why, sizeof why,
-                  "[barrel] %s = %g: the hoop modulus that gives it (%.3g Pa) leaves the barrel no tube (its "
-                  "ovaling would spread past the bore); expected a stiffer barrel",
-                  barrel.compression > 0 ? "compression" : "hoop_frequency",
-                  barrel.compression > 0 ? barrel.compression : barrel.hoop_frequency, calibrated.hoop_modulus);
-    throw InputError(why);
-  }
+  if (!(wall[reference].mass > 0))
+    throw InputError(calibration_given(barrel, calibrated.hoop_modulus) +
+                     " leaves the barrel no tube (its ovaling would spread past the bore); expected a stiffer barrel");
   if (barrel.compression > 0 && barrel.hoop_frequency > 0) {
     // Both measured: E_t from the compression, the modes' mass from the frequency (every section
     // of the barrel by the reference's ratio).
