@@ -215,6 +215,8 @@ TEST_CASE("sweetspot ball runs the standard tests and refuses a ball that is not
   refused("preset = \"mlb\"\nmass = 0\n", {"mass = 0"});
   refused("preset = \"mlb\"\ncolor = \"red\"\n", {"unknown key 'color'"});
   refused("mass = 0.145\nradius = 0.0366\ncor = 0.5\n", {"stiffness one way", "0 given"});
+  refused("k1 = 6e7\n", {"b.toml: [ball]: mass is missing"});  // not "mass = 0", which was not given
+  refused("mass = 0.145\nk1 = 6e7\n", {"b.toml: [ball]: radius is missing"});
   refused("", {"b.toml: [ball]: is empty", "preset"});
   refused("preset = \"mlb\"\na = 0\n", {"a = 0", "positive"});
   refused("preset = \"mlb\"\nk1 = 0\n", {"k1 = 0", "positive"});

@@ -210,6 +210,10 @@ double dynamic_stiffness_on_rigid(const Ball& ball, double speed) {
 
 BallFit fit_ball(const BallTests& t, const std::string& where) {
   BallFit fit;
+  // 0 is a value not given (a [ball] table refuses a given 0 when it reads it), as cor's absence.
+  for (const auto& [key, value] : {std::pair{"mass", t.mass}, std::pair{"radius", t.radius}})
+    if (value == 0)
+      throw InputError(where + ": " + key + " is missing: expected the ball's " + key + " (or a preset that gives it)");
   require_in(where, "mass", t.mass, ball_mass_range);
   require_in(where, "radius", t.radius, ball_radius_range);
   if (t.stiffness_cylinder_diameter != 0)
