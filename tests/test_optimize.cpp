@@ -89,6 +89,18 @@ std::string read(const std::string& path) {
   return text.str();
 }
 
+// An optimisation's journal row: the design, its objective, its constraints, its status, then
+// slices_used and four error estimates. forged_journal opens the journal a run of `p` into `out`
+// would resume from, for a test to write rows a run did not.
+std::size_t journal_width(const OptimizationProblem& p) { return p.free.size() + 1 + p.constraints.size() + 1 + 5; }
+
+Journal forged_journal(const OptimizationProblem& p, const std::string& out) {
+  return Journal(Journal::path_for(out),
+                 journal_key(p.text, {p.base_source, p.reference_source},
+                             static_cast<std::uint64_t>(p.optimizer.max_evaluations), journal_width(p)),
+                 false, [](const double*) { return std::string(); });
+}
+
 }  // namespace
 
 TEST_CASE("optimize finds the closed-form best density of a rigid bat swung with equal effort", "[optimize]") {
@@ -329,13 +341,10 @@ TEST_CASE("a journaled evaluation of another design is dropped with the later on
   REQUIRE(whole.exit_code == 0);
 
   const OptimizationProblem p = load_optimization(opt);
-  // design, objective, constraints, status, then slices_used and four error estimates
-  const std::size_t width = p.free.size() + 1 + p.constraints.size() + 1 + 5;
+  const std::size_t width = journal_width(p);
   const std::string out = dir / "forged.h5";
   {
-    Journal journal(Journal::path_for(out), journal_key(p.text, {p.base_source, p.reference_source},
-                                                      static_cast<std::uint64_t>(p.optimizer.max_evaluations), width),
-                    false, [](const double*) { return std::string(); });
+    Journal journal = forged_journal(p, out);
     std::vector<double> row(width, 0.0);
     std::fill(row.end() - 4, row.end(), std::nan(""));  // no stated accuracy: no estimates
     row[0] = 2999.5;  // a density inside the bounds that the search does not start from
@@ -366,12 +375,10 @@ TEST_CASE("a resumed run's failed evaluation says why it failed, as an uninterru
   REQUIRE(whole.exit_code == 0);
 
   const OptimizationProblem p = load_optimization(opt);
-  const std::size_t width = p.free.size() + 1 + p.constraints.size() + 1 + 5;
+  const std::size_t width = journal_width(p);
   const std::string out = dir / "resumed.h5";
   {
-    Journal journal(Journal::path_for(out), journal_key(p.text, {p.base_source, p.reference_source},
-                                                      static_cast<std::uint64_t>(p.optimizer.max_evaluations), width),
-                    false, [](const double*) { return std::string(); });
+    Journal journal = forged_journal(p, out);
     std::vector<double> row(width, std::nan(""));  // no objective, no estimates
     row[0] = p.free[0].start;                       // the design the search asks first
     row[p.free.size() + 1] = 1;                     // status failed
@@ -393,13 +400,10 @@ TEST_CASE("a journaled ok evaluation with a NaN constraint is dropped on reading
   const auto opt = dir.write("opt.toml", density_problem("[constraints]\nmass = { max = 2 }\n"));
   const OptimizationProblem p = load_optimization(opt);
   REQUIRE(p.constraints.size() == 1);
-  // design, objective, constraints, status, then slices_used and four error estimates
-  const std::size_t width = p.free.size() + 1 + p.constraints.size() + 1 + 5;
+  const std::size_t width = journal_width(p);
   const std::string out = dir / "nan.h5";
   {
-    Journal journal(Journal::path_for(out), journal_key(p.text, {p.base_source, p.reference_source},
-                                                      static_cast<std::uint64_t>(p.optimizer.max_evaluations), width),
-                    false, [](const double*) { return std::string(); });
+    Journal journal = forged_journal(p, out);
     std::vector<double> row(width, 0.0);
     std::fill(row.end() - 4, row.end(), std::nan(""));  // no stated accuracy: no estimates
     row[0] = 700;
@@ -451,7 +455,7 @@ TEST_CASE("a journaled ok evaluation whose estimates cannot be true at the state
                   "[optimizer]\nmax_evaluations = 1\n");
   const OptimizationProblem p = load_optimization(opt);
   // design, objective, status, then slices_used, the slicing's, modes', step's and total errors
-  const std::size_t width = p.free.size() + 1 + p.constraints.size() + 1 + 5;
+  const std::size_t width = journal_width(p);
   const std::vector<std::pair<std::vector<double>, std::string>> forged = {
       {{336, 1e-4, 1e-4, 1e-4, 0.5}, "a total error that is not its estimates' sum"},
       {{336, 1e-2, 1e-2, 1e-2, 3e-2}, "total error passes the accuracy"},
@@ -462,9 +466,7 @@ TEST_CASE("a journaled ok evaluation whose estimates cannot be true at the state
     INFO(why);
     const std::string out = dir / "forged.h5";
     {
-      Journal journal(Journal::path_for(out), journal_key(p.text, {p.base_source, p.reference_source},
-                                                        static_cast<std::uint64_t>(p.optimizer.max_evaluations), width),
-                      false, [](const double*) { return std::string(); });
+      Journal journal = forged_journal(p, out);
       std::vector<double> row = {0.0635, 45.0, 0.0};  // a design, its objective, status ok
       row.insert(row.end(), chosen.begin(), chosen.end());
       REQUIRE(row.size() == width);

@@ -502,15 +502,18 @@ class Progress {
   Clock::time_point start_ = Clock::now(), last_ = Clock::now();
 };
 
+// Where the output `name` sits in a point's row, or -1 when the study does not ask it.
+int column_of(const OutputLayout& layout, std::string_view name) {
+  const auto it = std::ranges::find(layout.names, name);
+  return it == layout.names.end() ? -1 : layout.offsets[it - layout.names.begin()];
+}
+
 // Why a journal's row cannot be a finished point of this study, or "" when it can: a status
 // outside the enumeration, a failed point with values, an ok point without its exit speed (an
 // inaccurate point keeps what it got, which may be NaN where a finer slicing could not be solved).
+
 std::string recovered_row_problem(const OutputLayout& layout, const double* row) {
-  const auto column = [&layout](const std::string& name) {
-    const auto it = std::find(layout.names.begin(), layout.names.end(), name);
-    return it == layout.names.end() ? -1 : layout.offsets[it - layout.names.begin()];
-  };
-  const int status_at = column("status"), vf_at = column("vf");
+  const int status_at = column_of(layout, "status"), vf_at = column_of(layout, "vf");
   if (status_at < 0) return "";  // without a status there is nothing the values must agree with
   const double status = row[status_at];
   const bool named = status >= 0 && status <= 255 && status == std::floor(status) &&
@@ -603,9 +606,7 @@ class Coordinator {
   // from the journal, which will hold them once more. Returns how many are kept.
   std::size_t resume_journaled() {
     const std::vector<std::uint64_t>& recovered = journal_.recovered_points();
-    const auto status_name = std::ranges::find(layout_.names, "status");
-    const int status_at =
-        status_name == layout_.names.end() ? -1 : layout_.offsets[status_name - layout_.names.begin()];
+    const int status_at = column_of(layout_, "status");
     std::vector<std::uint64_t> kept;
     std::vector<double> kept_rows;
     for (std::size_t i = 0; i < recovered.size(); ++i) {
