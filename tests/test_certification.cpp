@@ -195,6 +195,9 @@ TEST_CASE("certify refuses a bad standard, pivot or option with one line", "[cer
   require_refused(run_program("certify " + r161_file + " --pivot-point 0.9"), {"pivot point 0.9", "before the scanned"});
   require_refused(run_program("certify " + r161_file + " --pivot-point -0.1"), {"pivot point -0.1"});
   require_refused(run_program("certify " + r161_file + " --e0 1.5"), {"e0 1.5", "[0.05, 1]"});
+  // mlb's COR falls with speed: e0 0.99 at its reference speed is past 1 at rest (certify's, not impact's).
+  require_refused(run_program("certify " + r161_file + " --ball mlb --e0 0.99"),
+                  {"certify: e0 0.99", "COR of 1.04795", "at 0 m/s", "not a physical ball"});
   require_refused(run_program("certify " + r161_file + " --ball-speed -3"), {"ball speed -3"});
   require_refused(run_program("certify " + r161_file + " --modes many"), {"--modes many"});
   require_refused(run_program("certify " + r161_file + " --slices 3"), {"--slices"});

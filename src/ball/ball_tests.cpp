@@ -225,4 +225,15 @@ BallFit fit_ball(const BallTests& t, const std::string& where) {
   return fit;
 }
 
+std::optional<std::string> cor_law_misfit(const Ball& ball) {
+  if (!ball.speed_dependent()) return std::nullopt;
+  for (const double v : {0.0, max_cor_law_speed})
+    if (!in_range(ball_cor_range, ball.cor_at(v)))
+      return "with cor_slope = " + detail::format_number(ball.cor_slope) + " per m/s about " +
+             detail::format_number(ball.cor_speed) + " m/s gives a COR of " + detail::format_number(ball.cor_at(v)) +
+             " at " + detail::format_number(v) + " m/s: not a physical ball (expected " + range_text(ball_cor_range) +
+             ")";
+  return std::nullopt;
+}
+
 }  // namespace sweetspot

@@ -78,6 +78,8 @@ RigSettings certification_rig(const Standard& standard, const CertifyOptions& op
   rig.accuracy = options.accuracy.value_or(0);
   rig.integrator.damping_loss = false;  // the measures need no energy balance
   if (!in_range(ball_cor_range, rig.ball.e0)) reject("e0", rig.ball.e0, range_text(ball_cor_range));
+  if (const auto misfit = cor_law_misfit(rig.ball))
+    throw InputError("certify: e0 " + detail::format_number(rig.ball.e0) + ": " + *misfit);
   if (!(rig.ball_speed > 0) || !std::isfinite(rig.ball_speed))
     reject("ball speed", rig.ball_speed, "a finite speed > 0 (m/s) toward the bat at rest");
   const double start = scan_start(options.scan, length);
