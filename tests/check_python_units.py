@@ -65,6 +65,12 @@ check(x.length == y.length and np.array_equal(x.outer_diameter, y.outer_diameter
       and np.array_equal(x.modes(3)["frequencies_hz"], y.modes(3)["frequencies_hz"]), "from_dimensions with units")
 check(refused(lambda: sweetspot.Bat.from_dimensions("a", "33 oz", **dims_us, **materials), "length '33 oz'"),
       "from_dimensions length in oz")
+# A length refused as given, not as its metres: "-33 in", not -0.8382 m.
+check(refused(lambda: sweetspot.Bat.from_dimensions("a", "-33 in", **dims_us, **materials),
+              "length '-33 in': expected a positive length"), "from_dimensions negative length with a unit")
+check(refused(lambda: sweetspot.Bat.from_dimensions("a", "33 in", **dict(dims_us, handle_diameter="-1 in"),
+                                                    **materials), "handle_diameter '-1 in'"),
+      "from_dimensions negative dimension with a unit")
 k = sweetspot.Bat.from_knots("k", "33 in", [0, 0.8382], [0.025, 0.066])
 check(k.length == 0.8382, "from_knots length in inches")
 

@@ -245,6 +245,15 @@ def _constants(density, youngs_modulus, shear_modulus, shear_coefficient):
     return {k: _real(k, v) for k, v in given.items()}
 
 
+def _length(name, value, zero=False):
+    """A dimension in m, refused as given ("-33 in", not its metres) unless positive (or 0 with
+    zero=True) and finite."""
+    metres = _real(name, value, "length")
+    if not (math.isfinite(metres) and (metres >= 0 if zero else metres > 0)):
+        _refuse(name, value, "a length >= 0" if zero else "a positive length")
+    return metres
+
+
 def _from_dimensions(name, length, *, knob_diameter, knob_length, handle_diameter, taper_start, taper_end,
                      barrel_diameter, end="flat", end_depth=0.0, wall_thickness=None, slices=None, material="maple",
                      density=None, youngs_modulus=None, shear_modulus=None, shear_coefficient=None):
@@ -255,13 +264,13 @@ def _from_dimensions(name, length, *, knob_diameter, knob_length, handle_diamete
     "flat", "rounded" or "cupped"; slices (default about 1 cm each); material, a wood preset, with
     density (kg/m^3), youngs_modulus, shear_modulus (Pa) and shear_coefficient overriding the preset's.
     Returns: a Bat, whose results store a bat file's text (bat_toml) that Bat.from_text reads back."""
-    length = _real("length", length, "length")
+    length = _length("length", length)
     dimensions = dict(knob_diameter=knob_diameter, knob_length=knob_length, handle_diameter=handle_diameter,
-                      taper_start=taper_start, taper_end=taper_end, barrel_diameter=barrel_diameter,
-                      end_depth=end_depth)
+                      taper_start=taper_start, taper_end=taper_end, barrel_diameter=barrel_diameter)
     if wall_thickness is not None:  # a hollow bat's wall; a solid bat has none (0 is refused)
         dimensions["wall_thickness"] = wall_thickness
-    dimensions = {k: _real(k, v, "length") for k, v in dimensions.items()}
+    dimensions = {k: _length(k, v) for k, v in dimensions.items()}
+    dimensions["end_depth"] = _length("end_depth", end_depth, zero=True)
     return Bat._from_dimensions(_text("name", name), length, dimensions,
                                 _text("end", end, '"flat", "rounded" or "cupped"'), _slices(slices),
                                 _text("material", material, "a wood preset's name"),
