@@ -3,8 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/SparseCore>
@@ -138,6 +142,27 @@ Eigen::MatrixXd beam_mass_matrix(const Bat& bat, BeamTheory theory) {
   return MatrixXd(theory == BeamTheory::timoshenko ? timoshenko_system(bat).mass : euler_bernoulli_system(bat).mass);
 }
 
+struct BasisWidening {
+  explicit BasisWidening(Bat b) : bat(std::move(b)) {}
+  const Bat bat;
+  std::mutex mutex;
+  std::map<double, std::unique_ptr<const ModalBasis>> solved;  // by the frequency solved below
+};
+
+const ModalBasis& ModalBasis::widened(const ModeRequest& request) const {
+  if (!widening || complete() || request.vibrational != -2 || !(request.below_omega > solved_below)) return *this;
+  const std::lock_guard lock(widening->mutex);
+  std::unique_ptr<const ModalBasis>& slot = widening->solved[request.below_omega];
+  if (!slot) {
+    try {
+      slot = std::make_unique<const ModalBasis>(compute_modes(widening->bat, theory, request));
+    } catch (const InputError&) {  // impractical at this slicing: the modes solved serve
+      return *this;
+    }
+  }
+  return *slot;
+}
+
 ModalBasis compute_modes(const Bat& bat, BeamTheory theory, ModeRequest request) {
   const bool timoshenko = theory == BeamTheory::timoshenko;
   if (!timoshenko && bat.slices() > max_euler_bernoulli_slices)
@@ -169,8 +194,10 @@ ModalBasis compute_modes(const Bat& bat, BeamTheory theory, ModeRequest request)
   // Row i of the map reads the degrees of freedom 2i to 2i + 3 (both theories: beam_system.cpp).
   basis.psi = s.slice_displacement * x;
   basis.vectors = std::move(x);
-  if (partial && !basis.complete())
+  if (partial && !basis.complete()) {
     basis.solved_below = request.vibrational > 0 ? basis.omega(basis.count() - 1) : request.below_omega;
+    if (request.vibrational == -2) basis.widening = std::make_shared<BasisWidening>(bat);
+  }
   if (!request.is_rigid_only())
     basis.flexibility = std::make_shared<const VibrationalFlexibility>(s, mass, basis.vectors.leftCols(2));
   basis.wall = barrel_wall(bat);

@@ -321,7 +321,12 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& stated)
   }
   const ImpactScene& scene = adjusted ? *adjusted : given;
   SceneGeometry g = scene_geometry(scene, basis);
-  const bool reruns_if_caught_again = scene.vibrational_modes == auto_modes && g.drops_solved;
+  // Without a stated accuracy (whose modes' share widens the basis itself: widened_scene), a
+  // tolerance looser than caught_again_mode_tolerance solved fewer modes than a ball caught again
+  // needs.
+  const bool widens = scene.vibrational_modes == auto_modes && !(scene.accuracy > 0) && basis.widening &&
+                      scene.mode_tolerance > caught_again_mode_tolerance;
+  const bool reruns_if_caught_again = scene.vibrational_modes == auto_modes && (g.drops_solved || widens);
   // A scene whose modes' share was divided took its dropped modes past their share before (a
   // coarser rung, or this one on a narrower basis: widened_scene), mostly by a ball caught again:
   // every solved mode at once.
@@ -334,11 +339,18 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& stated)
   // of each later one can magnify them past it (up to 12x the tolerance on R161 and the torpedo):
   // the impact is then run again with every solved mode kept, the unsolved ones alone dropped,
   // and their estimate counted once per contact (README "Numerics").
+  const ModalBasis* solved = &basis;
   if (over_share_before || (reruns_if_caught_again && c.contacts > 1)) {
+    if (widens && !over_share_before) {
+      ImpactScene tighter = scene;
+      tighter.ball = given.ball;  // as the caller asked its basis: struck_ball follows
+      tighter.mode_tolerance = caught_again_mode_tolerance;
+      solved = &basis.widened(auto_mode_request(tighter, basis));
+    }
     ImpactScene every_solved = scene;
     every_solved.mode_tolerance = 0;  // nothing solved is dropped
-    g = scene_geometry(every_solved, basis);
-    c = collide_with_patch(scene, basis, g);
+    g = scene_geometry(every_solved, *solved);
+    c = collide_with_patch(scene, *solved, g);
     g.modes_error *= c.contacts;
   }
 
@@ -358,7 +370,7 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& stated)
   r.slices_used = basis.slices();
   r.step_used = c.step;
   if (scene.error_estimates && c.status == CollisionStatus::ok) {
-    r.step_error = step_error_estimate(scene, basis, g, c);
+    r.step_error = step_error_estimate(scene, *solved, g, c);
     r.total_error = r.modes_error + r.step_error + r.slicing_error;  // NaN until the caller adds the slicing's
   }
   if (c.status == CollisionStatus::refused_step) return r;
@@ -370,19 +382,19 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& stated)
   }
   if (scene.rigid_comparison) r.vf_rigid = rigid_exit_speed(scene.ball.e0, g.recoil, scene.ball_speed, g.bat_speed);
   if (scene.linear_batted_ball)
-    r.bbs_linear = linear_batted_ball_speed(collision_efficiency(basis, scene, scene.e_a_speed), scene.ball_speed,
+    r.bbs_linear = linear_batted_ball_speed(collision_efficiency(*solved, scene, scene.e_a_speed), scene.ball_speed,
                                             g.bat_speed);
   r.e_eff = effective_cor(r.vf, g.recoil, scene.ball_speed, g.bat_speed);
   r.rig = impact_rig_measures(scene, g, r.vf);
   // Only a whole force profile can drive the modes (the toy model does the same).
   if (scene.van_zandt_comparison && c.status == CollisionStatus::ok)
     r.vf_van_zandt = van_zandt_exit_speed(g.contact, scene.ball, g.recoil, scene.ball_speed, g.bat_speed, c.force);
-  if (c.status == CollisionStatus::ok) add_force_analyses(scene, basis, g, c, r);
+  if (c.status == CollisionStatus::ok) add_force_analyses(scene, *solved, g, c, r);
 
   ImpactEnergy& e = r.energy;
   e.initial = 0.5 * scene.ball.mass * scene.ball_speed * scene.ball_speed + 0.5 * g.contact.velocity0.squaredNorm();
   e.ball = 0.5 * scene.ball.mass * r.vf * r.vf;
-  bat_energies(scene, g, basis, c, r);
+  bat_energies(scene, g, *solved, c, r);
   r.launch = head_on_launch(r.vf);
   close_balance(r);
   const bool collision_time = scene.integrator.find_collision_time || scene.force_response;

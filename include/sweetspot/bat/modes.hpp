@@ -17,6 +17,9 @@ namespace sweetspot {
 
 class VibrationalFlexibility;
 
+struct ModeRequest;
+struct BasisWidening;  // what solves a partial basis's bat further (modes.cpp)
+
 struct ModalBasis {
   BeamTheory theory = BeamTheory::timoshenko;
   std::vector<double> z;   // slice centres, m from the knob
@@ -51,6 +54,9 @@ struct ModalBasis {
   // The bat's moment of inertia about its own long axis, kg m^2 (the slices' rho (pi/2)(R2^4 - R1^4)
   // dz): how it rolls under a tangential force (oblique_impact.hpp). 0 when not known: no roll.
   double axial_moment_of_inertia = 0;
+  // A basis solved below a frequency keeps its bat, to be solved further (widened); it and its
+  // copies share what that solves. Null for any other basis.
+  std::shared_ptr<BasisWidening> widening;
 
   int count() const { return static_cast<int>(omega.size()); }
   // Every mode of the discretisation solved (rigid-only bases are not).
@@ -75,6 +81,11 @@ struct ModalBasis {
   double section_radius_at(double z) const;
   // Vibrational frequencies in Hz (modes 2, 3, ...), ascending.
   std::vector<double> vibrational_frequencies_hz() const;
+  // The same bat solved below request.below_omega (a ModeRequest::below), for an impact that
+  // needs more of its modes than this partial basis holds (a ball caught again, impact.cpp):
+  // solved once per frequency, thread-safely, and kept with this basis. This basis itself where
+  // it reaches that far already, is not partial, or cannot be solved further in practice.
+  const ModalBasis& widened(const ModeRequest& request) const;
   // Zeros of psi_n between slice centres, found by linear interpolation, m from the knob.
   std::vector<double> nodes(int n) const;
 };
