@@ -422,6 +422,20 @@ TEST_CASE("A stated accuracy holds where the impact makes no step estimate", "[e
   CHECK(slicing_allowance(1e-3, 1e-4, std::nan("")) == Approx(1e-3 - 1e-4 - 2.5e-4));
 }
 
+namespace {
+
+// simulate_within_accuracy's bases: the design cut into each slicing asked, every mode solved,
+// each kept in `bases`; a slicing past `most` refused as an impractical solve would be.
+auto every_mode_bases(const BatDesign& design, BeamTheory theory, std::map<int, ModalBasis>& bases,
+                      int most = max_slices) {
+  return [&design, theory, &bases, most](int slices, const ImpactScene&) -> const ModalBasis& {
+    if (slices > most) throw InputError("slices = " + std::to_string(slices) + ": impractical here");
+    return bases.try_emplace(slices, compute_modes(bat_with_slices(design, slices), theory)).first->second;
+  };
+}
+
+}  // namespace
+
 TEST_CASE("A stated accuracy the bat cannot be solved finely enough for ends inaccurate, saying why",
           "[error_estimates]") {
   // Every slicing past 168 refused as an impractical solve would be: the ladder keeps its finest
@@ -432,11 +446,7 @@ TEST_CASE("A stated accuracy the bat cannot be solved finely enough for ends ina
   scene.z = 0.605;
   scene.accuracy = 1e-7;
   std::map<int, ModalBasis> bases;
-  const auto basis_at = [&](int slices, const ImpactScene&) -> const ModalBasis& {
-    if (slices > 168) throw InputError("slices = " + std::to_string(slices) + ": impractical here");
-    const Bat bat = bat_with_slices(design, slices);
-    return bases.try_emplace(slices, compute_modes(bat, BeamTheory::timoshenko)).first->second;
-  };
+  const auto basis_at = every_mode_bases(design, BeamTheory::timoshenko, bases, 168);
   const ImpactResult r = simulate_within_accuracy(basis_at, 84, BeamTheory::timoshenko, scene);
   CHECK(r.status == CollisionStatus::inaccurate);
   CHECK(r.slices_used == 168);
@@ -456,10 +466,7 @@ TEST_CASE("A bat that cannot be cut finer at all ends inaccurate, saying its sli
   scene.z = 0.605;
   scene.accuracy = 1e-3;
   std::map<int, ModalBasis> bases;
-  const auto basis_at = [&](int slices, const ImpactScene&) -> const ModalBasis& {
-    return bases.try_emplace(slices, compute_modes(bat_with_slices(design, slices), BeamTheory::euler_bernoulli))
-        .first->second;
-  };
+  const auto basis_at = every_mode_bases(design, BeamTheory::euler_bernoulli, bases);
   const ImpactResult r =
       simulate_within_accuracy(basis_at, max_euler_bernoulli_slices, BeamTheory::euler_bernoulli, scene);
   CHECK(r.status == CollisionStatus::inaccurate);

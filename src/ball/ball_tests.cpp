@@ -68,11 +68,10 @@ void fit_cor(const BallTests& t, const std::string& where, BallFit& fit) {
   b.e0 = line.intercept, b.cor_speed = line.mean_x, b.cor_slope = line.slope;
   fit.cor_residual = line.rms;
   // The law must stay a COR over every speed a ball meets.
-  for (const double v : {0.0, max_cor_law_speed})
-    if (!in_range(ball_cor_range, b.cor_at(v)))
-      reject(where, "cor_slope", b.cor_slope,
-             "gives a COR of " + detail::format_number(b.cor_at(v)) + " at " + detail::format_number(v) +
-                 " m/s: not a physical ball (expected " + range_text(ball_cor_range) + " from 0 to 100 m/s)");
+  if (const std::optional<double> v = cor_law_leaves_range(b))
+    reject(where, "cor_slope", b.cor_slope,
+           "gives a COR of " + detail::format_number(b.cor_at(*v)) + " at " + detail::format_number(*v) +
+               " m/s: not a physical ball (expected " + range_text(ball_cor_range) + " from 0 to 100 m/s)");
 }
 
 // k1 of a ball of exponent a whose impact at v on a surface of curvature factor c peaks at F.
@@ -225,15 +224,18 @@ BallFit fit_ball(const BallTests& t, const std::string& where) {
   return fit;
 }
 
-std::optional<std::string> cor_law_misfit(const Ball& ball) {
-  if (!ball.speed_dependent()) return std::nullopt;
+std::optional<double> cor_law_leaves_range(const Ball& ball) {
   for (const double v : {0.0, max_cor_law_speed})
-    if (!in_range(ball_cor_range, ball.cor_at(v)))
-      return "with cor_slope = " + detail::format_number(ball.cor_slope) + " per m/s about " +
-             detail::format_number(ball.cor_speed) + " m/s gives a COR of " + detail::format_number(ball.cor_at(v)) +
-             " at " + detail::format_number(v) + " m/s: not a physical ball (expected " + range_text(ball_cor_range) +
-             ")";
+    if (!in_range(ball_cor_range, ball.cor_at(v))) return v;
   return std::nullopt;
+}
+
+std::optional<std::string> cor_law_misfit(const Ball& ball) {
+  const std::optional<double> v = ball.speed_dependent() ? cor_law_leaves_range(ball) : std::nullopt;
+  if (!v) return std::nullopt;
+  return "with cor_slope = " + detail::format_number(ball.cor_slope) + " per m/s about " +
+         detail::format_number(ball.cor_speed) + " m/s gives a COR of " + detail::format_number(ball.cor_at(*v)) +
+         " at " + detail::format_number(*v) + " m/s: not a physical ball (expected " + range_text(ball_cor_range) + ")";
 }
 
 }  // namespace sweetspot

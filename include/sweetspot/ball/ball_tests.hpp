@@ -77,9 +77,12 @@ struct OutOfRange {
 };
 // The first of the ball's values (mass, radius, k1, a, e0) outside its range, or nothing.
 std::optional<OutOfRange> ball_out_of_range(const Ball& ball);
-// Where a speed-dependent COR law leaves ball_cor_range between 0 and max_cor_law_speed: "with
-// cor_slope = ... per m/s about ... m/s gives a COR of ... at ... m/s: not a physical ball
-// (expected ...)", to follow the key that set the law (e0 where one was given). Nothing otherwise.
+// The speed (0 or max_cor_law_speed) at which the ball's COR law leaves ball_cor_range, or
+// nothing: a line in COR against speed stays in range between its ends when both are.
+std::optional<double> cor_law_leaves_range(const Ball& ball);
+// Where a speed-dependent COR law leaves ball_cor_range: "with cor_slope = ... per m/s about ...
+// m/s gives a COR of ... at ... m/s: not a physical ball (expected ...)", to follow the key that
+// set the law (e0 where one was given). Nothing otherwise.
 std::optional<std::string> cor_law_misfit(const Ball& ball);
 
 struct BallFit {
