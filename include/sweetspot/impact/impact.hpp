@@ -156,8 +156,8 @@ ImpactResult collision_result(const Collision& c);
 // that auto solves at this tolerance, or at the scene's where tighter: on the basis solved that
 // far (ModalBasis::widened) where the scene's looser tolerance solved less. The one-pulse estimate
 // counted once per contact bounds such an impact on that basis (its error under 1e-7 over the
-// design-space study), but not on a narrower one: solved as for 1e-4, it erred up to 2.6x it
-// (9e-4) and moved collision times up to 3.2x (scripts/mode_tolerance_honesty).
+// design-space study at 1e-5 to 1e-4: scripts/mode_tolerance_honesty), but not on a narrower one:
+// solved as for 1e-4 it erred up to 2.6x it (9e-4) and moved collision times up to 3.2x.
 inline constexpr double caught_again_mode_tolerance = 1e-5;
 
 // Validates the scene (InputError for bad input), then runs the collision.
