@@ -139,10 +139,10 @@ TEST_CASE("A bad preset is refused naming the key and the value", "[defaults][in
   require_refused(run, {"preset"});
 }
 
-TEST_CASE("The default is exact to 2e-5 where N2000's 18 modes err by up to 1.3 %", "[defaults]") {
+TEST_CASE("The default is exact to 2e-4 where N2000's 18 modes err by up to 1.3 %", "[defaults]") {
   // High-impact scenes over 50-80 cm at 34-46 m/s against all 168 modes stepped at 2.5 us (its
   // own error below 1e-9, test_integrators). The default's error is the dropped modes' (the
-  // tolerance 1e-5, whose estimate can be low by about 2x) plus the 10-us step's (2e-8).
+  // tolerance 1e-4, whose estimate can be low by about 2x) plus the 10-us step's (2e-8).
   double worst_default = 0, worst_n2000 = 0;
   for (double z = 0.505; z < 0.80; z += 0.03)
     for (double speed : {34.0, 46.0}) {
@@ -158,6 +158,6 @@ TEST_CASE("The default is exact to 2e-5 where N2000's 18 modes err by up to 1.3 
       worst_n2000 = std::max(worst_n2000, std::abs(n2000.vf / exact - 1));
     }
   INFO("worst relative vf error: default " << worst_default << ", N2000's settings " << worst_n2000);
-  CHECK(worst_default < 2e-5);
+  CHECK(worst_default < 2e-4);
   CHECK(worst_n2000 > 4e-3);
 }

@@ -99,7 +99,7 @@ TEST_CASE("In the rig auto chooses among the held bat's modes and stays near its
   // Held at the rig's pivot, the ball excites the held bat's modes: auto chooses among those.
   // At the rig's 136 mph and at 1 m/s (a long contact), against every mode, for a solid and a
   // hollow bat: within 5 times the estimate (the honesty asked of every error estimate) and BBCOR
-  // within 3e-5.
+  // within 1e-4, the default tolerance (on a BBCOR near 0.5, the exit speed's relative error).
   const Ball ncaa = preset_ball(find_ball_preset("ncaa", "test")).ball;
   for (const char* file : {"studies/bats/r161.toml", "studies/bats/alloy_bbcor.toml"}) {
     const ModalBasis basis = compute_modes(load_bat(source_path(file)), BeamTheory::timoshenko);
@@ -114,7 +114,7 @@ TEST_CASE("In the rig auto chooses among the held bat's modes and stays near its
                   << a.chosen.modes_error);
         // A ball met again keeps every mode (estimate 0 on a complete basis): round-off is left.
         CHECK(a.error <= std::max(5 * a.chosen.modes_error, 1e-7));
-        CHECK(std::abs(a.chosen.rig.bbcor - a.every.rig.bbcor) <= 3e-5);
+        CHECK(std::abs(a.chosen.rig.bbcor - a.every.rig.bbcor) <= 1e-4);
       }
   }
 }
@@ -236,9 +236,9 @@ TEST_CASE("A ball caught again at a looser tolerance runs on the basis of caught
         tight.ball_speed = speed;
         tight.ball.e0 = 0.4;
         tight.integrator.method = Method::exact;
+        tight.mode_tolerance = caught_again_mode_tolerance;
         ImpactScene loose = tight;
         loose.mode_tolerance = 1e-4;
-        REQUIRE(tight.mode_tolerance == caught_again_mode_tolerance);
         const ModalBasis narrow = compute_modes(bat, BeamTheory::timoshenko, auto_mode_request(loose, rigid));
         const ModalBasis wide = compute_modes(bat, BeamTheory::timoshenko, auto_mode_request(tight, rigid));
         const ImpactResult a = simulate_impact(narrow, loose), b = simulate_impact(wide, tight);

@@ -159,8 +159,10 @@ TEST_CASE("Over the stated range exact stepping meets accuracy = A (README, Nume
 
 TEST_CASE("A fast impact near the handle is checked, not only modelled", "[step_selection]") {
   // R161 at 25.5 cm, 80 m/s, modes auto: the ringing bat roughens the force beyond the step
-  // model's constant, and the model's step alone erred 3.8x the 1e-5 asked.
+  // model's constant, and the model's step alone erred 3.8x the 1e-5 asked (with the modes auto
+  // keeps at mode_tolerance 1e-5; at the default 1e-4 it drops the ringing modes that rough it).
   ImpactScene s = high_impact(0.255, auto_modes, 80);
+  s.mode_tolerance = 1e-5;
   s.ball.e0 = 0.5;
   s.integrator.method = Method::exact;
   const double exact = reference(s);

@@ -127,7 +127,7 @@ struct ImpactScene {
   Swing swing;
   bool pivoted = false;       // held at swing.center by a constraint force (N2000 Fig. 16)
   int vibrational_modes = auto_modes; // kept vibrational modes, or all_modes, or auto_modes (the default)
-  double mode_tolerance = 1e-5; // auto_modes: relative exit-speed error allowed the dropped modes
+  double mode_tolerance = 1e-4; // auto_modes: relative exit-speed error allowed the dropped modes
   // Relative exit-speed error the integration may add; > 0 chooses the step (or tolerance) from
   // the scene's pulse (step_selection.hpp) instead of integrator.dt. 0: integrator as given.
   double step_accuracy = 0;
