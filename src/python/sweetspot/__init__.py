@@ -438,7 +438,8 @@ def impact(bat, z, ball_speed, *, cm_speed=None, center=None, omega=0.0, ball=No
     `ball` names the ball (a preset's name or a TOML file with a [ball] table; default N2000's), and
     e0, ball_mass, ball_radius, k1 and a override its values.
     None means the program's default: e0 0.5, exact stepping at 10 us, modes "auto" (a count, "all"
-    or "auto"); n2000=True takes RK4 at 5 us with 18 modes unless integrator, dt or modes are given.
+    or "auto") at mode_tolerance 1e-4; n2000=True takes RK4 at 5 us with 18 modes unless integrator, dt or
+    modes are given.
     The bat's modes are solved once per needed set and kept on the bat.
 
     Returns: a Result, the dict above with `attrs` (the resolved scene as scene_*, the bat, the
