@@ -1,7 +1,7 @@
 // What users run (issue 26): the cost of an impact over a study's unique points, every one a scene
 // never met before (a study of 21 impact points x 100 ball speeds), and over repeated scenes (the
 // same 31 points run again and again, as the other benchmarks do), each at
-//   default: the library's defaults (exact stepping at 10 us, modes = auto, tolerance 1e-5),
+//   default: the library's defaults (exact stepping at 10 us, modes = auto, tolerance 1e-4),
 //   all modes: every one of the bat's modes kept,
 //   rigid: no vibrational mode (the two rigid ones alone),
 // on R161 (or the bat file given) in N2000's high-impact swing (51 rad/s about 9 cm from the
