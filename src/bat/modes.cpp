@@ -119,8 +119,8 @@ int practical_mode_count(int dofs) {
 
 std::optional<std::string> impractical_solve(int slices, BeamTheory theory, ModeRequest request) {
   const int dofs = degrees_of_freedom(slices, theory);
-  if (request.is_rigid_only() || (request.vibrational == -2 && request.below_omega < 1e300)) return std::nullopt;
-  const bool every = request.is_all() || request.vibrational == -2 || request.vibrational + 2 >= dofs;
+  if (request.is_rigid_only() || (request.is_below() && request.below_omega < 1e300)) return std::nullopt;
+  const bool every = request.is_all() || request.is_below() || request.vibrational + 2 >= dofs;
   if (every && dofs > 2 * max_full_solve_slices)
     return "every mode (the full eigen-solve) is practical up to " + std::to_string(max_full_solve_slices) +
            " slices (its time grows as the cube of the slices: about 7 s at 1024, some 8 min at 4096); " +
@@ -150,7 +150,7 @@ struct BasisWidening {
 };
 
 const ModalBasis& ModalBasis::widened(const ModeRequest& request) const {
-  if (!widening || complete() || request.vibrational != -2 || !(request.below_omega > solved_below)) return *this;
+  if (!widening || complete() || !request.is_below() || !(request.below_omega > solved_below)) return *this;
   const std::lock_guard lock(widening->mutex);
   std::unique_ptr<const ModalBasis>& slot = widening->solved[request.below_omega];
   if (!slot) {
@@ -173,7 +173,7 @@ ModalBasis compute_modes(const Bat& bat, BeamTheory theory, ModeRequest request)
     throw InputError("slices = " + std::to_string(bat.slices()) + ": " + *why);
   const BeamSystem s = timoshenko ? timoshenko_system(bat) : euler_bernoulli_system(bat);
   const int dofs = static_cast<int>(s.mass.rows());
-  if (request.vibrational + 2 >= dofs || (request.vibrational == -2 && !(request.below_omega < 1e300)))
+  if (request.vibrational + 2 >= dofs || (request.is_below() && !(request.below_omega < 1e300)))
     request = ModeRequest::all();
   bool partial = !request.is_all() && !request.is_rigid_only();
   ModalBasis basis;
@@ -196,7 +196,7 @@ ModalBasis compute_modes(const Bat& bat, BeamTheory theory, ModeRequest request)
   basis.vectors = std::move(x);
   if (partial && !basis.complete()) {
     basis.solved_below = request.vibrational > 0 ? basis.omega(basis.count() - 1) : request.below_omega;
-    if (request.vibrational == -2) basis.widening = std::make_shared<BasisWidening>(bat);
+    if (request.is_below()) basis.widening = std::make_shared<BasisWidening>(bat);
   }
   if (!request.is_rigid_only())
     basis.flexibility = std::make_shared<const VibrationalFlexibility>(s, mass, basis.vectors.leftCols(2));

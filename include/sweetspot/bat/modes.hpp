@@ -110,6 +110,7 @@ struct ModeRequest {
   static ModeRequest below(double omega) { return {-2, omega}; }
   bool is_all() const { return vibrational == -1; }
   bool is_rigid_only() const { return vibrational == 0; }
+  bool is_below() const { return vibrational == -2; }
 };
 
 // What an eigen-solve may cost. The full (dense) solve's time grows as the cube of the slices
