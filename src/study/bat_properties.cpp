@@ -88,13 +88,13 @@ std::vector<std::string> design_dims(const Study& study) {
   return dims;
 }
 
-DesignModes design_modes(const Study& study, int modes) {
+DesignModes design_modes(const Study& study, int modes, int share, int shares) {
   DesignModes out;
   const auto designs = static_cast<long>(study.designs.size());
   out.frequencies_hz.resize(study.designs.size());
   out.nodes.resize(study.designs.size());
 #pragma omp parallel for schedule(dynamic)
-  for (long b = 0; b < designs; ++b) {
+  for (long b = share; b < designs; b += shares) {
     const Bat& bat = study.designs[b];
     // The lowest modes alone (a partial solve), enough for the nodes of the first three.
     const ModalBasis basis = compute_modes(study.slices > 0 ? resample(bat, study.slices) : bat, study.theory,
@@ -105,6 +105,35 @@ DesignModes design_modes(const Study& study, int modes) {
     for (int k = 1; k <= node_modes && k + 1 < basis.count(); ++k) out.nodes[b].push_back(basis.nodes(k + 1));
   }
   return out;
+}
+
+std::vector<double> pack_design_modes(const DesignModes& modes, int share, int shares) {
+  std::vector<double> packed;
+  const auto add = [&packed](const std::vector<double>& values) {
+    packed.push_back(static_cast<double>(values.size()));
+    packed.insert(packed.end(), values.begin(), values.end());
+  };
+  for (std::size_t b = share; b < modes.frequencies_hz.size(); b += shares) {
+    add(modes.frequencies_hz[b]);
+    packed.push_back(static_cast<double>(modes.nodes[b].size()));
+    for (const std::vector<double>& nodes : modes.nodes[b]) add(nodes);
+  }
+  return packed;
+}
+
+void unpack_design_modes(const std::vector<double>& packed, int share, int shares, DesignModes& into) {
+  auto next = packed.begin();
+  const auto take = [&next]() {
+    const auto count = static_cast<std::ptrdiff_t>(*next++);
+    std::vector<double> values(next, next + count);
+    next += count;
+    return values;
+  };
+  for (std::size_t b = share; b < into.frequencies_hz.size() && next != packed.end(); b += shares) {
+    into.frequencies_hz[b] = take();
+    into.nodes[b].resize(static_cast<std::size_t>(*next++));
+    for (std::vector<double>& nodes : into.nodes[b]) nodes = take();
+  }
 }
 
 void add_design_variables(const Study& study, const DesignModes& modes, int mode_count, Dataset& d) {

@@ -19,8 +19,14 @@ struct DesignModes {
 };
 
 // Solves each design's modes (as the study's base slices and theory cut it), spread over the
-// OpenMP threads.
-DesignModes design_modes(const Study& study, int modes);
+// OpenMP threads: every design, or those of one share of `shares` (the designs whose index is
+// `share` modulo `shares`: a study's ranks solve one share each), the others left empty.
+DesignModes design_modes(const Study& study, int modes, int share = 0, int shares = 1);
+// One share's designs as numbers, for a message between ranks (per design: the frequencies' count
+// and values, then the node lists' count and each list's count and values), and back into `into`,
+// whose other designs are kept.
+std::vector<double> pack_design_modes(const DesignModes& modes, int share, int shares);
+void unpack_design_modes(const std::vector<double>& packed, int share, int shares, DesignModes& into);
 
 // The dimensions the designer's variables run over, as the dataset names them: "bat" if the study
 // has a bat axis, then each bat-parameter axis ("bat_barrel_diameter", ...). No bat axis, no
