@@ -329,8 +329,9 @@ class CollisionRun {
   bool turns_past(double& h, const ContactForce& law, double u0, double du0, VectorXd& next, double level,
                   bool rising) {
     const double sign = rising ? 1.0 : -1.0;
-    const std::optional<double> turn = detail::hermite_peak(sign * u0, sign * (h * du0), sign * state_.compression(next),
-                                                            sign * (h * state_.compression_rate(next)), sign * level);
+    const double u1 = state_.compression(next), du1 = state_.compression_rate(next);
+    const std::optional<double> turn =
+        detail::hermite_peak(sign * u0, sign * (h * du0), sign * u1, sign * (h * du1), sign * level);
     if (!turn) return false;
     VectorXd turned(y_.size());
     stepper_.step(y_, *turn * h, law, turned);
