@@ -335,7 +335,10 @@ class CollisionRun {
     if (!turn) return false;
     VectorXd turned(y_.size());
     stepper_.step(y_, *turn * h, law, turned);
-    if (!(sign * state_.compression(turned) > sign * level)) return false;  // the cubic overshot
+    if (!(sign * state_.compression(turned) > sign * level)) {  // the cubic overshot: as if not tried
+      stepper_.forget_step();
+      return false;
+    }
     h *= *turn;
     next.swap(turned);
     return true;

@@ -110,6 +110,9 @@ class ExactStepper {
   // made as a cubic quarter step and quintic quarter and half steps: its error then falls below
   // the quintic steps' own. After a step halved for stiffness, steps grow back by doubling.
   void step(const Eigen::VectorXd& y, double h, const ContactForce& law, Eigen::VectorXd& out);
+  // Forgets the last step made, a trial whose state is not taken: the next step weights the past
+  // of the one before it, as if the trial had not been made.
+  void forget_step() { past_ = past_at_step_start_; }
   // A step of a new length costs a new response, so an event is found as the root of the cubic
   // Hermite interpolant of its value over the step (error O(h^4) in time, and the force is
   // stationary there: F' = 0 at maximum compression, F = 0 at separation), then one step to it.

@@ -39,6 +39,7 @@ class Rk4Stepper {
     return locate_by_restepping(*this, state_, y, h, law, event, out);
   }
 
+  void forget_step() {}  // a step leaves nothing for the next
   void step(const Eigen::VectorXd& y, double h, const ContactForce& law, Eigen::VectorXd& out) {
     state_.derivative(y, law, k1_);
     tmp_ = y + (h / 2) * k1_;
