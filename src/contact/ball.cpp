@@ -18,6 +18,10 @@ double ContactForce::stiffness(double u) const {
   return exponent() * (*this)(u) / u;
 }
 
+double ContactForce::compression_at(double force) const {
+  return expanding_ ? u_max_ * std::pow(force / f_max_, 1 / b_) : std::pow(force / ball_.k1, 1 / ball_.a);
+}
+
 void ContactForce::start_expansion(double u_max) {
   last_u_ = -1;  // the branch changes
   u_max_ = u_max;

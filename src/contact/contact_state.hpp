@@ -64,8 +64,14 @@ class ContactState {
     remember_ball_compression(u, law, solve_ball_compression(u, law));
     return last_ball_u_;
   }
+  // g(x) = x + c F(x) - u is convex and rising: Newton from above the root falls to it without
+  // overshooting. From x = u it falls by about x / e a step where c F(u) far exceeds u on a steep
+  // branch (F ~ u^e, e up to ~800 for a nearly dead ball): 100 steps left it 27 % off. The
+  // compression whose force alone takes up u, F(x) = u / c, is an upper bound as close to the
+  // root as e is large; it is taken where it lies below u.
   double solve_ball_compression(double u, const ContactForce& law) const {
     double lo = 0, hi = u, x = u;
+    if (compliance_ * law(u) > u) hi = x = law.compression_at(u / compliance_);
     for (int iteration = 0; iteration < 100; ++iteration) {
       const double f = law(x), g = x + compliance_ * f - u, slope = 1 + compliance_ * law.exponent() * f / x;
       (g > 0 ? hi : lo) = x;

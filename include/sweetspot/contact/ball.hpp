@@ -78,6 +78,8 @@ class ContactForce {
   // dF/du at u, for the time derivative of the force profile. At first touch (u = 0) its limit
   // from above: k1 for a linear ball (a = 1), whose force rises at once; 0 for a > 1.
   double stiffness(double u) const;
+  // The compression at which the branch in force gives `force` (> 0): its inverse.
+  double compression_at(double force) const;
   // Takes `force` as the force at u, to be answered without a pow: for a caller that has it from
   // a neighbouring evaluation (to round-off).
   void remember(double u, double force) const { last_u_ = u, last_force_ = force; }
