@@ -277,12 +277,10 @@ class CollisionRun {
         // A graze that never compressed the ball is over (and F_m = k1 u_m^a needs u_m > 0).
         if (u_max > 0) law.start_expansion(u_max);
         else separated = true;
-      } else if (law.expanding() && state_.compression(next) <= 0) {
+      } else if (law.expanding() &&
+                 (state_.compression(next) <= 0 || parts_within(h, law, u_start, du_start, next))) {
         h = stepper_.locate(y_, h, law, detail::ContactEvent::separation, next);
-        separated = true;
-      } else if (law.expanding() && parts_within(h, law, u_start, du_start, next)) {
-        h = stepper_.locate(y_, h, law, detail::ContactEvent::separation, next);
-        separated = true;
+        separated = state_.compression(next) <= 0;  // else the root was early: the contact goes on
       } else if (law.expanding() && reloads(h, law, u_start, du_start, next)) {
         h = stepper_.locate(y_, h, law, detail::ContactEvent::reloading, next);
         law.resume_compression();

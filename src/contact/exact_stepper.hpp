@@ -116,6 +116,7 @@ class ExactStepper {
   // A step of a new length costs a new response, so an event is found as the root of the cubic
   // Hermite interpolant of its value over the step (error O(h^4) in time, and the force is
   // stationary there: F' = 0 at maximum compression, F = 0 at separation), then one step to it.
+  // Returns the time to the event; where the ball proves to touch still, to the state.
   double locate(const Eigen::VectorXd& y, double h, const ContactForce& law, ContactEvent event,
                 Eigen::VectorXd& out);
 
