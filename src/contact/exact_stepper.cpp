@@ -584,7 +584,7 @@ void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, 
 
   // The start: the ball's compression, its rate and acceleration, the force and its rate.
   const double u0 = state_.ball_compression(state_.compression(y), law), du0_geometric = state_.compression_rate(y);
-  const double f0 = law(u0), k0 = u0 == 0 ? touch_stiffness(law, du0_geometric * m.h) : law.stiffness(u0);
+  const double f0 = law(u0), k0 = u0 <= 0 ? touch_stiffness(law, du0_geometric * m.h) : law.stiffness(u0);
   const double du0 = du0_geometric / (1 + state_.compliance() * k0), r0 = k0 * du0;
   const bool quintic = m.past_ratio > 0;
   const double fp = quintic ? past_.force : 0.0, rp = quintic ? past_.rate : 0.0;

@@ -95,7 +95,7 @@ void close_balance(ImpactResult& r) {
   const double off = loss_known ? std::abs(e.residual)
                                 : e.ball + e.bat_translation + e.bat_rotation + e.vibration + e.ball_dissipated +
                                       e.barrel + e.ball_spin + e.bat_tangential + e.friction - e.initial;
-  if (loss_known ? off <= balance_limit * e.initial : !(off > balance_limit * e.initial)) return;
+  if (off <= balance_limit * e.initial) return;  // NaN (a term that is not finite) is not balanced
   char text[200];
   std::snprintf(text, sizeof text,
                 "the energy balance is off by %.2g of the initial energy: the step is too coarse for this pulse "
