@@ -230,6 +230,36 @@ TEST_CASE("A later contact that begins a rounding error short of touching starts
   }
 }
 
+TEST_CASE("Where the default step errs on a linear ball's long chattering contact, its estimate says so",
+          "[impact]") {
+  // maple_271 struck at 20 cm by a linear ball (e0 0.267) at 27.8 m/s, swung at 51 rad/s with the
+  // CM at 30 m/s, 4 modes (the rest a large residual compliance): the third contact lasts 1 ms,
+  // unloading nearly to nothing and reloading again and again. At 10 us v_f is 6 % off, and the
+  // energy balance cannot tell (the bat holds most of the energy). Step doubling flags it, and a
+  // stated step accuracy meets it.
+  const ModalBasis modes = compute_modes(load_bat(source_path("studies/bats/maple_271.toml")), BeamTheory::timoshenko);
+  ImpactScene s;
+  s.z = 0.2;
+  s.ball.a = 1;
+  s.ball.e0 = 0.26722398999081676;
+  s.ball_speed = 27.822751768794479;
+  s.swing = {51, false, 30, 0};
+  s.vibrational_modes = 4;
+  ImpactScene reference = s;
+  reference.integrator.method = Method::dopri;
+  reference.integrator.tolerance = 1e-12;
+  const double expected = simulate_impact(modes, reference).vf;
+  s.error_estimates = true;
+  const ImpactResult coarse = simulate_impact(modes, s);
+  const double error = std::abs(coarse.vf / expected - 1);
+  INFO("v_f " << coarse.vf << " against " << expected << ", step_error " << coarse.step_error);
+  CHECK((error < 1e-3 || coarse.step_error > 1e-3));  // accurate, or said not to be (6e-2 off, estimated 4e-3)
+  s.step_accuracy = 1e-4;
+  const ImpactResult met = simulate_impact(modes, s);
+  CHECK(met.status == CollisionStatus::ok);
+  CHECK(std::abs(met.vf / expected - 1) < 1e-4);
+}
+
 TEST_CASE("A nearly dead ball's own compression is found on its steep expansion branch", "[impact]") {
   // A linear ball with e0 = 0.05 expands as F ~ u^799. Where the basis drops modes their static
   // yield c F takes up part of the geometric compression u: u_ball + c F(u_ball) = u. Newton from
