@@ -256,10 +256,7 @@ class CollisionRun {
         return fail(CollisionStatus::failed, "more than 1e7 steps (max_contact_steps) in contact " +
                                                  std::to_string(result_.contacts) +
                                                  ": the step or the tolerance is too fine");
-      if (t_ - touch > options_.max_contact_time)
-        return fail(CollisionStatus::no_separation,
-                    format("the ball did not separate within %g s of touching (contact %g)", options_.max_contact_time,
-                           result_.contacts));
+      if (t_ - touch > options_.max_contact_time) return overran();
       // The step's start: the last step's end, whose u and u' its stepper left known (no pass).
       const double u_start = state_.compression(y_), du_start = state_.compression_rate(y_);
       const detail::StepOutcome outcome = stepper_.attempt(y_, h, law, next);
@@ -291,12 +288,20 @@ class CollisionRun {
       if (separated) break;
       h = outcome.next_h;
     }
+    // An adaptive step may pass the limit and find the separation inside it: as long a contact.
+    if (t_ - touch > options_.max_contact_time) return overran();
     result_.contact_time += t_ - touch;
     result_.u_max = std::max(result_.u_max, law.u_max());
     result_.peak_force = std::max(result_.peak_force, law.f_max());
     result_.impulse += ball_.mass * (y_(1) - v_start);
     result_.dissipated += law.loop_energy();
     return true;
+  }
+
+  // A contact longer than max_contact_time is reported as one that did not separate.
+  bool overran() {
+    return fail(CollisionStatus::no_separation, format("the ball did not separate within %g s of touching (contact %g)",
+                                                       options_.max_contact_time, result_.contacts));
   }
 
   // Whether the expanding ball is pressed past its maximum compression again within the step from
