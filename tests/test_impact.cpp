@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numeric>
+#include <string>
 #include <vector>
 
 #include "n2000_scenes.hpp"
@@ -50,6 +51,34 @@ std::vector<double> slice_centres(double from, double to) {
 
 double argmax(const std::vector<double>& z, const std::vector<double>& v) {
   return z[std::max_element(v.begin(), v.end()) - v.begin()];
+}
+
+// A shipped bat's Timoshenko modes, by its file's name in studies/bats.
+ModalBasis shipped_modes(const std::string& name) {
+  return compute_modes(load_bat(source_path("studies/bats/" + name + ".toml")), BeamTheory::timoshenko);
+}
+
+// The scene by Dormand-Prince at a tight tolerance: the reference of the fixed-step tests below.
+ImpactResult dopri_reference(const ModalBasis& modes, ImpactScene scene, double tolerance = 1e-12) {
+  scene.integrator.method = Method::dopri;
+  scene.integrator.tolerance = tolerance;
+  const ImpactResult r = simulate_impact(modes, scene);
+  REQUIRE(r.status == CollisionStatus::ok);
+  return r;
+}
+
+// Exact stepping at each step: ok, as many contacts as the reference, v_f within `tolerance` of it.
+void check_steps(const ModalBasis& modes, ImpactScene scene, std::initializer_list<double> steps,
+                 const ImpactResult& reference, double tolerance) {
+  scene.integrator.method = Method::exact;
+  for (const double dt : steps) {
+    scene.integrator.dt = dt;
+    const ImpactResult r = simulate_impact(modes, scene);
+    INFO("dt " << dt << ": vf " << r.vf << " against " << reference.vf);
+    CHECK(r.status == CollisionStatus::ok);
+    CHECK(r.contacts == reference.contacts);
+    CHECK(std::abs(r.vf / reference.vf - 1) < tolerance);
+  }
 }
 
 }  // namespace
@@ -161,46 +190,23 @@ TEST_CASE("A ball that leaves the bat and is struck again within one step is fou
   s.ball.e0 = 0.4;
   s.swing = equal_effort_swing({51, true, 0, 0.09}, r161_moi, mass_properties(torpedo).moment_of_inertia_about(0),
                                default_swing_exponent);
-  s.integrator.method = Method::dopri;
-  s.integrator.dt = 1e-7;
-  s.integrator.tolerance = 1e-12;
-  const ImpactResult reference = simulate_impact(modes, s);
-  REQUIRE(reference.status == CollisionStatus::ok);
+  const ImpactResult reference = dopri_reference(modes, s);
   CHECK(reference.contacts == 2);
-  s.integrator.method = Method::exact;
-  for (const double dt : {10e-6, 20e-6, 28.3e-6}) {
-    s.integrator.dt = dt;
-    const ImpactResult r = simulate_impact(modes, s);
-    INFO("dt " << dt << ": vf " << r.vf << " against " << reference.vf);
-    CHECK(r.status == CollisionStatus::ok);
-    CHECK(r.contacts == reference.contacts);
-    CHECK(std::abs(r.vf / reference.vf - 1) < 1e-5);
-  }
+  check_steps(modes, s, {10e-6, 20e-6, 28.3e-6}, reference, 1e-5);
 }
 
 TEST_CASE("A separation the step's cubic puts early leaves the ball in contact, not starting another", "[impact]") {
   // The torpedo at 8.5 cm, 30 m/s, a linear ball with e0 = 0.8, swung about the knob. At 20 us
   // the cubic through the step's ends put the ball's last separation early: the state there still
   // pressed it 7.6e-6 m, and free flight began a fourth contact at once. The contact goes on.
-  const ModalBasis modes = compute_modes(load_bat(source_path("studies/bats/torpedo.toml")), BeamTheory::timoshenko);
+  const ModalBasis modes = shipped_modes("torpedo");
   ImpactScene s;
   s.z = 0.085;
   s.ball_speed = 30;
   s.ball.a = 1;
   s.ball.e0 = 0.8;
   s.swing = {51, true, 0, 0.09};
-  s.integrator.method = Method::dopri;
-  s.integrator.tolerance = 1e-12;
-  const ImpactResult reference = simulate_impact(modes, s);
-  REQUIRE(reference.status == CollisionStatus::ok);
-  s.integrator.method = Method::exact;
-  for (const double dt : {10e-6, 20e-6}) {
-    s.integrator.dt = dt;
-    const ImpactResult r = simulate_impact(modes, s);
-    INFO("dt " << dt << ": vf " << r.vf << " against " << reference.vf);
-    CHECK(r.contacts == reference.contacts);
-    CHECK(std::abs(r.vf / reference.vf - 1) < 5e-4);
-  }
+  check_steps(modes, s, {10e-6, 20e-6}, dopri_reference(modes, s), 5e-4);
 }
 
 TEST_CASE("A later contact that begins a rounding error short of touching starts with the ball's touch slope",
@@ -209,7 +215,7 @@ TEST_CASE("A later contact that begins a rounding error short of touching starts
   // contacts. The search for a later touch can leave the state a rounding error short of it
   // (u <= 0); the step then gave the linear ball no force slope at touch, and v_f jumped by 4 %
   // between dt = 1e-5 and the doubles next to it. Results are now continuous in the step.
-  const ModalBasis modes = compute_modes(load_bat(source_path("studies/bats/maple_271.toml")), BeamTheory::timoshenko);
+  const ModalBasis modes = shipped_modes("maple_271");
   ImpactScene s;
   s.z = 0.15;
   s.ball.a = 1;
@@ -217,17 +223,9 @@ TEST_CASE("A later contact that begins a rounding error short of touching starts
   s.ball_speed = 31.672390992338283;
   s.swing = {0, false, 0, 0};
   s.vibrational_modes = 8;
-  s.integrator.method = Method::exact;
   s.integrator.dt = 1e-6;
   const ImpactResult fine = simulate_impact(modes, s);
-  for (const double dt : {std::nextafter(1e-5, 0.0), 1e-5, std::nextafter(1e-5, 1.0)}) {
-    s.integrator.dt = dt;
-    const ImpactResult r = simulate_impact(modes, s);
-    INFO("dt " << dt << ": vf " << r.vf << " against " << fine.vf << " at 1 us");
-    CHECK(r.status == CollisionStatus::ok);
-    CHECK(r.contacts == fine.contacts);
-    CHECK(std::abs(r.vf / fine.vf - 1) < 2e-3);
-  }
+  check_steps(modes, s, {std::nextafter(1e-5, 0.0), 1e-5, std::nextafter(1e-5, 1.0)}, fine, 2e-3);
 }
 
 TEST_CASE("Where the default step errs on a linear ball's long chattering contact, its estimate says so",
@@ -237,7 +235,7 @@ TEST_CASE("Where the default step errs on a linear ball's long chattering contac
   // unloading nearly to nothing and reloading again and again. At 10 us v_f is 6 % off, and the
   // energy balance cannot tell (the bat holds most of the energy). Step doubling flags it, and a
   // stated step accuracy meets it.
-  const ModalBasis modes = compute_modes(load_bat(source_path("studies/bats/maple_271.toml")), BeamTheory::timoshenko);
+  const ModalBasis modes = shipped_modes("maple_271");
   ImpactScene s;
   s.z = 0.2;
   s.ball.a = 1;
@@ -245,10 +243,7 @@ TEST_CASE("Where the default step errs on a linear ball's long chattering contac
   s.ball_speed = 27.822751768794479;
   s.swing = {51, false, 30, 0};
   s.vibrational_modes = 4;
-  ImpactScene reference = s;
-  reference.integrator.method = Method::dopri;
-  reference.integrator.tolerance = 1e-12;
-  const double expected = simulate_impact(modes, reference).vf;
+  const double expected = dopri_reference(modes, s).vf;
   s.error_estimates = true;
   const ImpactResult coarse = simulate_impact(modes, s);
   const double error = std::abs(coarse.vf / expected - 1);
@@ -265,7 +260,7 @@ TEST_CASE("A contact longer than max_contact_time does not separate, by every me
   // 0.69 m/s: the contact lasts 0.06 s, past the 0.05 s limit. Dormand-Prince's adaptive steps
   // passed the limit and found the separation inside a step: it was `ok` where exact stepping
   // said `no_separation`.
-  const ModalBasis modes = compute_modes(load_bat(source_path("studies/bats/alloy_bbcor.toml")), BeamTheory::timoshenko);
+  const ModalBasis modes = shipped_modes("alloy_bbcor");
   ImpactScene s;
   s.z = 0.55;
   s.ball.a = 3;
@@ -287,8 +282,7 @@ TEST_CASE("A nearly dead ball's own compression is found on its steep expansion 
   // u fell about u / 799 a step and stopped 27 % off after 100, with F 1e88 times too large: the
   // alloy bat on the BBCOR rig returned the ball at 6.5e93 m/s. Exact stepping at 10 and 1 us
   // now agrees with Dormand-Prince, free and on the rig, and the balance closes.
-  const Bat alloy = load_bat(source_path("studies/bats/alloy_bbcor.toml"));
-  const ModalBasis modes = compute_modes(alloy, BeamTheory::timoshenko);
+  const ModalBasis modes = shipped_modes("alloy_bbcor");
   const RigSettings rig = certification_rig(standards()[0], CertifyOptions{}, modes.length());
   for (const bool on_rig : {false, true}) {
     ImpactScene s = on_rig ? rig_scene(rig, 0.4191) : ImpactScene{};
@@ -298,11 +292,7 @@ TEST_CASE("A nearly dead ball's own compression is found on its steep expansion 
     s.ball.e0 = 0.05;
     s.ball.cor_slope = 0;
     s.integrator.damping_loss = true;
-    ImpactScene reference = s;
-    reference.integrator.method = Method::dopri;
-    reference.integrator.tolerance = 1e-11;
-    const ImpactResult expected = simulate_impact(modes, reference);
-    REQUIRE(expected.status == CollisionStatus::ok);
+    const ImpactResult expected = dopri_reference(modes, s, 1e-11);
     for (const double dt : {10e-6, 1e-6}) {
       s.integrator.dt = dt;
       const ImpactResult r = simulate_impact(modes, s);
