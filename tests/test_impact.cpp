@@ -232,9 +232,9 @@ TEST_CASE("Where the default step errs on a linear ball's long chattering contac
           "[impact]") {
   // maple_271 struck at 20 cm by a linear ball (e0 0.267) at 27.8 m/s, swung at 51 rad/s with the
   // CM at 30 m/s, 4 modes (the rest a large residual compliance): the third contact lasts 1 ms,
-  // unloading nearly to nothing and reloading again and again. At 10 us v_f is 6 % off, and the
-  // energy balance cannot tell (the bat holds most of the energy). Step doubling flags it, and a
-  // stated step accuracy meets it.
+  // unloading nearly to nothing and reloading again and again. At 10 us v_f is 1.3e-3 off, and
+  // the energy balance cannot tell (the bat holds most of the energy). Step doubling bounds it
+  // (5.5e-3), and a stated step accuracy meets it.
   const ModalBasis modes = shipped_modes("maple_271");
   ImpactScene s;
   s.z = 0.2;
@@ -248,7 +248,7 @@ TEST_CASE("Where the default step errs on a linear ball's long chattering contac
   const ImpactResult coarse = simulate_impact(modes, s);
   const double error = std::abs(coarse.vf / expected - 1);
   INFO("v_f " << coarse.vf << " against " << expected << ", step_error " << coarse.step_error);
-  CHECK((error < 1e-3 || coarse.step_error > 1e-3));  // accurate, or said not to be (6e-2 off, estimated 4e-3)
+  CHECK((error < 1e-4 || coarse.step_error > error / 3));  // accurate, or said not to be
   s.step_accuracy = 1e-4;
   const ImpactResult met = simulate_impact(modes, s);
   CHECK(met.status == CollisionStatus::ok);
@@ -281,7 +281,8 @@ TEST_CASE("A nearly dead ball's own compression is found on its steep expansion 
   // yield c F takes up part of the geometric compression u: u_ball + c F(u_ball) = u. Newton from
   // u fell about u / 799 a step and stopped 27 % off after 100, with F 1e88 times too large: the
   // alloy bat on the BBCOR rig returned the ball at 6.5e93 m/s. Exact stepping at 10 and 1 us
-  // now agrees with Dormand-Prince, free and on the rig, and the balance closes.
+  // now agrees with Dormand-Prince within 1e-4 (3e-5 and 2e-5), free and on the rig, and the
+  // balance closes.
   const ModalBasis modes = shipped_modes("alloy_bbcor");
   const RigSettings rig = certification_rig(standards()[0], CertifyOptions{}, modes.length());
   for (const bool on_rig : {false, true}) {
@@ -298,9 +299,43 @@ TEST_CASE("A nearly dead ball's own compression is found on its steep expansion 
       const ImpactResult r = simulate_impact(modes, s);
       INFO((on_rig ? "rig" : "free") << ", dt " << dt << ": vf " << r.vf << " against " << expected.vf);
       CHECK(r.status == CollisionStatus::ok);
-      CHECK(std::abs(r.vf / expected.vf - 1) < (dt > 5e-6 ? 2e-3 : 1e-5));
-      CHECK(std::abs(r.energy.residual) < (dt > 5e-6 ? 1e-3 : 1e-5) * r.energy.initial);
+      CHECK(std::abs(r.vf / expected.vf - 1) < 1e-4);
+      CHECK(std::abs(r.energy.residual) < 1e-4 * r.energy.initial);
     }
+  }
+}
+
+TEST_CASE("A nearly dead ball's steep expansion branch is stepped through at the default step", "[impact]") {
+  // A linear ball at e0 0.06-0.07 expands as F ~ u^400-555: from F_m to nothing as u falls 1 %.
+  // Two things went wrong at 10 us, each with status ok. Where a step's first Newton iterate for
+  // its end force landed past u_m, each further one fell about u / 555, and after 100 the force was
+  // 1e9 times too large (the torpedo at 6 cm came back 27 % slow, aluminium on the BBCOR rig 4 %):
+  // a Newton step that does not halve the last one now gives way to bisection. And the force fell
+  // from F_m to nothing within a step, which no polynomial in time follows (the torpedo on the
+  // rig with 2 modes, 34 % slow): such a step is now redone shorter (ExactStepper::outruns).
+  struct Case {
+    std::string bat;
+    bool rig;
+    double z, e0, speed;
+    int modes;
+  };
+  const Case cases[] = {{"torpedo", false, 0.06, 0.06, 40.63, auto_modes},
+                        {"aluminium", true, 0.62705, 0.0735, 65.29, auto_modes},
+                        {"torpedo", true, 0.5, 0.0596, 109.62, 2}};
+  for (const Case& c : cases) {
+    const ModalBasis modes = shipped_modes(c.bat);
+    ImpactScene s = c.rig ? rig_scene(certification_rig(standards()[0], CertifyOptions{}, modes.length()), c.z)
+                          : ImpactScene{};
+    if (!c.rig) s.swing = {20, false, 20, 0};
+    s.z = c.z;
+    s.ball.a = 1;
+    s.ball.e0 = c.e0;
+    s.ball.cor_slope = 0;
+    s.ball_speed = c.speed;
+    s.vibrational_modes = c.modes;
+    s.integrator.damping_loss = true;
+    INFO(c.bat << " at " << c.z << " m");
+    check_steps(modes, s, {10e-6, 5e-6}, dopri_reference(modes, s), 2e-3);
   }
 }
 

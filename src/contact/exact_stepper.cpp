@@ -404,6 +404,7 @@ ExactStepper::ExactStepper(const ContactState& state, const CollisionOptions& op
       psi_w2_(psi_ * state.omega2()),
       damping_(state.body().damped() ? Eigen::ArrayXd(state.body().damping_ratio.array()) : Eigen::ArrayXd()),
       omega_key_(frequencies_key(state.body().omega.array(), damping_)), nominal_(options.dt),
+      slowest_force_ratio_(std::exp(-force_rate_limit * nominal_)),
       quarter_(state.size()), half_(state.size()) {
   kept_.reserve(16);  // a contact's usual lengths: split, nominal, halved and event steps
 }
@@ -500,6 +501,8 @@ double touch_stiffness(const ContactForce& law, double u_end) {
 // Solves for the end compression u1 with F1 = F(u1) and F1' = F'(u1) u1': Newton on
 // g(u) = u - u_known + gC F(u) + gD F1'(u), kept inside [0, u_known] where g changes sign.
 // `guess` is a prediction of u1 (advance: extrapolated from the past step, or a Taylor step).
+constexpr int newton_patience = 8;  // a baseball's steps take 1 or 2 iterations
+
 double end_compression(const StepCoefficients& k, const ContactForce& law, double u_known, double du_known,
                        double guess) {
   if (u_known <= 0) return u_known;  // no force can arise: the ball is clear all step
@@ -533,6 +536,7 @@ double end_compression(const StepCoefficients& k, const ContactForce& law, doubl
   // 2 g' at most 1 + |e - 1| / 2 for the power law. It stops once that is below 1e-13 of u:
   // (x u)^2 K <= 1e-13 u^2, without a square root or a division.
   const double k_bound = 1 + std::abs(e - 1) / 2;
+  double last_move = hi - lo;
   for (int iteration = 0; iteration < 100; ++iteration) {
     const double value = g(u, slope);
     (value > 0 ? hi : lo) = u;
@@ -546,6 +550,12 @@ double end_compression(const StepCoefficients& k, const ContactForce& law, doubl
     // Newton may land on or just past it, which bisection would approach only slowly.
     if (next >= hi && value < 0 && slope > 0) next = hi;
     else if (!(next > lo && next < hi) || !(slope > 0)) next = (lo + hi) / 2;
+    // From far past the root on a steep branch (a linear ball at e0 0.06 expands as u^555),
+    // Newton creeps, each step about u / e, and 100 of them stop short with a force 1e9 times
+    // too large. Past the few iterations a good guess needs, a step that does not halve the last
+    // one gives way to bisection, which the bracket's sign test keeps on the root.
+    else if (iteration >= newton_patience && std::abs(next - u) > last_move / 2) next = (lo + hi) / 2;
+    last_move = std::abs(next - u);
     u = next;
   }
   return u;
@@ -631,7 +641,7 @@ void ExactStepper::advance(const StepCoefficients& k, const Eigen::VectorXd& y, 
   // The geometric u is the ball's own plus the residual compliance's yield (equal to the sums to
   // round-off, and exactly consistent with u1, whose force is known).
   state_.remember(out, u1 + state_.compliance() * f1, psi_v - f1 * k.mode_qC - r1 * k.mode_qD - out(1), law, u1);
-  past_ = {m.h, f0, r0, out(0), out(1), law.expanding()};
+  past_ = {m.h, f0, r0, out(0), out(1), law.expanding(), f1};
 }
 
 }  // namespace sweetspot::detail
