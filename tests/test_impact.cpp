@@ -302,6 +302,10 @@ TEST_CASE("A nearly dead ball's own compression is found on its steep expansion 
       CHECK(std::abs(r.vf / expected.vf - 1) < 1e-4);
       CHECK(std::abs(r.energy.residual) < 1e-4 * r.energy.initial);
     }
+    // At coarse steps a step's known compression can pass u_m so far that F(u) overflows inside
+    // the end-force solve; the NaN it made was taken for a value below the root, and the impact
+    // ended non_finite at 20-40 us. Such a point lies past the root (the force dominates).
+    check_steps(modes, s, {20e-6, 30e-6, 40e-6}, expected, 1e-2);
   }
 }
 

@@ -539,7 +539,7 @@ double end_compression(const StepCoefficients& k, const ContactForce& law, doubl
   double last_move = hi - lo;
   for (int iteration = 0; iteration < 100; ++iteration) {
     const double value = g(u, slope);
-    (value > 0 ? hi : lo) = u;
+    (value <= 0 ? lo : hi) = u;  // a force that overflowed (NaN) lies past the root: F dominates g
     double next = u - value / slope;
     if ((next - u) * (next - u) * k_bound <= 1e-13 * u * u) {
       law.remember(next, force(next));
