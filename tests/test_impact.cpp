@@ -309,6 +309,22 @@ TEST_CASE("A nearly dead ball's own compression is found on its steep expansion 
   }
 }
 
+TEST_CASE("A nearly dead ball pressed far past u_m within a coarse step is still solved", "[impact]") {
+  // maple_271 swung at 51 rad/s, struck 5.6 cm from the knob by a linear ball (e0 0.05, F ~ u^400
+  // expanding) at 18.3 m/s: in the second contact a 20 us step from a nil force ends at 1.5 u_m,
+  // where the force overflows. The end-force solve's bracket then closed on the root with a NaN
+  // Newton step, which it returned: the impact ended non_finite at 20 and 30 us.
+  const ModalBasis modes = shipped_modes("maple_271");
+  ImpactScene s;
+  s.z = 0.0563988;
+  s.ball.a = 1;
+  s.ball.e0 = 0.05;
+  s.ball.curved_contact = true;
+  s.ball_speed = 18.3171;
+  s.swing = {51, true, 0, 0};
+  check_steps(modes, s, {20e-6, 30e-6}, dopri_reference(modes, s), 1e-2);
+}
+
 TEST_CASE("A nearly dead ball's steep expansion branch is stepped through at the default step", "[impact]") {
   // A linear ball at e0 0.06-0.07 expands as F ~ u^400-555: from F_m to nothing as u falls 1 %.
   // Two things went wrong at 10 us, each with status ok. Where a step's first Newton iterate for

@@ -545,7 +545,9 @@ double end_compression(const StepCoefficients& k, const ContactForce& law, doubl
       law.remember(next, force(next));
       return next;
     }
-    if (hi - lo <= 1e-15 * hi) return next;
+    // The bracket has closed on the root; a Newton step out of it (or NaN, from a force that
+    // overflowed) is no answer, the bracket's end is.
+    if (hi - lo <= 1e-15 * hi) return next >= lo && next <= hi ? next : u;
     // Near separation the force is all but zero and the root sits at the bracket's top, u_known:
     // Newton may land on or just past it, which bisection would approach only slowly.
     if (next >= hi && value < 0 && slope > 0) next = hi;
