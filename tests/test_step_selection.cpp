@@ -112,7 +112,7 @@ TEST_CASE("A stated accuracy holds for a nearly dead ball: its fast expansion sh
 TEST_CASE("A stated accuracy is checked against a run at twice the step, twice where the ball is caught again",
           "[step_selection]") {
   // Near the handle a nearly dead ball (e0 = 0.2) at 150 m/s is caught a second time; at the step
-  // the model picks for 1e-4 alone its exit speed errs by 0.19 %, 19 times the accuracy asked.
+  // the model picks for 1e-4 alone its exit speed errs by 3.2e-4, 3 times the accuracy asked.
   ImpactScene s = high_impact(0.305, 18, 150);
   s.ball.e0 = 0.2;
   s.integrator.method = Method::exact;
@@ -127,7 +127,7 @@ TEST_CASE("A stated accuracy is checked against a run at twice the step, twice w
   s.integrator = options_for_accuracy(s.integrator, s.step_accuracy, s.ball, s.ball_speed + g.bat_speed, g.recoil, 0);
   s.step_accuracy = 0;
   const ImpactResult single = simulate_impact(r161(), s);
-  CHECK(std::abs(single.vf / exact - 1) > 10 * 1e-4);
+  CHECK(std::abs(single.vf / exact - 1) > 2 * 1e-4);
 }
 
 TEST_CASE("Over the stated range exact stepping meets accuracy = A (README, Numerics)", "[step_selection]") {

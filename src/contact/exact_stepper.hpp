@@ -139,13 +139,14 @@ class ExactStepper {
   // step's polynomial in time can follow. A nearly dead ball's can fall from F_m to nothing
   // within a step (a linear ball at e0 0.06 expands as F ~ u^555, which vanishes as u falls 1 %),
   // and the energy such a step makes or loses shows in no balance (the bat holds it: the torpedo
-  // on the rig came back 34 % slow at 10 us). Where the force at either end counts (over 1 % of
-  // F_m), it may change by at most a factor exp(force_rate_limit * dt) (4 at 10 us), else the step
-  // is halved: the parts scale with the nominal step, so step doubling sees their error too.
+  // on the rig came back 34 % slow at 10 us). Where the force at either end counts (over 0.1 %
+  // of F_m: the impulse of a tail left below 1 % moved v_f by 4e-4), it may change by at most a
+  // factor exp(force_rate_limit * dt) (4 at 10 us), else the step is halved: the parts scale with
+  // the nominal step, so step doubling sees their error too.
   bool outruns(double start_force, double end_force, double h, const ContactForce& law) const {
     if (!law.expanding() || !(h > smallest_step)) return false;
     const double larger = std::max(start_force, end_force), smaller = std::min(start_force, end_force);
-    return larger > 0.01 * law.f_max() && smaller < larger * slowest_force_ratio_;
+    return larger > 1e-3 * law.f_max() && smaller < larger * slowest_force_ratio_;
   }
   // 1/s: ln 4 per 10 us, twice the fastest a baseball's force falls (2-fold in a 10 us step).
   static constexpr double force_rate_limit = 1.386e5;
