@@ -3,7 +3,8 @@
 high-impact scene against the C++ benchmark's impacts per second per core (build/bench_numerics,
 the same scene: modes auto at tolerance 5e-5, exact stepping at 60 us, z = 0.555..0.815 m; v_f alone
 asked, and with the collision time too, as impacts() gives every output), and what one
-`sweetspot.impact` call adds to the impact itself. Prints; asserts nothing.
+`sweetspot.impact` call adds to the impact itself, and what reading its error estimates adds.
+Prints; asserts nothing.
 
 Each figure is the median of rounds taken in turns with what it is compared to (a Python round,
 then a C++ run; a round of impact() calls, then the same impacts inside impacts()), so that the
@@ -71,3 +72,17 @@ for _ in range(7):
 call, point = statistics.median(per_call), statistics.median(per_point)
 print(f"impact(): {1e6 * call:.1f} us per call, of which the impact {1e6 * point:.1f} us: "
       f"{1e6 * (call - point):.1f} us added (medians of 7 rounds in turns)")
+
+# Reading a result's error estimates makes them (the impact at coarser steps and slicings).
+estimate_calls = 200
+
+
+def read_estimates():
+    for _ in range(estimate_calls):
+        sweetspot.impact(bat, **one)["total_error"]
+
+
+read_estimates()  # the coarser slicings' modes solved once, outside the timing
+per_read = [seconds(read_estimates) / estimate_calls for _ in range(7)]
+print(f"impact() with its error estimates read: {1e6 * statistics.median(per_read):.0f} us per call, "
+      f"{1e6 * (statistics.median(per_read) - call):.0f} us more (median of 7 rounds)")
