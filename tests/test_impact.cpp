@@ -58,6 +58,22 @@ ModalBasis shipped_modes(const std::string& name) {
   return compute_modes(load_bat(source_path("studies/bats/" + name + ".toml")), BeamTheory::timoshenko);
 }
 
+// A linear ball (a = 1, the same restitution e0 at every speed) struck at z at `speed`: on the
+// BBCOR rig, or free with the bat swung as given. The balls unlike a baseball's that the fixed-step
+// tests below probe.
+ImpactScene linear_ball_scene(const ModalBasis& modes, double z, double e0, double speed, bool on_rig = false,
+                              Swing swing = {}) {
+  ImpactScene s = on_rig ? rig_scene(certification_rig(standards()[0], CertifyOptions{}, modes.length()), z)
+                         : ImpactScene{};
+  if (!on_rig) s.swing = swing;
+  s.z = z;
+  s.ball.a = 1;
+  s.ball.e0 = e0;
+  s.ball.cor_slope = 0;
+  s.ball_speed = speed;
+  return s;
+}
+
 // The scene by Dormand-Prince at a tight tolerance: the reference of the fixed-step tests below.
 ImpactResult dopri_reference(const ModalBasis& modes, ImpactScene scene, double tolerance = 1e-12) {
   scene.integrator.method = Method::dopri;
@@ -200,12 +216,7 @@ TEST_CASE("A separation the step's cubic puts early leaves the ball in contact, 
   // the cubic through the step's ends put the ball's last separation early: the state there still
   // pressed it 7.6e-6 m, and free flight began a fourth contact at once. The contact goes on.
   const ModalBasis modes = shipped_modes("torpedo");
-  ImpactScene s;
-  s.z = 0.085;
-  s.ball_speed = 30;
-  s.ball.a = 1;
-  s.ball.e0 = 0.8;
-  s.swing = {51, true, 0, 0.09};
+  const ImpactScene s = linear_ball_scene(modes, 0.085, 0.8, 30, false, {51, true, 0, 0.09});
   check_steps(modes, s, {10e-6, 20e-6}, dopri_reference(modes, s), 5e-4);
 }
 
@@ -216,12 +227,7 @@ TEST_CASE("A later contact that begins a rounding error short of touching starts
   // (u <= 0); the step then gave the linear ball no force slope at touch, and v_f jumped by 4 %
   // between dt = 1e-5 and the doubles next to it. Results are now continuous in the step.
   const ModalBasis modes = shipped_modes("maple_271");
-  ImpactScene s;
-  s.z = 0.15;
-  s.ball.a = 1;
-  s.ball.e0 = 0.74774323554924038;
-  s.ball_speed = 31.672390992338283;
-  s.swing = {0, false, 0, 0};
+  ImpactScene s = linear_ball_scene(modes, 0.15, 0.74774323554924038, 31.672390992338283);
   s.vibrational_modes = 8;
   s.integrator.dt = 1e-6;
   const ImpactResult fine = simulate_impact(modes, s);
@@ -237,12 +243,7 @@ TEST_CASE("A linear ball's long chattering contact is met at the default step, a
   // of the energy). At 10 us v_f is within 1e-5; step doubling bounds that, and a stated step
   // accuracy meets it.
   const ModalBasis modes = shipped_modes("maple_271");
-  ImpactScene s;
-  s.z = 0.2;
-  s.ball.a = 1;
-  s.ball.e0 = 0.26722398999081676;
-  s.ball_speed = 27.822751768794479;
-  s.swing = {51, false, 30, 0};
+  ImpactScene s = linear_ball_scene(modes, 0.2, 0.26722398999081676, 27.822751768794479, false, {51, false, 30, 0});
   s.vibrational_modes = 4;
   const double expected = dopri_reference(modes, s).vf;
   s.error_estimates = true;
@@ -285,14 +286,8 @@ TEST_CASE("A nearly dead ball's own compression is found on its steep expansion 
   // alloy bat on the BBCOR rig returned the ball at 6.5e93 m/s. Exact stepping at 10 and 1 us
   // now agrees with Dormand-Prince within 1e-6, free and on the rig, and the balance closes.
   const ModalBasis modes = shipped_modes("alloy_bbcor");
-  const RigSettings rig = certification_rig(standards()[0], CertifyOptions{}, modes.length());
   for (const bool on_rig : {false, true}) {
-    ImpactScene s = on_rig ? rig_scene(rig, 0.4191) : ImpactScene{};
-    s.z = 0.4191;
-    s.ball_speed = on_rig ? 1 : 30;
-    s.ball.a = 1;
-    s.ball.e0 = 0.05;
-    s.ball.cor_slope = 0;
+    ImpactScene s = linear_ball_scene(modes, 0.4191, 0.05, on_rig ? 1 : 30, on_rig);
     s.integrator.damping_loss = true;
     const ImpactResult expected = dopri_reference(modes, s, 1e-11);
     for (const double dt : {10e-6, 1e-6}) {
@@ -316,13 +311,8 @@ TEST_CASE("A nearly dead ball pressed far past u_m within a coarse step is still
   // where the force overflows. The end-force solve's bracket then closed on the root with a NaN
   // Newton step, which it returned: the impact ended non_finite at 20 and 30 us.
   const ModalBasis modes = shipped_modes("maple_271");
-  ImpactScene s;
-  s.z = 0.0563988;
-  s.ball.a = 1;
-  s.ball.e0 = 0.05;
+  ImpactScene s = linear_ball_scene(modes, 0.0563988, 0.05, 18.3171, false, {51, true, 0, 0});
   s.ball.curved_contact = true;
-  s.ball_speed = 18.3171;
-  s.swing = {51, true, 0, 0};
   check_steps(modes, s, {20e-6, 30e-6}, dopri_reference(modes, s), 1e-3);
 }
 
@@ -345,14 +335,7 @@ TEST_CASE("A nearly dead ball's steep expansion branch is stepped through at the
                         {"torpedo", true, 0.5, 0.0596, 109.62, 2}};
   for (const Case& c : cases) {
     const ModalBasis modes = shipped_modes(c.bat);
-    ImpactScene s = c.rig ? rig_scene(certification_rig(standards()[0], CertifyOptions{}, modes.length()), c.z)
-                          : ImpactScene{};
-    if (!c.rig) s.swing = {20, false, 20, 0};
-    s.z = c.z;
-    s.ball.a = 1;
-    s.ball.e0 = c.e0;
-    s.ball.cor_slope = 0;
-    s.ball_speed = c.speed;
+    ImpactScene s = linear_ball_scene(modes, c.z, c.e0, c.speed, c.rig, {20, false, 20, 0});
     s.vibrational_modes = c.modes;
     s.integrator.damping_loss = true;
     INFO(c.bat << " at " << c.z << " m");
