@@ -73,16 +73,24 @@ call, point = statistics.median(per_call), statistics.median(per_point)
 print(f"impact(): {1e6 * call:.1f} us per call, of which the impact {1e6 * point:.1f} us: "
       f"{1e6 * (call - point):.1f} us added (medians of 7 rounds in turns)")
 
-# Reading a result's error estimates makes them (the impact at coarser steps and slicings).
+# Reading a result's error estimates makes them (the impact at coarser steps and slicings). Each
+# round's points are new (ball speeds shifted apart), as a study's are, so no per-thread memory of
+# an earlier impact helps either side: a round of calls that read v_f alone, then one that reads
+# the estimates too.
 estimate_calls = 200
 
 
-def read_estimates():
-    for _ in range(estimate_calls):
-        sweetspot.impact(bat, **one)["total_error"]
+def estimate_round(r, read):
+    for speed in 40 + 1e-3 * (2 * r + read + np.arange(estimate_calls) / estimate_calls):
+        result = sweetspot.impact(bat, z=0.705, **dict(scene, ball_speed=speed))
+        result["total_error" if read else "vf"]
 
 
-read_estimates()  # the coarser slicings' modes solved once, outside the timing
-per_read = [seconds(read_estimates) / estimate_calls for _ in range(7)]
-print(f"impact() with its error estimates read: {1e6 * statistics.median(per_read):.0f} us per call, "
-      f"{1e6 * (statistics.median(per_read) - call):.0f} us more (median of 7 rounds)")
+estimate_round(-1, True)  # the coarser slicings' modes solved once, outside the timing
+plain, read = [], []
+for r in range(7):  # in turns
+    plain.append(seconds(lambda: estimate_round(r, False)) / estimate_calls)
+    read.append(seconds(lambda: estimate_round(r, True)) / estimate_calls)
+plain_us, read_us = 1e6 * statistics.median(plain), 1e6 * statistics.median(read)
+print(f"impact() on new points: {plain_us:.0f} us per call reading v_f, {read_us:.0f} us reading its error "
+      f"estimates: {read_us - plain_us:.0f} us more (medians of 7 rounds in turns)")
