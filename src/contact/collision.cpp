@@ -7,6 +7,7 @@
 #include <string>
 #include <type_traits>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "contact/contact_state.hpp"
@@ -206,7 +207,7 @@ class CollisionRun {
       }
     }
     finish();
-    return result_;
+    return std::move(result_);  // run once: the result is the run's last use of it
   }
 
  private:

@@ -29,6 +29,7 @@ void bat_energies(const ImpactScene& scene, const SceneGeometry& g, const ModalB
                   ImpactResult& r) {
   const int rigid = rigid_modes(scene);
   const int beam = g.wall >= 0 ? g.wall : g.contact.count();  // the wall mode is last
+  r.mode_energy.reserve(std::max(0, beam - rigid));
   for (int n = rigid; n < beam; ++n) {
     r.mode_energy.push_back(c.mode_energy(g.contact, n));
     r.energy.vibration += r.mode_energy.back();

@@ -76,7 +76,11 @@ ModeSelection select_modes(const Eigen::VectorXd& omega, const Eigen::VectorXd& 
     dropped_cost = x2 > 4 ? unsolved.compliance * per_compliance : std::numeric_limits<double>::infinity();
     dropped_compliance = unsolved.compliance;
   }
-  std::vector<Take> take(n);
+  // Scratch of this thread's: a study selects at every impact (no allocation once it has the size).
+  thread_local std::vector<Take> take;
+  thread_local std::vector<int> candidates;
+  take.assign(n, Take{});
+  candidates.clear();
   for (int i = 2; i < n; ++i) {
     const double w2 = omega(i) * omega(i), inverse_w2 = 1 / w2, psi2 = psi(i) * psi(i);
     const double lag = std::min(1.0, pulse_omega2 * inverse_w2);
@@ -88,10 +92,10 @@ ModeSelection select_modes(const Eigen::VectorXd& omega, const Eigen::VectorXd& 
       dropped_compliance += take[i].compliance;
     }
   }
-  std::vector<int> candidates;
   for (int i = 2; i < n; ++i)
     if (take[i].cost * n > tolerance) candidates.push_back(i);
-  std::ranges::sort(candidates, [&take](int i, int j) { return take[i].cost < take[j].cost; });
+  std::ranges::sort(candidates, [](int i, int j) { return take[i].cost < take[j].cost; });
+  s.kept.reserve(candidates.size());
   for (const int i : candidates) {
     if (dropped_cost + take[i].cost <= tolerance) {
       dropped_cost += take[i].cost;

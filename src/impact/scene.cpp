@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <utility>
 
 #include "sweetspot/ball/ball_tests.hpp"
 #include "sweetspot/impact/error_estimates.hpp"
@@ -38,23 +39,29 @@ void require_positive(const std::string& key, double value) {
 
 // The modes an impact keeps: the rigid two, then the first N vibrational ones, all of them, or
 // (auto) those the pulse can excite, the rest folded into a residual compliance.
-std::vector<int> kept_modes(const ImpactScene& scene, const ModalBasis& basis, SceneGeometry& g) {
-  std::vector<int> kept = {0, 1};
+std::vector<int> kept_modes(const ImpactScene& scene, const ModalBasis& basis, const Eigen::VectorXd& shapes,
+                            SceneGeometry& g) {
+  std::vector<int> kept;
   if (scene.vibrational_modes == auto_modes) {
     // A partial basis: the modes it did not solve are dropped, their compliance counted exactly.
     const UnsolvedModes unsolved =
         basis.complete() ? UnsolvedModes{} : UnsolvedModes{basis.unsolved_compliance_at(g.z), basis.solved_below};
     const ModeSelection selection =
-        select_modes(basis.omega, basis.shapes_at(g.z), scene.ball, scene.ball_speed, g.bat_speed, g.recoil,
+        select_modes(basis.omega, shapes, scene.ball, scene.ball_speed, g.bat_speed, g.recoil,
                      scene.mode_tolerance, unsolved);
+    kept.reserve(2 + selection.kept.size());  // the rigid two, then the kept ones, in one allocation
+    kept = {0, 1};
     kept.insert(kept.end(), selection.kept.begin(), selection.kept.end());
     g.contact.residual_compliance = selection.residual_compliance;
     g.modes_error = selection.error_estimate;
     g.drops_solved = kept.size() < static_cast<std::size_t>(basis.count());
   } else {
     const int count = scene.vibrational_modes == all_modes ? basis.count() : 2 + scene.vibrational_modes;
+    kept.reserve(std::max(count, 2));
+    kept = {0, 1};
     for (int i = 2; i < count; ++i) kept.push_back(i);
   }
+  g.modes_kept.reserve(kept.size());
   for (std::size_t i = 2; i < kept.size(); ++i) g.modes_kept.push_back(kept[i] - 1);
   return kept;
 }
@@ -349,19 +356,21 @@ SceneGeometry scene_geometry(const ImpactScene& scene, const ModalBasis& basis) 
   if (scene.pivoted && scene.vibrational_modes == auto_modes && basis.count() > 2) {
     held_auto_geometry(scene, basis, g);
   } else {
-    g.kept = kept_modes(scene, basis, g);
+    const Eigen::VectorXd shapes = basis.shapes_at(g.z);
+    g.kept = kept_modes(scene, basis, shapes, g);
     const std::vector<int>& kept = g.kept;
     ModalContact free;
     free.omega = basis.omega(kept);
-    free.psi = basis.shapes_at(g.z)(kept);
+    free.psi = shapes(kept);
     free.velocity0 = g.cm_speed * basis.translation(kept) + scene.swing.omega * basis.rotation(kept);
     free.residual_compliance = g.contact.residual_compliance;
-    g.contact = free;
     if (scene.pivoted) {
       // A bat kept rigid is held rigidly, as it is struck (below).
       const double yield = scene.vibrational_modes != 0 ? basis.layout.point(g.pivot).compliance : 0;
       g.contact = held_contact(free, basis.shapes_at(g.pivot)(kept), yield, g.held);
       if (yield > 0) fold_fastest_mode(g.contact, g.held);
+    } else {
+      g.contact = std::move(free);
     }
   }
   // A flexible bat also yields locally where the ball strikes between the discretisation's nodes
