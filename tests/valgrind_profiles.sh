@@ -32,10 +32,11 @@ cp "$bats/maple_271.toml" "$dir/"
 sed 's/^barrel_diameter = .*/barrel_diameter = 0.02/' "$bats/maple_271.toml" > "$dir/thin_barrel.toml"
 
 failures=0
+memcheck=(valgrind --quiet --error-exitcode=99 --soname-synonyms=somalloc='*mimalloc*' --show-mismatched-frees=no)
 expect() {
   local status=$1; shift
   local actual=0
-  valgrind --quiet --error-exitcode=99 --soname-synonyms=somalloc='*mimalloc*' --show-mismatched-frees=no "$program" "$@" > "$dir/out" 2>&1 || actual=$?
+  "${memcheck[@]}" "$program" "$@" > "$dir/out" 2>&1 || actual=$?
   if [ "$actual" != "$status" ]; then
     echo "FAILED (exit $actual, expected $status): sweetspot $*"; cat "$dir/out"; failures=$((failures + 1))
   else
