@@ -448,7 +448,7 @@ StepCoefficients ExactStepper::event_coefficients(double h) {
 }
 
 double ExactStepper::past_ratio(const Eigen::VectorXd& y, double h, const ContactForce& law) const {
-  const bool continues = past_.expanding == law.expanding() && y(0) == past_.end_s && y(1) == past_.end_v;
+  const bool continues = past_.expanding == law.expanding() && starts_where_past_ended(y);
   // Past data far from the step (ratio over 8) add little; close to it (under 1/4) they would
   // make the interpolant ill-conditioned.
   const double ratio = past_.h / h;

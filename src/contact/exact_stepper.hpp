@@ -102,8 +102,9 @@ class ExactStepper {
   std::string refusal() const { return {}; }  // stable at any step for the modes
   StepOutcome attempt(const Eigen::VectorXd& y, double h, const ContactForce& law, Eigen::VectorXd& out) {
     // The force the last step ended with, where this one starts (no pow), else the law's.
-    const bool continues = y(0) == past_.end_s && y(1) == past_.end_v;
-    const double start_force = !law.expanding() ? 0.0 : continues ? past_.end_force : state_.force(y, law);
+    const double start_force = !law.expanding()              ? 0.0
+                               : starts_where_past_ended(y) ? past_.end_force
+                                                            : state_.force(y, law);
     step(y, h, law, out);
     if (too_stiff_at_end(state_, out, h, law, options_) || outruns(start_force, past_.end_force, h, law)) {
       past_ = past_at_step_start_;  // as if the step had not been made
@@ -151,6 +152,8 @@ class ExactStepper {
   // 1/s: ln 4 per 10 us, twice the fastest a baseball's force falls (2-fold in a 10 us step).
   static constexpr double force_rate_limit = 1.386e5;
 
+  // Whether a step from y starts where the last one ended (the ball's place and speed the same).
+  bool starts_where_past_ended(const Eigen::VectorXd& y) const { return y(0) == past_.end_s && y(1) == past_.end_v; }
   // The past ratio a step from y of length h can use (0: none, cubic).
   double past_ratio(const Eigen::VectorXd& y, double h, const ContactForce& law) const;
   void advance(const StepCoefficients& k, const Eigen::VectorXd& y, const ContactForce& law, Eigen::VectorXd& out);
