@@ -251,6 +251,7 @@ class CollisionRun {
     record_sample(law);
     VectorXd next(y_.size());
     double h = stepper_.first_step();
+    bool rising = state_.compression_rate(y_) > 0;  // at the last step's end
     for (double steps = 1;; ++steps) {
       h = stiffness_limited(h, law);
       if (steps > max_contact_steps)
@@ -285,6 +286,9 @@ class CollisionRun {
       }
       y_.swap(next);
       t_ += h;
+      const bool rises = state_.compression_rate(y_) > 0;
+      if (rising && !rises) ++result_.force_peaks;
+      rising = rises;
       record_sample(law);
       if (separated) break;
       h = outcome.next_h;

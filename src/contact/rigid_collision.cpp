@@ -70,6 +70,7 @@ std::optional<Collision> rigid_collision(const ModalContact& body, const Ball& b
   c.peak_force = law.f_max();
   c.dissipated = law.loop_energy();
   c.contacts = 1;
+  c.force_peaks = 1;  // the rigid bat's pulse rises to one maximum and falls
   c.collision_time = std::numeric_limits<double>::quiet_NaN();
   if (options.find_collision_time) {
     // The impulse delivered is (w0 - u') / mu: the fraction's is reached where u' is this.

@@ -117,6 +117,9 @@ struct Collision {
   // alongside the modes, not inferred from the balance; 0 without damping.
   double damping_dissipated = 0;
   int contacts = 0;
+  // The force's maxima over all contacts, at the steps' ends (where the compression's rate turns
+  // from rising to falling): one for a smooth pulse, more where the bat's ringing shakes it.
+  int force_peaks = 0;
   double step = 0;                 // s, the fixed step taken (0: Dormand-Prince's adaptive steps)
   std::vector<ForceSample> force;  // only with record_force
 

@@ -5,12 +5,14 @@
 //   exact: a baseball-like ball (modelled_step: e0 >= 0.5, a in [1.5, 2.2]) within 10 (dt/T)^3.8
 //          (e0 >= 0.8: 12 (dt/T)^3.8, and 0.17 (dt/T)^(a+1) at fine steps; a softball-like
 //          one, 0.4 <= e0 < 0.5, 75 (dt/T)^3.8)
-//          on a single contact, wherever on the bat at closing speeds up to 70 m/s (past that,
-//          up to 5x more near the handle); other balls 7 (dt/T)^3.8
+//          on a single contact whose force rises to one maximum and falls, wherever on the bat
+//          at closing speeds up to 130 m/s (where the ringing bat shakes the force into more
+//          maxima, up to 7x more); other balls 7 (dt/T)^3.8
 //          on the high-impact scene, up to 4x that at 150 m/s;
 //   rk4: 555 (dt/T)^4;   dopri: up to about 20x its tolerance;
-// For a modelled ball up to 70 m/s the step is taken as the model says, and one run is made: its cost is
-// within 2x the cheapest fixed step that meets the accuracy (tests/benchmarks/bench_accuracy).
+// For a modelled ball up to 130 m/s the step is taken as the model says, and one run is made
+// where its force has one maximum: its cost is within 2x the cheapest fixed step that meets the
+// accuracy (tests/benchmarks/bench_accuracy).
 // Elsewhere the settings keep within half the accuracy asked for, for margin, and the
 // fixed-step methods also keep omega_c h (the contact's own ringing) below a bound that
 // tightens with the accuracy: a nearly dead ball's force falls within a few 1/omega_c, far
@@ -31,7 +33,8 @@ CollisionOptions options_for_accuracy(CollisionOptions options, double accuracy,
                                       double approach_speed, double recoil, double omega_max);
 
 // The collision at options.dt; for a modelled step (above) that is all, unless the ball is
-// caught again or closes faster than 70 m/s. Otherwise (exact, rk4) with its exit speed's error checked: a run at twice
+// caught again, its force has more than one maximum (Collision::force_peaks) or it closes faster
+// than 130 m/s. Otherwise (exact, rk4) with its exit speed's error checked: a run at twice
 // the step costs half as much, and their difference over 2^p - 1 (p = a + 1 at most 4, the order
 // the ball's t^a onset leaves at fine steps) bounds the finer run's error. While that exceeds
 // `accuracy` (relative to |v_f|, or to 5 % of the ball's speed when v_f is near 0), the step
