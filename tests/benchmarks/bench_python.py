@@ -2,7 +2,8 @@
 """The Python module's cost (issue 15): `sweetspot.impacts` on one thread over 100 000 points of the
 high-impact scene against the C++ benchmark's impacts per second per core (build/bench_numerics,
 the same scene: modes auto at tolerance 5e-5, exact stepping at 60 us, z = 0.555..0.815 m; v_f alone
-asked, and with the collision time too, as impacts() gives every output), and what one
+asked, and with the collision time too, as impacts() gives every output); over 2 100 points each
+new at the defaults against build/bench_points' rate over the same grid; and what one
 `sweetspot.impact` call adds to the impact itself, and what reading its error estimates adds.
 Prints; asserts nothing.
 
@@ -53,6 +54,36 @@ if all(len(run) == 2 for run in cpp_runs):  # builds before this script's change
     like = f", {cpp_like:9.0f} with the collision time, as impacts() gives it ({100 * python_rate / cpp_like:.0f} %)"
 print(f"impacts, 1 thread, 100 000 points: {python_rate:9.0f} impacts/s; C++ {cpp:9.0f} impacts/s per core "
       f"({100 * python_rate / cpp:.0f} %){like}; medians of 3 rounds in turns")
+
+# The same on points each new, as a study's are: bench_points' grid (21 z from 50 to 80 cm x 100
+# ball speeds from 30 to 50 m/s, the defaults, N2000's high-impact swing), each round shifted by a
+# fraction of a speed step so that no point recurs, against bench_points' rate over its own rounds
+# of that grid at the defaults (CPU time on both sides).
+unique_z, unique_speed = (a.ravel() for a in np.meshgrid(0.50 + 0.30 * np.arange(21) / 20, np.arange(100),
+                                                         indexing="ij"))
+
+
+def unique_rate(shift):
+    speeds = 30 + 20.0 * (unique_speed + shift) / 100
+    start = time.process_time()
+    sweetspot.impacts(bat, z=unique_z, ball_speed=speeds, e0=0.5, omega=51, center=0.09, threads=1)
+    return len(unique_z) / (time.process_time() - start)
+
+
+def cpp_unique_rate():
+    out = subprocess.run(["build/bench_points", "studies/bats/r161.toml", "default"], capture_output=True, text=True,
+                         check=True).stdout
+    return float(next(line for line in out.splitlines() if line.startswith("default")).split()[-4])
+
+
+unique_rate(0.05)  # the modes the defaults need, solved once outside the timing
+unique_python, unique_cpp = [], []
+for r in range(3):
+    unique_python.append(unique_rate(0.1 + 0.25 * r))
+    unique_cpp.append(cpp_unique_rate())
+python_unique, cpp_unique = statistics.median(unique_python), statistics.median(unique_cpp)
+print(f"impacts, 1 thread, 2 100 unique points at the defaults: {python_unique:9.0f} impacts/s; C++ (bench_points) "
+      f"{cpp_unique:9.0f} impacts/s per core ({100 * python_unique / cpp_unique:.0f} %); medians of 3 rounds in turns")
 
 # One call against the same impact inside impacts(): the difference is the call's own cost.
 one = dict(z=0.705, **scene)
