@@ -21,11 +21,11 @@ cd "$dir"
 
 # The program allocates through mimalloc (CMakeLists.txt): memcheck replaces its malloc and free as
 # it does glibc's; its operator delete[] is free under another name, so memcheck cannot tell
-# delete[] from free there.
-memcheck=(valgrind --quiet --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite
-          --show-leak-kinds=definite --num-callers=40 --soname-synonyms=somalloc='*mimalloc*'
-          --show-mismatched-frees=no
-          --suppressions=/usr/share/openmpi/openmpi-valgrind.supp --suppressions="$here/valgrind/open_mpi.supp")
+# delete[] from free there. The Python module keeps glibc's allocator: its run below checks them.
+memcheck_glibc=(valgrind --quiet --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite
+                --show-leak-kinds=definite --num-callers=40
+                --suppressions=/usr/share/openmpi/openmpi-valgrind.supp --suppressions="$here/valgrind/open_mpi.supp")
+memcheck=("${memcheck_glibc[@]}" --soname-synonyms=somalloc='*mimalloc*' --show-mismatched-frees=no)
 failures=0
 # check DESCRIPTION COMMAND...: the command under memcheck must exit 0.
 check() {
@@ -118,7 +118,7 @@ check "optimize (5 evaluations)" "${memcheck[@]}" "$program" optimize opt.toml -
 # of the module's) would be a definite leak. The module's C++ allocations are malloc's either way.
 if [ -n "$python_dir" ]; then
   check "python impacts" env PYTHONPATH="$python_dir" PYTHONDONTWRITEBYTECODE=1 \
-    "${memcheck[@]}" --suppressions=/usr/lib/valgrind/python3.supp \
+    "${memcheck_glibc[@]}" --suppressions=/usr/lib/valgrind/python3.supp \
     "$python" -c "
 import sweetspot
 bat = sweetspot.Bat.load('$bat')
