@@ -267,10 +267,12 @@ class CollisionRun {
         continue;
       }
       // u and u' sum every mode, so a non-finite one shows there without a pass of its own.
-      if (!std::isfinite(next(0) + next(1) + state_.compression(next) + state_.compression_rate(next)))
+      const double du_end = state_.compression_rate(next);
+      if (!std::isfinite(next(0) + next(1) + state_.compression(next) + du_end))
         return fail(CollisionStatus::non_finite, format("non-finite state at t = %g s (step %g s)", t_, h));
       bool separated = false;
-      if (!law.expanding() && state_.compression_rate(next) <= 0) {
+      bool located = true;  // an event's step ends at the event, no longer at `next` as stepped
+      if (!law.expanding() && du_end <= 0) {
         h = stepper_.locate(y_, h, law, detail::ContactEvent::max_compression, next);
         const double u_max = state_.ball_compression(state_.compression(next), law);
         // A graze that never compressed the ball is over (and F_m = k1 u_m^a needs u_m > 0).
@@ -283,10 +285,13 @@ class CollisionRun {
       } else if (law.expanding() && reloads(h, law, u_start, du_start, next)) {
         h = stepper_.locate(y_, h, law, detail::ContactEvent::reloading, next);
         law.resume_compression();
+      } else {
+        located = false;
       }
+      // Whether the force still rises at the step's end: a force maximum where it stops.
+      const bool rises = (located ? state_.compression_rate(next) : du_end) > 0;
       y_.swap(next);
       t_ += h;
-      const bool rises = state_.compression_rate(y_) > 0;
       if (rising && !rises) ++result_.force_peaks;
       rising = rises;
       record_sample(law);
