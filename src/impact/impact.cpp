@@ -185,7 +185,8 @@ Collision collide_scene(const ImpactScene& scene, const SceneGeometry& g, Caught
   // The accuracy's other settings (the contact phase's bound) hold for a checked step too.
   if (scene.step_accuracy > 0)
     options = options_for_accuracy(options, scene.step_accuracy, scene.ball, scene.ball_speed + g.bat_speed, g.recoil,
-                                   g.contact.count() ? g.contact.omega.maxCoeff() : 0.0);
+                                   g.contact.count() ? g.contact.omega.maxCoeff() : 0.0,
+                                   g.wall >= 0 ? g.contact.omega(g.wall) : 0.0);
   if (checked) options.dt = scene.checked_step;
   options.stop_when_caught_again = caught_again == CaughtAgain::stop;
   // Van Zandt and the force analyses drive the modes with the force profile.

@@ -28,9 +28,10 @@ namespace sweetspot {
 bool modelled_step(Method method, const Ball& ball);
 
 // Sets dt and contact_phase_limit (exact, rk4: dt never above RK4's stability limit for
-// omega_max) or the tolerance (dopri).
+// omega_max) or the tolerance (dopri). omega_wall is the frequency of a hollow barrel's wall mode
+// in the contact (0 for none): the exact stepper's step then resolves its ringing (below).
 CollisionOptions options_for_accuracy(CollisionOptions options, double accuracy, const Ball& ball,
-                                      double approach_speed, double recoil, double omega_max);
+                                      double approach_speed, double recoil, double omega_max, double omega_wall = 0);
 
 // The collision at options.dt; for a modelled step (above) that is all, unless the ball is
 // caught again, its force has more than one maximum (Collision::force_peaks) or it closes faster
