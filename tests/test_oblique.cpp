@@ -214,6 +214,25 @@ TEST_CASE("oblique: the energy balance closes with friction's loss on the flexib
     }
 }
 
+TEST_CASE("oblique: friction that gives the bodies energy is not ok", "[oblique]") {
+  // With mu = 5 the grip never slides, and its stiffness, growing with the normal force, pumps the
+  // ball's stretch: friction's loss came out at -2 J (R161 at 70 cm, 40 m/s, 1.9 cm undercut), with
+  // the balance closed. At 0.5, as at every ball-bat friction measured, it takes energy.
+  ImpactScene s = game_scene(0.75 * 0.0254, 0.5);
+  s.oblique.swing_tilt = 0;
+  s.z = 0.7;
+  s.swing = {51, false, 24, 0};
+  const ImpactResult moderate = simulate_impact(r161(), s);
+  REQUIRE(moderate.status == CollisionStatus::ok);
+  CHECK(moderate.energy.friction > 0);
+  s.oblique.friction = 5;
+  const ImpactResult gripping = simulate_impact(r161(), s);
+  INFO(gripping.message);
+  CHECK(gripping.energy.friction < 0);
+  CHECK(gripping.status == CollisionStatus::unbalanced);
+  CHECK_THAT(gripping.message, Catch::Contains("friction gave the bodies"));
+}
+
 TEST_CASE("oblique: more undercut launches higher, and a compliant grip spins the ball past rolling", "[oblique]") {
   double previous = -90;
   for (const double undercut : {0.0, 0.01, 0.02, 0.03, 0.04}) {

@@ -82,6 +82,12 @@ std::vector<double> force_response_grid() {
   return grid;
 }
 
+bool has_values(CollisionStatus status) {
+  return status != CollisionStatus::no_contact && status != CollisionStatus::no_separation &&
+         status != CollisionStatus::non_finite && status != CollisionStatus::failed &&
+         status != CollisionStatus::refused_step;
+}
+
 void close_balance(ImpactResult& r) {
   ImpactEnergy& e = r.energy;
   // The barrel's terms last: 0 for a solid section, so a wooden bat's sum is what it always was.
@@ -382,10 +388,11 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& stated)
     r.total_error = r.modes_error + r.step_error + r.slicing_error;  // NaN until the caller adds the slicing's
   }
   if (c.status == CollisionStatus::refused_step) return r;
-  if (c.status == CollisionStatus::no_contact) {  // nothing happened: no result
-    r.e_eff = std::nan("");
-    r.energy = {std::nan(""), std::nan(""), std::nan(""), std::nan(""), std::nan(""), std::nan(""), std::nan(""),
-                std::nan(""), std::nan(""), std::nan(""), std::nan(""), std::nan("")};
+  if (!has_values(c.status)) {  // nothing happened, or nothing to report
+    const double nan = std::nan("");
+    r.vf = r.contact_time = r.collision_time = r.u_max = r.peak_force = r.impulse = nan;
+    r.e_eff = nan;
+    r.energy = {nan, nan, nan, nan, nan, nan, nan, nan, nan, nan, nan, nan};
     return r;
   }
   if (scene.rigid_comparison) r.vf_rigid = rigid_exit_speed(scene.ball.e0, g.recoil, scene.ball_speed, g.bat_speed);

@@ -128,6 +128,11 @@ double mean_compression_fraction(const Ball& ball);
 
 void close_balance(ImpactResult& result);
 
+// Whether a collision of this status has values to report: not one that never touched, nor one
+// that failed (no separation, a state no longer finite, too many steps), whose values would be
+// those of the state it stopped in (the ball's approach speed, or an overflow).
+bool has_values(CollisionStatus status);
+
 // The values a result gives only when asked, NaN otherwise (a study may not ask).
 struct AskedValues {
   bool collision_time = true;
