@@ -46,6 +46,9 @@ check(refused(lambda: sweetspot.flight(-1, 30), "speed"), "negative speed")
 check(refused(lambda: sweetspot.flight(float("nan"), 30), "speed"), "NaN speed")
 check(refused(lambda: sweetspot.flight(40, 30, humidity=150), "humidity"), "humidity above 100 %")
 check(refused(lambda: sweetspot.flight(40, 30, pressure=-5), "pressure"), "negative pressure")
+# Far outside the records the ball never landed (1e300) or the fault was laid at the humidity (1e-300).
+check(refused(lambda: sweetspot.flight(40, 30, pressure=1e-300), "pressure"), "a pressure of nothing")
+check(refused(lambda: sweetspot.flight(40, 30, pressure=1e300), "pressure"), "a pressure past any air")
 check(refused(lambda: sweetspot.flight(40, 30, temperature="-500 F"), "temperature"), "below absolute zero")
 check(refused(lambda: sweetspot.flight(40, 30, temperature="70 mph"), "temperature", "units K, C, F"),
       "temperature of the wrong dimension")

@@ -50,9 +50,13 @@ void require_untouched(const TempDir& dir) {
 
 }  // namespace
 
-TEST_CASE("A step that could take more than 1e7 steps per contact is refused", "[bounds]") {
+TEST_CASE("A step that could take more than 1e7 steps per contact, or step over a whole one, is refused",
+          "[bounds]") {
   require_refused(run_program("impact --bat " + r161 + " --z 0.7" + scene + " --integrator exact --dt 1e-12"),
-                  {"impact: --dt 1e-12: expected a step >= 5e-09 s"});
+                  {"impact: --dt 1e-12: expected a step in [5e-09, 0.001] s"});
+  // A mistyped 1e300 overflowed the state: status non_finite, and values that meant nothing.
+  require_refused(run_program("impact --bat " + r161 + " --z 0.7" + scene + " --dt 1e300"),
+                  {"impact: --dt 1e+300: expected a step in [5e-09, 0.001] s"});
   require_refused(run_program("wall --speed 40 --dt 4.9e-9"), {"wall: --dt 4.9e-09"});
   // The bound itself is a step that works: a 1 ms contact in 2e5 steps.
   const ProgramRun finest = run_program("impact --bat " + r161 + " --z 0.7" + scene + " --integrator exact --dt 5e-9 --modes 0");
@@ -61,7 +65,26 @@ TEST_CASE("A step that could take more than 1e7 steps per contact is refused", "
   CHECK_THAT(finest.output, Catch::Contains("status          ok"));
   TempDir dir;
   require_refused(run_study(dir, "dt = 1e-12\n", "[axes]\nz = [0.7]\nball_speed = [40.0]\n"),
-                  {"key 'scene.dt' = 1e-12: expected a finite number >= 5e-9"});
+                  {"key 'scene.dt' = 1e-12: expected a number in [5e-9, 1e-3]"});
+  require_refused(run_study(dir, "dt = 0.002\n", "[axes]\nz = [0.7]\nball_speed = [40.0]\n"),
+                  {"key 'scene.dt' = 0.002: expected a number in [5e-9, 1e-3]"});
+  require_untouched(dir);
+}
+
+TEST_CASE("An option that is not a number says that a number was expected", "[bounds]") {
+  require_refused(run_program("impact --bat " + r161 + " --z 0.7" + scene + " --accuracy abc"),
+                  {"impact: --accuracy = abc: expected a number"});
+}
+
+TEST_CASE("A mode tolerance outside 1e-15 to 0.1 is refused, on the command line and in a study", "[bounds]") {
+  // 1e300 kept no mode on the command line (its error estimate infinite) and failed every point
+  // of a study; 1e-300 overflowed the finer slicings' requests (a slicing estimate of 0.23).
+  for (const char* tolerance : {"1e300", "1e-300"})
+    require_refused(run_program("impact --bat " + r161 + " --z 0.7" + scene + " --mode-tolerance " + tolerance),
+                    {"mode_tolerance", "expected a number from 1e-15 to 0.1"});
+  TempDir dir;
+  require_refused(run_study(dir, "mode_tolerance = 0.2\n", "[axes]\nz = [0.7]\nball_speed = [40.0]\n"),
+                  {"key 'scene.mode_tolerance' = 0.2: expected a number from 1e-15 to 0.1"});
   require_untouched(dir);
 }
 

@@ -291,10 +291,10 @@ void resolve_integrator(const CLI::App& cmd, CollisionOptions& options) {
   if (cmd.count("--n2000") && cmd.count("--integrator") == 0) options = with_n2000_settings(options);
   if (cmd.count("--dt") == 0) options.dt = default_step(options.method);
   // As history_step is bounded: a mistyped step would take billions of steps and their memory.
-  if (!(options.dt >= finest_step)) {
-    char text[160];
-    std::snprintf(text, sizeof text, ": --dt %g: expected a step >= %g s (a finer one could take more than 1e7 steps "
-                  "per contact)", options.dt, finest_step);
+  if (!valid_step(options.dt)) {
+    char text[200];
+    std::snprintf(text, sizeof text, ": --dt %g: expected a step in [%g, %g] s (a finer one could take more than 1e7 "
+                  "steps per contact, a coarser one steps over it)", options.dt, finest_step, coarsest_step);
     throw InputError(cmd.get_name() + text);
   }
 }

@@ -29,6 +29,9 @@ int main(int argc, char** argv) {
     // A usage error is a bad input like any other: one line, exit status 2.
     std::string text = e.what();
     std::replace(text.begin(), text.end(), '\n', ' ');
+    // CLI11 names the option and its value, not what it should be: every option it converts is a number.
+    if (const std::string unconverted = "Could not convert: "; text.starts_with(unconverted))
+      text = text.substr(unconverted.size()) + ": expected a number";
     for (const CLI::App* command : app.get_subcommands()) text = command->get_name() + ": " + text;
     if (app.get_subcommands().empty()) {  // CLI11 says only "A subcommand is required"
       text = "expected a command: modes, impact, wall, toy, ball, run, convergence, certify, optimize or flight";

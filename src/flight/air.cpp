@@ -28,14 +28,12 @@ double air_density(const Air& air) {
 std::optional<InputProblem> air_problem(const Air& air) {
   if (!(air.temperature > min_air_temperature) || !(air.temperature < max_air_temperature))
     return InputProblem{"temperature", air.temperature, air_temperature_expected};
-  if (!(air.pressure > 0) || !std::isfinite(air.pressure))
-    return InputProblem{"pressure", air.pressure, "a finite pressure > 0"};
+  if (!valid_air_pressure(air.pressure)) return InputProblem{"pressure", air.pressure, air_pressure_expected};
   if (!(air.elevation > -1000 && air.elevation < 10000))
     return InputProblem{"altitude", air.elevation, "an elevation between -1000 m and 10000 m"};
   if (!(air.relative_humidity >= 0 && air.relative_humidity <= 1))
     return InputProblem{"humidity", 100 * air.relative_humidity, "a relative humidity from 0 to 100 %"};
-  if (!(air.wind_speed >= 0) || !std::isfinite(air.wind_speed))
-    return InputProblem{"wind_speed", air.wind_speed, "a finite speed >= 0"};
+  if (!valid_wind_speed(air.wind_speed)) return InputProblem{"wind_speed", air.wind_speed, wind_speed_expected};
   if (!std::isfinite(air.wind_direction))
     return InputProblem{"wind_direction", air.wind_direction, "a finite angle in deg"};
   // Air so hot and humid that its vapour would exceed its pressure is not air.

@@ -287,7 +287,8 @@ void validate(const ImpactScene& scene, const ModalBasis& basis) {
   }
   require_positive("dt", scene.integrator.dt);
   require_positive("tolerance", scene.integrator.tolerance);
-  require_positive("mode_tolerance", scene.mode_tolerance);
+  if (!valid_mode_tolerance(scene.mode_tolerance))
+    reject("mode_tolerance", scene.mode_tolerance, std::string("expected ") + mode_tolerance_expected);
   if (scene.step_accuracy != 0) require_positive("step_accuracy", scene.step_accuracy);
   if (scene.checked_step != 0) require_positive("checked_step", scene.checked_step);
   if (!(scene.mode_share_divisor >= 1)) reject("mode_share_divisor", scene.mode_share_divisor, "must be at least 1");

@@ -275,10 +275,10 @@ SceneArgs scene_from(const SceneValues& values, const std::set<std::string>& per
     s.integrator.method = parse_method(text("integrator", get(arg::integrator), "\"exact\", \"rk4\" or \"dopri\""));
   if (has(arg::dt)) s.integrator.dt = number("dt", get(arg::dt));
   else s.integrator.dt = default_step(s.integrator.method);
-  if (!(s.integrator.dt >= finest_step)) {
-    char text[160];
-    std::snprintf(text, sizeof text, "impact: dt %g: expected a step >= %g s (a finer one could take more than 1e7 "
-                  "steps per contact)", s.integrator.dt, finest_step);
+  if (!valid_step(s.integrator.dt)) {
+    char text[200];
+    std::snprintf(text, sizeof text, "impact: dt %g: expected a step in [%g, %g] s (a finer one could take more than "
+                  "1e7 steps per contact, a coarser one steps over it)", s.integrator.dt, finest_step, coarsest_step);
     throw InputError(text);
   }
   s.vibrational_modes = has(arg::modes) ? parse_modes(get(arg::modes)) : n2000 ? n2000_modes : auto_modes;

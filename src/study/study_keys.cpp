@@ -20,7 +20,7 @@ namespace {
 bool any(double) { return true; }
 bool finite(double x) { return std::isfinite(x); }
 bool positive(double x) { return std::isfinite(x) && x > 0; }
-bool step(double x) { return positive(x) && x >= finest_step; }  // as the commands' --dt
+bool step(double x) { return valid_step(x); }  // as the commands' --dt
 bool on_bat(double x) { return std::isfinite(x) && x >= 0; }  // the bats' lengths: check_on_bats
 bool non_positive(double x) { return std::isfinite(x) && x <= 0; }
 bool cor_speed(double x) { return x >= 0 && x <= max_cor_law_speed; }
@@ -37,7 +37,6 @@ bool total_accuracy(double x) { return x >= min_accuracy && x <= max_accuracy; }
 bool air_temperature(double x) { return x > min_air_temperature && x < max_air_temperature; }
 bool elevation(double x) { return x > -1000 && x < 10000; }
 bool humidity(double x) { return x >= 0 && x <= 100; }
-bool non_negative(double x) { return std::isfinite(x) && x >= 0; }
 
 constexpr KeySpec keys[] = {
     {"bat", Type::bat, "a bat file path (relative to the study file)", any,
@@ -107,13 +106,13 @@ constexpr KeySpec keys[] = {
     // The air the batted ball flies through (flight/air.hpp), for the flight's outputs.
     {"temperature", Type::number, air_temperature_expected, air_temperature,
      [](GridPoint& p, double x) { p.air.temperature = x; }, impact, 0, true, Dimension::temperature},
-    {"pressure", Type::number, "a finite pressure > 0 (reduced to sea level)", positive,
+    {"pressure", Type::number, air_pressure_expected, valid_air_pressure,
      [](GridPoint& p, double x) { p.air.pressure = x; }, impact, 0, true, Dimension::pressure},
     {"altitude", Type::number, "an elevation between -1000 m and 10000 m", elevation,
      [](GridPoint& p, double x) { p.air.elevation = x; }, impact, 0, true, Dimension::length},
     {"humidity", Type::number, "a relative humidity from 0 to 100 (%)", humidity,
      [](GridPoint& p, double x) { p.air.relative_humidity = x / 100; }, impact},
-    {"wind_speed", Type::number, "a finite speed >= 0", non_negative,
+    {"wind_speed", Type::number, wind_speed_expected, valid_wind_speed,
      [](GridPoint& p, double x) { p.air.wind_speed = x; }, impact, 0, true, Dimension::speed},
     {"wind_direction", Type::number, "a finite angle (deg, where the wind blows toward; 0 out to centre field)", finite,
      [](GridPoint& p, double x) { p.air.wind_direction = x; }, impact, 0, true, Dimension::angle},
@@ -125,7 +124,7 @@ constexpr KeySpec keys[] = {
      [](GridPoint& p, double x) { p.scene.oblique.friction = x; }, impact},
     {"modes", Type::modes, "a number of vibrational modes >= 0, \"all\" or \"auto\"", mode_count,
      [](GridPoint& p, double x) { p.scene.vibrational_modes = static_cast<int>(x); }, bat_kinds},
-    {"mode_tolerance", Type::number, "a finite number > 0 (relative vf error allowed the dropped modes)", positive,
+    {"mode_tolerance", Type::number, mode_tolerance_expected, valid_mode_tolerance,
      [](GridPoint& p, double x) { p.scene.mode_tolerance = x; }},
     {"accuracy", Type::number, accuracy_expected, total_accuracy,
      [](GridPoint& p, double x) { p.scene.accuracy = x; }, bat_kinds},
@@ -138,7 +137,9 @@ constexpr KeySpec keys[] = {
      [](GridPoint& p, double x) { p.scene.integrator.method = static_cast<Method>(x); }, ball_kinds, 0, false},
     {"tolerance", Type::number, "a finite number > 0 (relative error per step, dopri)", positive,
      [](GridPoint& p, double x) { p.scene.integrator.tolerance = x; }, ball_kinds},
-    {"dt", Type::number, "a finite number >= 5e-9 (s; a finer step could take over 1e7 steps per contact)", step,
+    {"dt", Type::number,
+     "a number in [5e-9, 1e-3] (s; a finer step could take over 1e7 steps per contact, a coarser one steps over it)",
+     step,
      [](GridPoint& p, double x) { p.scene.integrator.dt = x; }, ball_kinds},
     {"window", Type::number, "a finite number > 0 (s)", positive,
      [](GridPoint& p, double x) { p.scene.integrator.window = x; }, ball_kinds},

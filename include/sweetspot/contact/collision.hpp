@@ -82,6 +82,10 @@ inline constexpr double max_contact_steps = 1e7;
 // The finest step (s) a user may give the fixed-step methods: one that could take more than
 // max_contact_steps to cover max_contact_time is refused before any work.
 inline constexpr double finest_step = CollisionOptions{}.max_contact_time / max_contact_steps;
+// The coarsest: a baseball's contact lasts about a millisecond, and a step that long steps over it
+// (a mistyped 1e300 overflowed: status non_finite).
+inline constexpr double coarsest_step = 1e-3;
+inline bool valid_step(double dt) { return dt >= finest_step && dt <= coarsest_step; }
 
 // unbalanced: integrated, but the energy balance is off by more than 1 % (impact.hpp).
 // no_contact: ball and struck point never approach (closing speed <= 0 at first touch): there is

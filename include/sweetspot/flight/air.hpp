@@ -49,6 +49,13 @@ inline constexpr double standard_pressure = 101325;                // Pa
 inline constexpr double min_air_temperature = 173.15, max_air_temperature = 373.15;  // -100 C, 100 C
 inline constexpr const char* air_temperature_expected =
     "an absolute temperature above 173.15 K (-100 C) and below 373.15 K (100 C)";
+// Sea-level pressures on record lie from 87 to 108 kPa, the strongest gusts at about 110 m/s; far
+// outside, the ball never landed (1e300 of either) or the air had no density left beside its vapour
+// (a pressure of 1e-300, which was then laid at the humidity's door).
+inline constexpr const char* air_pressure_expected = "a sea-level pressure from 50 to 150 kPa (Pa)";
+inline bool valid_air_pressure(double pa) { return pa >= 50e3 && pa <= 150e3; }
+inline constexpr const char* wind_speed_expected = "a speed from 0 to 120 m/s";
+inline bool valid_wind_speed(double v) { return v >= 0 && v <= 120; }
 inline constexpr double pressure_decay_per_metre = 1.217e-4;       // beta, 1/m (the calculator's)
 inline constexpr double dry_air_gas_constant = 287.058;            // R_d, J/(kg K)
 

@@ -40,6 +40,12 @@ inline constexpr AccuracyExclusion accuracy_exclusions[] = {
     {"slices", "accuracy", "the slices"}};
 inline constexpr const char* accuracy_expected =
     "a number from 1e-7 to 0.1 (total relative vf error: slicing, modes and step)";
+// auto's mode_tolerance, wherever it is given: past 0.1 of v_f a tolerance says nothing (1e300 kept
+// no mode on the command line and failed every point of a study), and below round-off neither
+// (1e-300 overflowed the finer slicings' requests: a slicing estimate of 0.23 where it is 1.5e-5).
+inline constexpr const char* mode_tolerance_expected =
+    "a number from 1e-15 to 0.1 (relative vf error allowed the dropped modes)";
+inline bool valid_mode_tolerance(double x) { return x >= 1e-15 && x <= 0.1; }
 
 // What a swing's omega must be, wherever it is given (--omega, a study's omega, omega=, an
 // optimisation's [player]): v_bat(z) = V_cm + Omega (z - z_cm) with +y toward the ball, so a swing

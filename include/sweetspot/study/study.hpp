@@ -59,8 +59,8 @@
 //            Failed points give NaN.
 //   Every value is checked before any work: types, the rules of validate() in scene.cpp, z and
 //   probes on every bat, modes within what every (bat, slices, theory) discretisation has, no repeated
-//   axis values, bats with distinct names, at most 1e6 values per axis and 1e9 points, dt >= 5e-9 s
-//   (finest_step), RK4 stable for every kept mode at every step unless accuracy is given, and
+//   axis values, bats with distinct names, at most 1e6 values per axis and 1e9 points, 5e-9 s <= dt <= 1e-3 s
+//   (finest_step, coarsest_step), RK4 stable for every kept mode at every step unless accuracy is given, and
 //   results that fit in the machine's memory (study_memory.hpp).
 #include <cstddef>
 #include <filesystem>
