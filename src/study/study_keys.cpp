@@ -20,7 +20,6 @@ namespace {
 bool any(double) { return true; }
 bool finite(double x) { return std::isfinite(x); }
 bool positive(double x) { return std::isfinite(x) && x > 0; }
-bool step(double x) { return valid_step(x); }  // as the commands' --dt
 bool on_bat(double x) { return std::isfinite(x) && x >= 0; }  // the bats' lengths: check_on_bats
 bool non_positive(double x) { return std::isfinite(x) && x <= 0; }
 bool cor_speed(double x) { return x >= 0 && x <= max_cor_law_speed; }
@@ -139,7 +138,7 @@ constexpr KeySpec keys[] = {
      [](GridPoint& p, double x) { p.scene.integrator.tolerance = x; }, ball_kinds},
     {"dt", Type::number,
      "a number in [5e-9, 1e-3] (s; a finer step could take over 1e7 steps per contact, a coarser one steps over it)",
-     step,
+     valid_step,  // as the commands' --dt
      [](GridPoint& p, double x) { p.scene.integrator.dt = x; }, ball_kinds},
     {"window", Type::number, "a finite number > 0 (s)", positive,
      [](GridPoint& p, double x) { p.scene.integrator.window = x; }, ball_kinds},
