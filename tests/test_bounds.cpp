@@ -76,6 +76,14 @@ TEST_CASE("An option that is not a number says that a number was expected", "[bo
                   {"impact: --accuracy = abc: expected a number"});
 }
 
+TEST_CASE("An empty value is refused naming its option, not read as the default", "[bounds]") {
+  // --swing-tilt "" ran at the default tilt; --bat "" said ": file not found".
+  require_refused(run_program("impact --bat " + r161 + " --z 0.7" + scene + " --swing-tilt ''"),
+                  {"impact: --swing-tilt \"\": expected a value, not an empty string"});
+  require_refused(run_program("impact --bat '' --z 0.7" + scene), {"impact: --bat \"\": expected a value"});
+  require_refused(run_program("certify ''"), {"certify: an empty argument: expected a value"});
+}
+
 TEST_CASE("A mode tolerance outside 1e-15 to 0.1 is refused, on the command line and in a study", "[bounds]") {
   // 1e300 kept no mode on the command line (its error estimate infinite) and failed every point
   // of a study; 1e-300 overflowed the finer slicings' requests (a slicing estimate of 0.23).

@@ -8,6 +8,24 @@
 #include "sweetspot/input_error.hpp"
 #include "sweetspot/version.hpp"
 
+namespace {
+
+// An empty value reads as none: some options then kept their default silently (--swing-tilt ""),
+// others said ": file not found" (--bat ""). Refused as any bad input, naming the option. An empty
+// output path has its own refusal, with the output's other checks (output_paths.hpp).
+std::string empty_argument(int argc, char** argv) {
+  for (int i = 2; i < argc; ++i) {
+    if (argv[i][0] != '\0') continue;
+    const std::string before = argv[i - 1];
+    if (before == "-o" || before == "--output") continue;
+    const std::string what = before.starts_with("-") ? before + " \"\"" : std::string("an empty argument");
+    return std::string(argv[1]) + ": " + what + ": expected a value, not an empty string";
+  }
+  return "";
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   CLI::App app{"sweetspot: the ball-bat collision of Nathan, Am. J. Phys. 68, 979 (2000)"};
   app.set_version_flag("--version", std::string(sweetspot::version) + " (" + sweetspot::git_commit + ")");
@@ -22,6 +40,11 @@ int main(int argc, char** argv) {
   sweetspot::app::add_certify_command(app);
   sweetspot::app::add_optimize_command(app);
   sweetspot::app::add_flight_command(app);
+  if (const std::string empty = empty_argument(argc, argv); !empty.empty()) {
+    std::fprintf(stderr, "sweetspot: error: %s (see sweetspot %s --help)\n", sweetspot::app::printable(empty).c_str(),
+                 argv[1]);
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
