@@ -69,21 +69,24 @@ TEST_CASE("impact refuses --accuracy beside what it chooses, naming both", "[cli
 
 TEST_CASE("impact refuses a step accuracy of 0, below 0 or NaN, and a total one outside [1e-7, 0.1]",
           "[cli][accuracy]") {
-  // The value as written, an empty one too (which the option reads as 0).
-  const std::pair<std::string, std::string> values[] = {
-      {"0", "'0'"}, {"-1e-4", "'-1e-4'"}, {"nan", "'nan'"}, {"''", "''"}};
+  // The value as written. An empty one (which the option would read as 0) is refused as every
+  // empty value is, before the options are read.
+  const std::pair<std::string, std::string> values[] = {{"0", "'0'"}, {"-1e-4", "'-1e-4'"}, {"nan", "'nan'"}};
   for (const auto& [value, shown] : values) {
     INFO(value);
     require_refused(run_program(impact + " --step-accuracy " + value),
                     {"impact: --step-accuracy " + shown +
                      ": expected a finite number > 0 (relative vf error the integration may add)"});
   }
-  for (const std::string value : {"0", "-1e-4", "nan", "1e-8", "0.2", ""}) {
+  for (const std::string value : {"0", "-1e-4", "nan", "1e-8", "0.2"}) {
     INFO(value);
     require_refused(run_program(impact + " --accuracy '" + value + "'"),
                     {"impact: --accuracy '" + value + "': expected a number from 1e-7 to 0.1",
                      "(total relative vf error"});
   }
+  for (const std::string option : {"--step-accuracy", "--accuracy"})
+    require_refused(run_program(impact + " " + option + " ''"),
+                    {"impact: " + option + " \"\": expected a value, not an empty string"});
   // N2000's preset keeps 18 modes, which no accuracy can hold: named as the user gave it.
   require_refused(run_program(impact + " --accuracy 1e-3 --n2000"),
                   {"impact: --n2000 keeps N2000's 18 modes, which cannot be held to --accuracy"});

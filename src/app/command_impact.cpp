@@ -302,7 +302,7 @@ void resolve_integrator(const CLI::App& cmd, CollisionOptions& options) {
 // --accuracy (the total) and --step-accuracy, as a study's keys: each in its range, and neither
 // beside what it chooses itself (it would be silently overridden).
 void check_accuracy(const CLI::App& cmd, const ImpactScene& scene) {
-  // The value as written (an empty one reads as 0).
+  // The value as written (an empty one is refused before: main.cpp).
   const auto value = [&cmd](const char* name) { return "'" + cmd.get_option(name)->results().front() + "'"; };
   if (cmd.count("--accuracy") && !(scene.accuracy >= min_accuracy && scene.accuracy <= max_accuracy))
     throw InputError(cmd.get_name() + ": --accuracy " + value("--accuracy") + ": expected " + accuracy_expected);
