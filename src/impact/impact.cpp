@@ -387,8 +387,7 @@ ImpactResult simulate_impact(const ModalBasis& basis, const ImpactScene& stated)
     r.step_error = step_error_estimate(scene, *solved, g, c);
     r.total_error = r.modes_error + r.step_error + r.slicing_error;  // NaN until the caller adds the slicing's
   }
-  if (c.status == CollisionStatus::refused_step) return r;
-  if (!has_values(c.status)) {  // nothing happened, or nothing to report
+  if (!has_values(c.status)) {  // nothing happened, nothing to report, or a step refused
     const double nan = std::nan("");
     r.vf = r.contact_time = r.collision_time = r.u_max = r.peak_force = r.impulse = nan;
     r.e_eff = nan;
