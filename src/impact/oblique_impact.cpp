@@ -107,7 +107,7 @@ namespace {
 // the bodies put in. Sliding lets go of that stretch; a grip that never slides keeps it. Over R161's
 // barrel (50-80 cm, 10 and 40 m/s, undercut 0.5-4 cm, 0 and 2000 rpm) the friction's loss was
 // positive at every point for mu up to 0.5, and negative at 1 of 80 points for mu = 1 (1e-5 of the
-// initial energy), 4 for 1.5 and 13 for 5 (5e-3): such a result is not ok.
+// initial energy), 4 for 1.5 and 13 for 5 (5e-3; scripts/friction_energy): such a result is not ok.
 constexpr double friction_gain_limit = 1e-6;  // of the initial energy: the balance's rounding
 
 void refuse_energy_from_friction(ImpactResult& r) {

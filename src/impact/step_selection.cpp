@@ -56,16 +56,16 @@ double on_step_grid(double dt) { return 1e-6 * std::exp2(std::floor(8 * std::log
 // up to 2.1 of it below 70 m/s and 7 of it past it.
 constexpr double modelled_closing_speed = 130;
 
-// A hollow barrel's wall is a stiff spring in series with the ball (docs/hollow-barrels.md), ringing at
-// the hoop frequency while the ball presses it, and the force follows that ringing. A step longer
-// than its period aliases it: the error stops falling with the step and scatters (1e-6 to 1.5e-4
-// of v_f here) wherever the step nears or passes the period, beyond what the models above and step
-// doubling see (the steps' ends show one force maximum). Measured with the accuracies' steps on
-// aluminium, alloy_bbcor and composite_bbcor (20-99 % of their length, 1-150 m/s, e0 0.4-0.8,
-// 1e-6 to 1e-3; 7 560 whole impacts against exact stepping at 0.1 us): up to 1.66x the accuracy
-// (aluminium at 21.8 cm and 1 m/s at 1e-6, a 35 us step against a 37 us period; composite_bbcor
-// at 16.8 cm and 40 m/s at 1e-4, 45 against 42 us). So the step is held to half the wall's period: then
-// within 0.86x.
+// A hollow barrel's wall is a stiff spring in series with the ball (docs/hollow-barrels.md),
+// ringing at the hoop frequency while the ball presses it, and the force follows that ringing. A
+// step near or past its period aliases it: the error stops falling with the step and scatters
+// (1e-6 to 1.5e-4 of v_f here), beyond what the models above and step doubling see (the steps'
+// ends show one force maximum). With the models' steps alone, over aluminium, alloy_bbcor and
+// composite_bbcor (20-99 % of their length, 1-150 m/s, e0 0.4-0.8, 1e-6 to 1e-3; 7 560 whole
+// impacts against exact stepping at 0.1 us, scripts/hollow_step_accuracy), up to 1.66x the
+// accuracy (aluminium at 21.8 cm and 1 m/s at 1e-6, a 35 us step against a 37 us period;
+// composite_bbcor at 16.8 cm and 40 m/s at 1e-4, 45 against 42 us). Held to half the wall's
+// period, within 0.86x.
 double wall_resolving_step(double omega_wall) { return on_step_grid(std::numbers::pi / omega_wall); }
 
 }  // namespace
