@@ -184,6 +184,13 @@ for call, fragments in [
         (lambda: sweetspot.impact(bat, **swing, accuracy=1e-4, step_accuracy=1e-5), ["step_accuracy", "accuracy"]),
         (lambda: sweetspot.impact(bat, **swing, accuracy=1e-4, tolerance=1e-8), ["tolerance", "accuracy"]),
         (lambda: sweetspot.impact(bat, **swing, accuracy=1e-4, modes=10), ["modes", "accuracy"]),
+        # dopri alone reads a tolerance, modes="auto" alone a mode tolerance: elsewhere each was ignored.
+        (lambda: sweetspot.impact(bat, **swing, tolerance=1e-8), ["tolerance", "1e-08", "integrator=\"dopri\"",
+                                                                  "(exact steps at dt)"]),
+        (lambda: sweetspot.impacts(bat, **swing, integrator="rk4", tolerance=1e-8), ["tolerance", "(rk4 steps"]),
+        (lambda: sweetspot.impact(bat, **swing, modes=10, mode_tolerance=1e-5), ["mode_tolerance", "modes=\"auto\"",
+                                                                               "(modes=10 keeps a fixed set)"]),
+        (lambda: sweetspot.impacts(bat, **swing, n2000=True, mode_tolerance=1e-5), ["mode_tolerance", "(n2000 keeps"]),
         (lambda: sweetspot.impact(bat, **swing, pivot="yes"), ["pivot", "'yes'", "True or False"]),
         (lambda: sweetspot.impact(bat, **swing, n2000="no"), ["n2000", "'no'"]),
         (lambda: sweetspot.impact(bat, **swing, modes=10 ** 20), ["modes", "100000000000000000000"]),

@@ -45,6 +45,13 @@ check("trajectory" not in sweetspot.flight(40, 30), "no trajectory unless asked"
 check(refused(lambda: sweetspot.flight(-1, 30), "speed"), "negative speed")
 check(refused(lambda: sweetspot.flight(float("nan"), 30), "speed"), "NaN speed")
 check(refused(lambda: sweetspot.flight(40, 30, humidity=150), "humidity"), "humidity above 100 %")
+# Humidity as the command line takes it: a number of per cent, with or without "%".
+for written in ("20%", "20 %", "20"):
+    check(sweetspot.flight(40, 30, humidity=written) == sweetspot.flight(40, 30, humidity=20), f"humidity {written!r}")
+check(refused(lambda: sweetspot.flight(40, 30, humidity="20 percent"), "humidity"), "humidity in words")
+check(refused(lambda: sweetspot.flight(40, 30, humidity="150%"), "humidity"), "humidity above 100 % as text")
+check(refused(lambda: sweetspot.flight(40, 30, direction=1e300), "direction", "-360 to 360"), "a direction past a turn")
+check(refused(lambda: sweetspot.flight(40, 30, wind_direction=-400), "wind_direction"), "a wind past a turn")
 check(refused(lambda: sweetspot.flight(40, 30, pressure=-5), "pressure"), "negative pressure")
 # Far outside the records the ball never landed (1e300) or the fault was laid at the humidity (1e-300).
 check(refused(lambda: sweetspot.flight(40, 30, pressure=1e-300), "pressure"), "a pressure of nothing")

@@ -301,6 +301,9 @@ TEST_CASE("sweetspot flight refuses unphysical air and launches in one line, as 
   require_refused(run_program("flight --speed 40 --temperature 70mph"), {"--temperature \"70mph\"", "units K, C, F"});
   require_refused(run_program("flight --speed 40 --angle 100"), {"--angle \"100\"", "-90 to 90"});
   require_refused(run_program("flight --speed 40 --wind-direction nan"), {"--wind-direction \"nan\""});
+  // 1e300 deg flew as some direction a sine made of it.
+  require_refused(run_program("flight --speed 40 --direction 1e300"), {"--direction \"1e300\"", "-360 to 360 deg"});
+  require_refused(run_program("flight --speed 40 --wind-direction -361"), {"--wind-direction \"-361\""});
   require_refused(run_program("flight --speed 40 --spin-decay-time 0"), {"--spin-decay-time"});
   // Past these no flight landed within its minute: refused before any work, not failed after it.
   require_refused(run_program("flight --speed 40 --spin-decay-time 1e-9"), {"--spin-decay-time", ">= 0.01 s"});

@@ -165,6 +165,41 @@ TEST_CASE("A tolerance beside a stated accuracy is refused, by impact and by a s
   CHECK_FALSE(std::filesystem::exists(dir / "out.h5.journal"));
 }
 
+// dopri alone reads a tolerance, and modes = auto alone a mode tolerance: given beside another
+// integrator, or beside a fixed set of modes, either was silently ignored (--tolerance 1e-12 ran
+// at exact's 10 us step). Refused like the pairs above; beside what reads them, each runs.
+TEST_CASE("A tolerance no integrator reads, or a mode tolerance no mode choice reads, is refused",
+          "[cli][study][accuracy]") {
+  require_refused(run_program(impact + " --tolerance 1e-12"),
+                  {"impact: --tolerance 1e-12: expected --integrator dopri beside it", "(exact steps at --dt)",
+                   "or --step-accuracy instead"});
+  require_refused(run_program(impact + " --integrator rk4 --tolerance 1e-12"), {"(rk4 steps at --dt)"});
+  require_refused(run_program("wall --speed 40 --tolerance 1e-12"), {"wall: --tolerance 1e-12", "--integrator dopri"});
+  require_refused(run_program(impact + " --modes 10 --mode-tolerance 1e-5"),
+                  {"impact: --mode-tolerance 1e-5: expected --modes auto beside it", "(--modes 10 keeps a fixed set)"});
+  require_refused(run_program(impact + " --modes all --mode-tolerance 1e-5"), {"(--modes all keeps a fixed set)"});
+  require_refused(run_program(impact + " --n2000 --mode-tolerance 1e-5"), {"(--n2000 keeps a fixed set)"});
+  for (const std::string read : {" --integrator dopri --tolerance 1e-8", " --modes auto --mode-tolerance 1e-5",
+                                 " --n2000 --modes auto --mode-tolerance 1e-5"}) {
+    INFO(read);
+    CHECK(run_program(impact + read).exit_code == 0);
+  }
+  TempDir dir;
+  require_refused(run_study(dir, "tolerance = 1e-12\n"),
+                  {"key 'scene.tolerance' = 1e-12: expected integrator = \"dopri\" beside it", "(the default steps"});
+  require_refused(run_study(dir, "integrator = \"rk4\"\ntolerance = 1e-12\n"), {"(key 'scene.integrator' steps"});
+  require_refused(run_study(dir, "mode_tolerance = 1e-5\n"),
+                  {"key 'scene.mode_tolerance' = 1e-05: expected modes = \"auto\" beside it",
+                   "(key 'scene.modes' keeps a fixed set)"});
+  require_refused(run_study(dir, "mode_tolerance = 1e-5\n", "", "\"all\""), {"'scene.mode_tolerance'"});
+  CHECK(text_of(dir / "out.h5") == "an earlier result");
+  CHECK_FALSE(std::filesystem::exists(dir / "out.h5.journal"));
+  // Where some point reads it (an axis of modes with auto among them), it is read there.
+  const ProgramRun mixed = run_study(dir, "mode_tolerance = 1e-5\n", "modes = [10, \"auto\"]\n", "\"auto\"");
+  INFO(mixed.output);
+  CHECK(mixed.exit_code == 0);
+}
+
 TEST_CASE("A study's inaccurate point keeps its result and estimates, which say how close it came",
           "[study][accuracy]") {
   // Euler-Bernoulli cannot be cut past 400 slices: from R161's 84, the ladder stops at 336, short

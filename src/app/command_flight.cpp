@@ -70,6 +70,7 @@ double read(const std::string& key, const QuantityText& q) {
   if (!q.dimension) {  // humidity: a number of percent, "50" or "50%"
     std::string_view text = q.text;
     if (text.ends_with('%')) text.remove_suffix(1);
+    while (text.ends_with(' ')) text.remove_suffix(1);  // "50 %" as "50%"
     const std::optional<double> percent = plain_number(text);
     if (!percent) throw InputError(head + "a relative humidity in % (a number from 0 to 100)");
     return *percent / 100;

@@ -279,17 +279,26 @@ void resolve_ball(const CLI::App& cmd, const std::string& named_ball, Ball& ball
   // The ball's ranges, as a [ball] table and a study take them (ball_tests.hpp), before any work.
   // A named ball is in range (load_ball): what is not came from an option.
   if (const auto outside = ball_out_of_range(ball)) {
-    const std::map<std::string, std::string> options = {
-        {"ball_mass", "--ball-mass"}, {"ball_radius", "--ball-radius"}, {"k1", "--k1"}, {"a", "--a"}, {"e0", "--e0"}};
+    // Each option's SI unit: a value given with another ("9oz") reaches here in SI.
+    const std::map<std::string, std::pair<std::string, std::string>> options = {
+        {"ball_mass", {"--ball-mass", " kg"}}, {"ball_radius", {"--ball-radius", " m"}}, {"k1", {"--k1", ""}},
+        {"a", {"--a", ""}}, {"e0", {"--e0", ""}}};
+    const auto& [option, unit] = options.at(outside->key);
     char value[32];
     std::snprintf(value, sizeof value, "%.10g", outside->value);
-    throw InputError(cmd.get_name() + ": " + options.at(outside->key) + " " + value + ": " + outside->expected());
+    throw InputError(cmd.get_name() + ": " + option + " " + value + unit + ": " + outside->expected());
   }
 }
 
 void resolve_integrator(const CLI::App& cmd, CollisionOptions& options) {
   if (cmd.count("--n2000") && cmd.count("--integrator") == 0) options = with_n2000_settings(options);
   if (cmd.count("--dt") == 0) options.dt = default_step(options.method);
+  // dopri alone reads a tolerance: beside another integrator it would be silently ignored.
+  if (cmd.count("--tolerance") && options.method != Method::dopri)
+    throw InputError(cmd.get_name() + ": --tolerance " + cmd.get_option("--tolerance")->results().front() +
+                     ": expected --integrator dopri beside it, the one integrator that reads a tolerance (" +
+                     to_string(options.method) + " steps at --dt): give --integrator dopri" +
+                     (cmd.get_option_no_throw("--step-accuracy") ? ", or --step-accuracy instead" : ""));
   // As history_step is bounded: a mistyped step would take billions of steps and their memory.
   if (!valid_step(options.dt)) {
     char text[200];
@@ -396,8 +405,8 @@ void add_impact_command(CLI::App& app) {
     o->units.check_text_output("impact", o->json);
     check_accuracy(*cmd, o->scene);
     if (!valid_omega(o->scene.swing.omega)) {
-      char value[32];
-      std::snprintf(value, sizeof value, "%.10g", o->scene.swing.omega);
+      char value[40];  // in rad/s, with its unit: "-480rpm" reaches here as -50.27 rad/s
+      std::snprintf(value, sizeof value, "%.10g rad/s", o->scene.swing.omega);
       throw InputError(std::string("impact: --omega ") + value + ": expected " + omega_expected);
     }
     check_oblique_options(o->scene.oblique);
@@ -409,6 +418,12 @@ void add_impact_command(CLI::App& app) {
                          "auto or all beside it, or no --n2000");
       o->modes = std::to_string(n2000_modes);
     }
+    // auto alone reads a mode tolerance: beside a fixed set it would be silently ignored.
+    if (cmd->count("--mode-tolerance") && parse_modes(o->modes) != auto_modes)
+      throw InputError("impact: --mode-tolerance " + cmd->get_option("--mode-tolerance")->results().front() +
+                       ": expected --modes auto beside it, the one choice of modes that reads a tolerance (" +
+                       (cmd->count("--modes") ? "--modes " + o->modes : std::string("--n2000")) +
+                       " keeps a fixed set): give --modes auto, or no --mode-tolerance");
     if (!o->cm_speed && !o->center) throw InputError("impact: give the swing as --cm-speed or as --center");
     run_impact(*o);
   });

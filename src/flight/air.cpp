@@ -34,8 +34,8 @@ std::optional<InputProblem> air_problem(const Air& air) {
   if (!(air.relative_humidity >= 0 && air.relative_humidity <= 1))
     return InputProblem{"humidity", 100 * air.relative_humidity, "a relative humidity from 0 to 100 %"};
   if (!valid_wind_speed(air.wind_speed)) return InputProblem{"wind_speed", air.wind_speed, wind_speed_expected};
-  if (!std::isfinite(air.wind_direction))
-    return InputProblem{"wind_direction", air.wind_direction, "a finite angle in deg"};
+  if (!(std::abs(air.wind_direction) <= 360))  // as a launch's direction (flight_inputs.cpp)
+    return InputProblem{"wind_direction", air.wind_direction, "an angle from -360 to 360 deg"};
   // Air so hot and humid that its vapour would exceed its pressure is not air.
   if (!(air_density(air) > 0))
     return InputProblem{"humidity", 100 * air.relative_humidity, "a humidity whose vapour pressure is below the air's"};

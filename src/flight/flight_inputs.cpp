@@ -14,7 +14,9 @@ std::optional<InputProblem> launch_problem(const Launch& launch) {
     return InputProblem{"speed", launch.speed, "a speed from 0 to 1000 m/s"};
   if (!(launch.angle >= -90 && launch.angle <= 90))
     return InputProblem{"angle", launch.angle, "an angle from -90 to 90 deg above the horizontal"};
-  if (!std::isfinite(launch.direction)) return InputProblem{"direction", launch.direction, "a finite angle in deg"};
+  // Past a turn either way a direction says nothing more (1e300 deg is no direction a sine can read).
+  if (!(std::abs(launch.direction) <= 360))
+    return InputProblem{"direction", launch.direction, "an angle from -360 to 360 deg"};
   if (!(std::abs(launch.backspin) <= max_spin))
     return InputProblem{"backspin", launch.backspin, "a spin from -1e5 to 1e5 rpm (-10472 to 10472 rad/s)"};
   if (!(std::abs(launch.sidespin) <= max_spin))

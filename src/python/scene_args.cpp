@@ -282,6 +282,17 @@ SceneArgs scene_from(const SceneValues& values, const std::set<std::string>& per
     throw InputError(text);
   }
   s.vibrational_modes = has(arg::modes) ? parse_modes(get(arg::modes)) : n2000 ? n2000_modes : auto_modes;
+  // dopri alone reads a tolerance, and auto alone a mode tolerance: beside another integrator or a
+  // fixed set of modes either would be silently ignored.
+  if (has(arg::tolerance) && s.integrator.method != Method::dopri)
+    throw InputError("impact: tolerance " + py::repr(get(arg::tolerance)).cast<std::string>() +
+                     ": expected integrator=\"dopri\" beside it, the one integrator that reads a tolerance (" +
+                     to_string(s.integrator.method) + " steps at dt): give integrator=\"dopri\", or step_accuracy");
+  if (has(arg::mode_tolerance) && s.vibrational_modes != auto_modes)
+    throw InputError("impact: mode_tolerance " + py::repr(get(arg::mode_tolerance)).cast<std::string>() +
+                     ": expected modes=\"auto\" beside it, the one choice of modes that reads a tolerance (" +
+                     (has(arg::modes) ? "modes=" + py::repr(get(arg::modes)).cast<std::string>() : std::string("n2000")) +
+                     " keeps a fixed set): give modes=\"auto\", or no mode_tolerance");
   return out;
 }
 

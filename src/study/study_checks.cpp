@@ -41,6 +41,24 @@ void check_wall_speeds(const Settings& s) {
       reject(speed.where, speed.value_text(i), "expected a speed > 0 (m/s) toward the wall, which does not move");
 }
 
+// A key that only one setting reads, given where no point has that setting, would be silently
+// ignored: dopri alone reads `tolerance`, and modes = "auto" alone reads `mode_tolerance`.
+void check_unread_keys(const Settings& s) {
+  const Setting *tolerance = s["tolerance"], *integrator = s["integrator"];
+  const double default_method = static_cast<double>(s["preset"] ? Method::rk4 : Method::exact);
+  if (tolerance && !std::ranges::count(s.values("integrator", default_method), static_cast<double>(Method::dopri)))
+    reject(tolerance->where, tolerance->value_text(0),
+           "expected integrator = \"dopri\" beside it, the one integrator that reads a tolerance (" +
+               (integrator ? "key '" + integrator->where.key + "'" : std::string("the default")) +
+               " steps at dt): give integrator = \"dopri\", or step_accuracy instead");
+  const Setting *mode_tolerance = s["mode_tolerance"], *modes = s["modes"];
+  if (mode_tolerance && !std::ranges::count(s.values("modes", default_mode_count(s)), static_cast<double>(auto_modes)))
+    reject(mode_tolerance->where, mode_tolerance->value_text(0),
+           "expected modes = \"auto\" beside it, the one choice of modes that reads a tolerance (" +
+               (modes ? "key '" + modes->where.key + "'" : std::string("the n2000 preset")) +
+               " keeps a fixed set): give modes = \"auto\", or no mode_tolerance");
+}
+
 namespace {
 
 void check_swing(const Settings& s, const Where& top) {
@@ -375,6 +393,7 @@ void check_rig_fits(const Settings& s, const std::vector<Bat>& bats, const std::
 void check_bat_scene(Study& study, const Settings& s, const Where& top) {
   const Setting& bat = *s["bat"];
   check_step_or_accuracy(s);
+  check_unread_keys(s);
   if (study.kind == StudyKind::certification) {  // the rig holds each bat at rest: no swing, no point
     load_bat_files(study, bat);
     const std::vector<std::string> labels = build_designs(study, s, bat);

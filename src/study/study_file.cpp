@@ -80,7 +80,7 @@ Study load(const fs::path& file, std::string text, const SampledKeys* sampled) {
   check_grid_size(s, top);
   check_required(s, top, study.kind);
   if (has_bat(study.kind)) check_bat_scene(study, s, top);
-  if (study.kind == StudyKind::wall) check_wall_speeds(s), check_history_samples(s);
+  if (study.kind == StudyKind::wall) check_wall_speeds(s), check_unread_keys(s), check_history_samples(s);
   study.outputs = read_outputs(top, doc, s, study.kind);
   study.sweet_spot_fraction = read_sweet_spot_fraction(top, doc);
   study.sweet_spot_of = read_sweet_spot_of(top, doc);

@@ -95,6 +95,9 @@ void check_grid_size(const Settings& s, const Where& top);
 void check_required(const Settings& s, const Where& top, StudyKind kind);
 // The wall stands still, so only a ball moving toward it (speed > 0) ever touches it.
 void check_wall_speeds(const Settings& s);
+// dopri alone reads `tolerance`, modes = "auto" alone `mode_tolerance`: beside no point that reads
+// it, either is refused.
+void check_unread_keys(const Settings& s);
 void check_history_samples(const Settings& s);
 // The impact kind's checks across keys: the swing, the bat files (loaded into `study`), z on
 // every bat, mode counts, Euler-Bernoulli's slices, RK4's stability.

@@ -18,6 +18,7 @@ that a saved result can be computed again: `impacts_like(xr.open_dataset(path))`
 import functools
 import math
 import os
+import re
 import shutil
 import subprocess
 import tempfile
@@ -372,8 +373,11 @@ def flight(speed, angle=0.0, *, direction=0.0, backspin=0.0, sidespin=0.0, heigh
     and, with samples, trajectory: numpy arrays t, x, y, z, vx, vy, vz."""
     if not isinstance(vacuum, (bool, np.bool_)):
         _refuse("vacuum", vacuum, "True or False")
-    if isinstance(humidity, str):
-        _refuse("humidity", humidity, "a relative humidity in % (a number from 0 to 100)")
+    if isinstance(humidity, str):  # "50" or "50%", as on the command line
+        number = re.fullmatch(r"([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?) *%?", humidity)
+        if not number:
+            _refuse("humidity", humidity, "a relative humidity in % (a number from 0 to 100, or such as \"50%\")")
+        humidity = float(number.group(1))
     args = {name: _real(name, value, dimension) for name, value, dimension in (
         ("speed", speed, "speed"), ("backspin", backspin, "angular speed"), ("sidespin", sidespin, "angular speed"),
         ("height", height, "length"), ("temperature", temperature, "temperature"), ("pressure", pressure, "pressure"),
@@ -595,6 +599,11 @@ def scene_of(result):
         kwargs.pop("dt", None)
         kwargs.pop("tolerance", None)
     if "accuracy" in kwargs:
+        kwargs.pop("mode_tolerance", None)
+    # What the scene's integrator or modes do not read is no argument (impact() refuses it).
+    if kwargs.get("integrator") != "dopri":
+        kwargs.pop("tolerance", None)
+    if kwargs.get("modes", "auto") != "auto":
         kwargs.pop("mode_tolerance", None)
     if hasattr(result, "dims") and "status" in result:  # a dataset: its per-point arguments
         dims = result["status"].dims
