@@ -281,6 +281,12 @@ check(len(sweetspot.impact(bat, **swing, modes=np.int64(18))["modes_kept"]) == 1
       sweetspot.certify(bat, modes=np.int32(18))["bbcor"] == sweetspot.certify(bat, modes=18)["bbcor"], "numpy modes")
 check(refused(lambda: sweetspot.impact(bat, **swing, modes=np.bool_(True)), "modes True", "expected a number"),
       "numpy bool is no mode count")
+# Empty strings are named, quoted, as the arguments Python was given (not as the command line's
+# options, nor ": file not found").
+check(refused(lambda: sweetspot.impact(bat, **swing, modes=""), "modes ''", "expected a number"), "modes ''")
+check(refused(lambda: sweetspot.certify(bat, ""), "standard ''", "\"bbcor\", \"besr\" or \"bpf\"")
+      and refused(lambda: sweetspot.certify(bat, "asa"), "standard 'asa'"), "certify's standard as written")
+check(refused(lambda: sweetspot.Bat.load(""), "path ''", "a bat file's path"), "Bat.load('')")
 
 # 4. The GIL released: two Python threads each run impacts; both finish with the same numbers.
 zs = np.linspace(0.45, 0.84, 3000)

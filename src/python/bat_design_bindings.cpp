@@ -2,6 +2,7 @@
 
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -94,6 +95,9 @@ py::dict certification(const BatHandle& b, const std::string& standard, std::opt
   options.vibrational_modes = parse_modes(modes);
   options.theory = parse_beam_theory(theory);
   options.accuracy = accuracy;
+  if (std::ranges::find(standards(), standard, &Standard::name) == standards().end())  // as Python writes it
+    throw InputError("standard " + py::repr(py::str(standard)).cast<std::string>() +
+                     ": expected \"bbcor\", \"besr\" or \"bpf\"");
   const Standard& s = find_standard(standard);
   Certification c;
   {

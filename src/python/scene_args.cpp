@@ -203,7 +203,7 @@ int parse_modes(const py::handle& value) {
     if (count.attr("__ge__")(0).cast<bool>() && count.attr("__le__")(2 * max_slices).cast<bool>())
       return count.cast<int>();
   }
-  throw InputError("modes " + py::str(value).cast<std::string>() +
+  throw InputError("modes " + py::repr(value).cast<std::string>() +
                    ": expected a number of vibrational modes (0, 1, 2, ...), 'all' or 'auto'");
 }
 

@@ -295,7 +295,11 @@ def _load(path, slices=None):
 
     Parameters: path, the bat file or a shipped bat's name; slices, the number of slices to cut it into (default: its own).
     Returns: a Bat. Raises ValueError naming the file, key and value that are wrong."""
-    return Bat._load(_text("path", path, "a bat file's path or a shipped bat's name", path=True), _slices(slices))
+    expected = "a bat file's path or a shipped bat's name"
+    text = _text("path", path, expected, path=True)
+    if not text:  # as the command line's --bat "": no file's name at all
+        _refuse("path", path, expected)
+    return Bat._load(text, _slices(slices))
 
 
 def _modes(self, count=None, theory="timoshenko"):
