@@ -287,6 +287,9 @@ check(refused(lambda: sweetspot.impact(bat, **swing, modes=""), "modes ''", "exp
 check(refused(lambda: sweetspot.certify(bat, ""), "standard ''", "\"bbcor\", \"besr\" or \"bpf\"")
       and refused(lambda: sweetspot.certify(bat, "asa"), "standard 'asa'"), "certify's standard as written")
 check(refused(lambda: sweetspot.Bat.load(""), "path ''", "a bat file's path"), "Bat.load('')")
+# A key of 60 000 parts overflowed toml++'s stack and killed the interpreter (tests/test_toml_depth.cpp).
+check(refused(lambda: sweetspot.Bat.from_text("x" + ".x" * 60000 + " = 1"), "<text>:1:", "more than 64 parts"),
+      "Bat.from_text with a key of 60 000 parts")
 
 # 4. The GIL released: two Python threads each run impacts; both finish with the same numbers.
 zs = np.linspace(0.45, 0.84, 3000)

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "program.hpp"
 #include "sweetspot/bat/bat_file.hpp"
@@ -101,6 +102,18 @@ TEST_CASE("convergence: the command writes one dataset that xarray opens", "[con
   INFO(plot.output);
   CHECK(plot.exit_code == 0);
   CHECK(std::filesystem::file_size(png) > 10000);
+}
+
+// Every row of its table was NaN and the command exited 0, writing the dataset.
+TEST_CASE("convergence: a scene where the ball never meets the bat is refused", "[convergence][program]") {
+  TempDir dir;
+  const auto study = dir.write("away.toml", "[scene]\nbat = \"" + source_path("studies/bats/r161.toml") +
+                                                "\"\ncenter = 0.09\nomega = 51\nz = 0.7\nball_speed = -40\n");
+  const ProgramRun run = run_program("convergence " + study.string() + " -o " + dir / "away.h5" + " --quick");
+  INFO(run.output);
+  CHECK(run.exit_code == 2);
+  CHECK_THAT(run.output, Catch::Contains("away.toml: the scene: ball and bat never approach"));
+  CHECK_FALSE(std::filesystem::exists(dir / "away.h5"));
 }
 
 TEST_CASE("convergence: a study of another kind is refused with exit status 2", "[convergence][program]") {

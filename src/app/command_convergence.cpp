@@ -11,6 +11,7 @@
 
 #include "commands.hpp"
 #include "sweetspot/bat/bat_file.hpp"
+#include "sweetspot/impact/impact.hpp"
 #include "sweetspot/study/accuracy_sweep.hpp"
 #include "sweetspot/study/convergence.hpp"
 #include "sweetspot/study/dataset.hpp"
@@ -128,6 +129,11 @@ void run(const ConvergenceCommandOptions& o) {
                         ? ModeRequest::all()
                         : impact_mode_request(point.scene, compute_modes(bat, point.theory, ModeRequest::rigid_only())));
 
+  // A point where the ball never meets the bat has nothing to converge: every row would be NaN.
+  if (const ImpactResult probe = simulate_impact(basis, point.scene); probe.status == CollisionStatus::no_contact)
+    throw InputError(o.study + ": " + (study.axes.empty() ? "the scene" : "grid point 0 (" +
+                     describe_point(study, point) + ")") + ": " + probe.message +
+                     ": expected a point where the ball meets the bat");
   const ConvergenceTable table = run_convergence(basis, point.scene, o.quick);
   spdlog::info("{}: z = {:g} m, {} modes kept (rigid included), largest stable RK4 step {:.4g} us{}", bat.name,
                point.scene.z, table.kept_modes, 1e6 * table.rk4_largest_step, o.quick ? " (quick)" : "");

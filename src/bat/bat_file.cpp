@@ -22,6 +22,7 @@
 #include "sweetspot/bat/parameter_bounds.hpp"
 #include "sweetspot/bat/profile.hpp"
 #include "sweetspot/input_error.hpp"
+#include "toml_parse.hpp"
 #include "toml_values.hpp"
 
 namespace sweetspot {
@@ -208,7 +209,7 @@ struct Section {
 
 toml::table parse_toml(const fs::path& file, const std::string& text) {
   try {
-    return toml::parse(text, file.string());
+    return detail::parse_toml_text(text, file.string());
   } catch (const toml::parse_error& e) {
     const toml::source_position& at = e.source().begin;
     fail(at_line(file, static_cast<int>(at.line)) + ":" + std::to_string(at.column),

@@ -272,10 +272,11 @@ void validate_oblique(const ObliqueImpact& o) {
 void validate(const ImpactScene& scene, const ModalBasis& basis) {
   const double length = basis.length();
   if (!lies_on_bat(scene.z, length)) reject_off_bat("z", scene.z, length);
-  require_finite("ball_speed", scene.ball_speed);
+  if (!valid_speed(scene.ball_speed)) reject("ball_speed", scene.ball_speed, std::string("expected ") + speed_expected);
   if (!valid_omega(scene.swing.omega)) reject("omega", scene.swing.omega, std::string("expected ") + omega_expected);
-  require_finite(scene.swing.about_center ? "center" : "cm_speed",
-                 scene.swing.about_center ? scene.swing.center : scene.swing.cm_speed);
+  if (scene.swing.about_center) require_finite("center", scene.swing.center);
+  else if (!valid_speed(scene.swing.cm_speed))
+    reject("cm_speed", scene.swing.cm_speed, std::string("expected ") + speed_expected);
   // The ball's ranges, as a [ball] table and a study's keys take them (ball_tests.hpp).
   if (const auto outside = ball_out_of_range(scene.ball)) reject(outside->key, outside->value, outside->expected());
   if (scene.ball.speed_dependent()) {

@@ -119,12 +119,12 @@ Player read_player(const Where& top, const toml::table& doc, OptimizationProblem
   p.swing.about_center = center;
   if (center)
     p.swing.center = number_key(at, t, "center", 0, finite, "a finite point from the knob", Dimension::length);
-  if (cm) p.swing.cm_speed = number_key(at, t, "cm_speed", 0, finite, "a finite speed", Dimension::speed);
+  if (cm) p.swing.cm_speed = number_key(at, t, "cm_speed", 0, valid_speed, speed_expected, Dimension::speed);
   // The swing turns the barrel toward the ball: v(z) = V_cm + omega (z - z_cm), + toward the ball
   // (scene.hpp), so a batter's omega is >= 0; a negative one would swing the barrel away from the pitch.
   p.swing.omega = required_number(at, t, "omega", valid_omega, omega_expected, Dimension::angular_speed);
-  p.ball_speed = required_number(at, t, "ball_speed", [](double v) { return v >= 0; },
-                                 "the pitch's speed toward the bat, finite and >= 0", Dimension::speed);
+  p.ball_speed = required_number(at, t, "ball_speed", [](double v) { return v >= 0 && valid_speed(v); },
+                                 "the pitch's speed toward the bat, from 0 to 1000 m/s", Dimension::speed);
   // The pitched ball: the file's [ball] table (README "Balls"), N2000's without one; e0 sets its COR.
   if (const toml::node* ball = doc.get("ball")) {
     if (!ball->is_table()) reject(top.child("ball", *ball), describe(*ball), "expected a table [ball]");

@@ -54,7 +54,7 @@ constexpr KeySpec keys[] = {
     {"z", Type::number, "a length >= 0 from the knob", on_bat,
      [](GridPoint& p, double x) { p.scene.z = x; }, impact, impact, true, Dimension::length},
     // The wall takes only speeds > 0: check_wall_speeds.
-    {"ball_speed", Type::number, "a finite speed", finite,
+    {"ball_speed", Type::number, speed_expected, valid_speed,
      [](GridPoint& p, double x) { p.scene.ball_speed = x; }, ball_kinds, ball_kinds, true, Dimension::speed},
     {"e0", Type::number, "a COR, a number in [0.05, 1], as a [ball] table takes it", ball_cor,
      [](GridPoint& p, double x) { p.scene.ball.e0 = x; },
@@ -80,7 +80,7 @@ constexpr KeySpec keys[] = {
        p.scene.swing.about_center = true;
      },
      impact, 0, true, Dimension::length},
-    {"cm_speed", Type::number, "a finite speed", finite,
+    {"cm_speed", Type::number, speed_expected, valid_speed,
      [](GridPoint& p, double x) {
        p.scene.swing.cm_speed = x;
        p.scene.swing.about_center = false;

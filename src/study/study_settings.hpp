@@ -33,7 +33,9 @@ struct Where {
     return {file, key + "[" + std::to_string(i) + "]", node.source().begin.line};
   }
   // A key that is not there: shown at its table's line, if that has one.
-  Where missing(std::string_view name) const { return {file, key + "." + std::string(name), line}; }
+  Where missing(std::string_view name) const {
+    return {file, key.empty() ? std::string(name) : key + "." + std::string(name), line};
+  }
 };
 
 // Throws InputError "file:line: key 'axes.z.step' = 0: expected ..."; `value` empty: the key is
