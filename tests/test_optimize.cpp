@@ -245,6 +245,10 @@ TEST_CASE("optimize writes every evaluation and the best bat, which certify acce
   refused(too_many, {"model.modes", "500", "at most the"});
   refused("bat = \"" + source_path("studies/bats/r161.toml") + "\"\n[free]\ndensity = { min = 500, max = 900 }\n",
           {"bat", "profile", "[dimensions]"});
+  std::string negative_weight = density_problem();
+  negative_weight.replace(negative_weight.find("points = [0.7]\nweights = [1]"), 28,
+                          "points = [0.6, 0.7]\nweights = [1, -1]");
+  refused(negative_weight, {"objective.weights[1]", "-1", "weights >= 0"});  // named by its index
   std::string no_scan = density_problem();
   const std::string mean = "maximize = \"mean_bbs\"\npoints = [0.7]\nweights = [1]";
   no_scan.replace(no_scan.find(mean), mean.size(), "maximize = \"peak_bbs\"");

@@ -681,6 +681,27 @@ TEST_CASE("bad studies: outputs", "[study]") {
     require_error(with(with(good_study, "e0 = 0.5", "modes = \"all\""), "[\"vf\", \"e_eff\"]", "[\"mode_energy\"]"),
                   {"key 'output.variables[0]' = \"mode_energy\"", "fixed number of modes"});
   }
+  // A key only some outputs read, in a study that asks none of them, ran and was recorded as if it
+  // had counted: the air without a flight, a history's window without a history, e_a_speed
+  // without bbs_linear.
+  SECTION("the air without the flight") {
+    require_error("e0 = 0.5", "e0 = 0.5\ntemperature = 300",
+                  {"key 'scene.temperature' = 300", "read by the flight's outputs", "asks none of them"});
+    require_error("z = [0.5, 0.6, 0.7]", "wind_speed = [0, 5]", {"key 'axes.wind_speed' = [...]", "flight's"});
+  }
+  SECTION("a history's window without a history") {
+    require_error("e0 = 0.5", "e0 = 0.5\nhistory_window = 0.002", {"key 'scene.history_window'", "histories"});
+  }
+  SECTION("e_a_speed without bbs_linear") {
+    require_error("e0 = 0.5", "e0 = 0.5\ne_a_speed = 30", {"key 'scene.e_a_speed' = 30", "bbs_linear"});
+  }
+}
+
+TEST_CASE("A key some outputs read is taken beside one of them", "[study]") {
+  const StudyDir dir;
+  CHECK(dir.load(with(with(good_study, "e0 = 0.5", "e0 = 0.5\ntemperature = 300\ne_a_speed = 30"),
+                      "[\"vf\", \"e_eff\"]", "[\"vf\", \"distance\", \"bbs_linear\"]"))
+            .air.temperature == 300);
 }
 
 TEST_CASE("the memory a study needs grows with its points, outputs and bats, and a bound names the axes",

@@ -55,6 +55,10 @@ int main(int argc, char** argv) {
     // CLI11 names the option and its value, not what it should be: every option it converts is a number.
     if (const std::string unconverted = "Could not convert: "; text.starts_with(unconverted))
       text = text.substr(unconverted.size()) + ": expected a number";
+    // CLI11's ranges say "Value abc not in range 4 to 4096" of a value that is no number at all.
+    if (const std::size_t at = text.find("Value "), range = text.find(" not in range "); at != std::string::npos &&
+        range != std::string::npos && range > at)
+      text.replace(at, range + 14 - at, "'" + text.substr(at + 6, range - at - 6) + "': expected a whole number from ");
     for (const CLI::App* command : app.get_subcommands()) text = command->get_name() + ": " + text;
     if (app.get_subcommands().empty()) {  // CLI11 says only "A subcommand is required"
       text = "expected a command: modes, impact, wall, toy, ball, run, convergence, certify, optimize or flight";

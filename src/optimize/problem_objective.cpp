@@ -88,9 +88,10 @@ void read_spread(const Where& at, const toml::table& t, ObjectiveSpec& o, double
       reject(w, describe(*weights), "has " + std::to_string(o.weights.size()) + " weights; expected one per point (" +
                                         std::to_string(o.z.size()) + ")");
     double sum = 0;
-    for (const double v : o.weights) {
-      if (v < 0) reject(w, format_number(v), "expected weights >= 0");
-      sum += v;
+    for (std::size_t i = 0; i < o.weights.size(); ++i) {
+      if (o.weights[i] < 0)  // named by its index, as number_list names a NaN
+        reject(w.item(i, *weights->as_array()->get(i)), format_number(o.weights[i]), "expected weights >= 0");
+      sum += o.weights[i];
     }
     // The weights are divided by their sum: it must neither vanish nor overflow (1e308 + 1e308).
     if (!(sum > 0 && std::isfinite(sum)))

@@ -298,6 +298,29 @@ void check_euler_bernoulli_slices(const Settings& s, const Where& top, const std
 
 }  // namespace
 
+void check_output_keys_read(const Settings& s, const Study& study) {
+  const auto asks = [&study](const auto& output) { return std::ranges::any_of(study.outputs, output); };
+  const struct {
+    std::vector<const char*> keys;
+    bool read;
+    const char* readers;
+  } groups[] = {
+      {{"temperature", "pressure", "altitude", "humidity", "wind_speed", "wind_direction"},
+       study.flight,
+       "the flight's outputs (distance, apex, hang_time, landing_angle)"},
+      {{"history_window", "history_step"}, asks(is_history),
+       "the histories (force, compression, ball_position, displacement, velocity, ...)"},
+      {{"probes"}, asks(is_probe_history), "the probes' histories (displacement, velocity, acceleration, ...)"},
+      {{"e_a_speed"}, asks([](const std::string& o) { return o == "bbs_linear"; }), "bbs_linear"},
+  };
+  for (const auto& group : groups)
+    for (const char* key : group.keys)
+      if (const Setting* given = s[key]; given && !group.read)
+        reject(given->where, given->values.size() == 1 ? given->value_text(0) : "[...]",
+               std::string("is read by ") + group.readers + " alone, and the study asks none of them: add one to " +
+                   "[output] variables, or leave the key out");
+}
+
 void check_grid_size(const Settings& s, const Where& top) {
   double points = s.samples.empty() ? 1 : static_cast<double>(s.samples.front().values.size());
   for (const Setting& axis : s.axes) points *= static_cast<double>(axis.values.size());

@@ -128,6 +128,7 @@ Study load(const fs::path& file, std::string text, const SampledKeys* sampled) {
   study.flight = std::ranges::any_of(study.outputs, [](const std::string& name) {
     return name == "distance" || name == "apex" || name == "hang_time" || name == "landing_angle";
   });
+  check_output_keys_read(s, study);
   study.standard = base.standard;
   study.rig_e0 = base.rig_e0;
   study.rig_ball_speed = base.rig_ball_speed;

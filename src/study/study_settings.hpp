@@ -93,6 +93,9 @@ double read_sweet_spot_fraction(const Where& top, const toml::table& doc);
 std::string read_sweet_spot_of(const Where& top, const toml::table& doc);
 
 // ---- Checks across keys (study_checks.cpp) ----
+// Keys that only some outputs read (the air: the flight's; probes: the histories'; e_a_speed:
+// bbs_linear's), given in a study that asks none of those outputs: refused, not ignored.
+void check_output_keys_read(const Settings& s, const Study& study);
 void check_grid_size(const Settings& s, const Where& top);
 void check_required(const Settings& s, const Where& top, StudyKind kind);
 // The wall stands still, so only a ball moving toward it (speed > 0) ever touches it.

@@ -54,7 +54,7 @@ inline bool valid_mode_tolerance(double x) { return x >= 1e-15 && x <= 0.1; }
 // Past 1000 rad/s (a barrel 1 m from the pivot at 1000 m/s) no swing is a batter's (N2000's 51).
 inline constexpr double max_omega = 1000;  // rad/s
 inline constexpr const char* omega_expected =
-    "an angular speed >= 0 and at most 1000 rad/s (the swing turns the barrel toward the ball; a negative omega "
+    "a finite angular speed >= 0 and at most 1000 rad/s (the swing turns the barrel toward the ball; a negative omega "
     "swings it backwards)";
 inline bool valid_omega(double omega) { return omega >= 0 && omega <= max_omega; }  // NaN fails
 
@@ -62,7 +62,7 @@ inline bool valid_omega(double omega) { return omega >= 0 && omega <= max_omega;
 // way, as a flight's launch. Batted balls leave at about 50 m/s and the rules' cannons fire at
 // about 60; far past them the ball's force law is no ball's (1e5 m/s returned it at -4 568 m/s).
 inline constexpr double max_speed = 1000;  // m/s
-inline constexpr const char* speed_expected = "a speed from -1000 to 1000 m/s";
+inline constexpr const char* speed_expected = "a finite speed from -1000 to 1000 m/s";
 inline bool valid_speed(double v) { return std::abs(v) <= max_speed; }  // NaN fails
 
 // An impact in the plane of the swing (docs/oblique.md, oblique_impact.hpp). The plane is the one
