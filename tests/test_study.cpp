@@ -559,7 +559,8 @@ TEST_CASE("bad studies: empty axes", "[study]") {
   // The first value met again in the order written, not the smallest one repeated.
   SECTION("first repeat") { axis("z = [0.5, 0.6, 0.7, 0.6, 0.5]", {"key 'axes.z' = 0.6", "twice"}); }
   SECTION("step of the wrong sign") {
-    axis("z = { start = 0.7, stop = 0.5, step = 0.05 }", {"= 0.05: expected a step with the sign of stop - start = -0.2"});
+    axis("z = { start = 0.7, stop = 0.5, step = 0.05 }",
+         {"= 0.05: expected a step with the sign of stop - start = -0.2"});
   }
   SECTION("repeated bat") {
     axis("bat = [\"bats/r161.toml\", \"bats/../bats/r161.toml\"]", {"key 'axes.bat'", "r161.toml", "twice"});

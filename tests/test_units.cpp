@@ -197,12 +197,14 @@ TEST_CASE("An optimisation file takes bounds, the swing and the scan with units"
 TEST_CASE("A study in inches and mph gives bitwise the dataset of the same study in SI", "[units]") {
   TempDir dir;
   const std::string bat = source_path("studies/bats/r161.toml");
+  const std::string outputs = "[output]\nvariables = [\"vf\", \"e_eff\", \"displacement\"]\n";  // the probe's
   const auto si = dir.write("si.toml", "[scene]\nbat = \"" + bat + "\"\ncenter = 0.0889\nomega = 51\nmodes = 6\n"
                                         "probes = [0.6]\n[axes]\nz = { start = 0.6096, stop = 0.6858, step = 0.0254 }\n"
-                                        "ball_speed = [60.79744, 30]\n");
+                                        "ball_speed = [60.79744, 30]\n" + outputs);
   const auto us = dir.write("us.toml", "[scene]\nbat = \"" + bat + "\"\ncenter = \"3.5 in\"\nomega = \"51 rad/s\"\n"
                                         "modes = 6\nprobes = [\"60 cm\"]\n[axes]\nz = { start = \"24 in\", stop = "
-                                        "\"27 in\", step = \"1 in\" }\nball_speed = [\"136 mph\", \"30 m/s\"]\n");
+                                        "\"27 in\", step = \"1 in\" }\nball_speed = [\"136 mph\", \"30 m/s\"]\n" +
+                                        outputs);
   for (const auto& study : {si, us}) {
     const ProgramRun run = run_program("run " + study.string() + " -o " + study.string() + ".h5 --quiet");
     INFO(run.output);

@@ -288,11 +288,12 @@ SceneArgs scene_from(const SceneValues& values, const std::set<std::string>& per
     throw InputError("impact: tolerance " + py::repr(get(arg::tolerance)).cast<std::string>() +
                      ": expected integrator=\"dopri\" beside it, the one integrator that reads a tolerance (" +
                      to_string(s.integrator.method) + " steps at dt): give integrator=\"dopri\", or step_accuracy");
-  if (has(arg::mode_tolerance) && s.vibrational_modes != auto_modes)
+  if (has(arg::mode_tolerance) && s.vibrational_modes != auto_modes) {
+    const std::string fixed = has(arg::modes) ? "modes=" + py::repr(get(arg::modes)).cast<std::string>() : "n2000";
     throw InputError("impact: mode_tolerance " + py::repr(get(arg::mode_tolerance)).cast<std::string>() +
-                     ": expected modes=\"auto\" beside it, the one choice of modes that reads a tolerance (" +
-                     (has(arg::modes) ? "modes=" + py::repr(get(arg::modes)).cast<std::string>() : std::string("n2000")) +
+                     ": expected modes=\"auto\" beside it, the one choice of modes that reads a tolerance (" + fixed +
                      " keeps a fixed set): give modes=\"auto\", or no mode_tolerance");
+  }
   return out;
 }
 

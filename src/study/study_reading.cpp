@@ -211,8 +211,8 @@ std::vector<double> stepped_range(const Where& at, const toml::table& range, dou
   const double step = range_bound(at, range, "step", integer, dimension);
   const Where where = at.child("step", *range.get("step"));
   if (step == 0 || (stop - start) * step < 0)
-    reject(where, format_number(step),
-           "expected a step with the sign of stop - start = " + format_number(stop - start) + (step == 0 ? ", not 0" : ""));
+    reject(where, format_number(step), "expected a step with the sign of stop - start = " +
+                                           format_number(stop - start) + (step == 0 ? ", not 0" : ""));
   const double n = std::floor((stop - start) / step + 1e-9) + 1;
   if (n > max_axis_values)
     reject(where, format_number(step), "gives " + format_number(n) + " values; an axis has at most 1e6");

@@ -70,8 +70,8 @@ double air_density(const Air& air);
 
 // The first thing unphysical about the air, or nothing: temperature > 0 K (and below 373.15 K,
 // where Buck's formula and outdoor air end), pressure > 0, elevation in (-1 km, 10 km), humidity
-// in [0, 1], wind speed >= 0, wind direction in [-360, 360] deg, everything finite (keys temperature, pressure, altitude, humidity,
-// wind_speed, wind_direction).
+// in [0, 1], wind speed >= 0, wind direction in [-360, 360] deg, everything finite (keys
+// temperature, pressure, altitude, humidity, wind_speed, wind_direction).
 std::optional<InputProblem> air_problem(const Air& air);
 
 // InputError from air_problem; `prefix` starts the message ("flight: ").

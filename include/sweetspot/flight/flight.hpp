@@ -61,8 +61,9 @@ struct FlightResult {
 
 // The first thing unphysical about a launch, or nothing: speed >= 0, angle in [-90, 90] deg,
 // direction in [-360, 360] deg, height in [0, 1000] m, everything finite (keys speed, angle,
-// direction, backspin, sidespin, height). And about the options: positive ball mass and radius, gravity, tolerance, max_time and
-// spin decay time, finite coefficients, sample_interval 0 (none) or at least 1 ms.
+// direction, backspin, sidespin, height). And about the options: positive ball mass and radius,
+// gravity, tolerance, max_time and spin decay time, finite coefficients, sample_interval 0 (none)
+// or at least 1 ms.
 std::optional<InputProblem> launch_problem(const Launch& launch);
 std::optional<InputProblem> flight_options_problem(const FlightOptions& options);
 
