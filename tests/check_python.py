@@ -287,6 +287,7 @@ check(refused(lambda: sweetspot.impact(bat, **swing, modes=""), "modes ''", "exp
 check(refused(lambda: sweetspot.certify(bat, ""), "standard ''", "\"bbcor\", \"besr\" or \"bpf\"")
       and refused(lambda: sweetspot.certify(bat, "asa"), "standard 'asa'"), "certify's standard as written")
 check(refused(lambda: sweetspot.Bat.load(""), "path ''", "a bat file's path"), "Bat.load('')")
+check(refused(lambda: sweetspot.scene_of({"a": 1}), "without scene_* attributes"), "scene_of of no result")
 # A key of 60 000 parts overflowed toml++'s stack and killed the interpreter (tests/test_toml_depth.cpp).
 check(refused(lambda: sweetspot.Bat.from_text("x" + ".x" * 60000 + " = 1"), "<text>:1:", "more than 64 parts"),
       "Bat.from_text with a key of 60 000 parts")
@@ -327,6 +328,8 @@ with xr.open_dataset(f"{work}/program.h5", engine="h5netcdf") as reference:
     for name in ("vf", "e_eff", "contact_time", "status", "frequency"):
         check(np.array_equal(ds[name].values, reference[name].values, equal_nan=True), f"run_study {name}")
 points = sweetspot.impacts(bat, z=ds.z.values, ball_speed=40, center=0.09, omega=51, e0=0.5, modes=18)
+check(refused(lambda: sweetspot.impacts_like(ds), "a dataset of `sweetspot run`", "run_study"),
+      "impacts_like names a study's dataset as one")
 check(np.array_equal(points.vf.values, ds.vf.sel(modes=18).squeeze().values), "impacts == the study's points")
 # A study at a stated accuracy: each point climbs its own slicings, so the study (on any threads)
 # equals impacts() point for point, and meets the accuracy.

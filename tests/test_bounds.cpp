@@ -37,14 +37,14 @@ const std::string scene = " --ball-speed 40 --center 0.09 --omega 51";
 // A study over the R161 with `scene` lines in [scene] and `rest` after it; run into out.h5,
 // which holds an earlier result that must survive a refusal.
 ProgramRun run_study(const TempDir& dir, const std::string& scene_lines, const std::string& rest) {
-  dir.write("out.h5", "an earlier result");
+  dir.write("out.h5", "\x89HDF\r\n\x1a\nan earlier result");
   const auto study = dir.write("study.toml", "[scene]\nbat = \"" + r161 + "\"\ncenter = 0.09\nomega = 51\n" +
                                                  scene_lines + rest);
   return run_program("run " + study.string() + " -o " + dir / "out.h5");
 }
 
 void require_untouched(const TempDir& dir) {
-  CHECK(read_file(dir / "out.h5") == "an earlier result");
+  CHECK(read_file(dir / "out.h5") == "\x89HDF\r\n\x1a\nan earlier result");
   CHECK_FALSE(std::filesystem::exists(dir / "out.h5.journal"));
 }
 

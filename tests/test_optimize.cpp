@@ -727,6 +727,12 @@ TEST_CASE("a rerun into the same output that finds no feasible design removes th
                                        "'); print(int(f['best_evaluation'][()]))\"");
   INFO(check.output);
   CHECK(check.output == "-1\n");
+  // A file of that name that no run wrote is the user's: refused before any work, and kept (a run
+  // replaced it, or removed it as "an earlier run's best design").
+  dir.write("out_best.toml", "name = \"my own bat\"\n");
+  require_refused(run_program("optimize " + infeasible.string() + " -o " + dir / "out.h5"),
+                  {"out_best.toml: exists and is not a best design an earlier run wrote"});
+  CHECK(read(dir / "out_best.toml") == "name = \"my own bat\"\n");
 }
 
 TEST_CASE("A free hoop modulus starts from what the bat takes: absent, its Young's modulus", "[optimize]") {

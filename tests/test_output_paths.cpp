@@ -68,7 +68,8 @@ TEST_CASE("An output path that cannot be written is refused before any work, in 
   StudyDir s;
   fs::create_directory(s.dir.path / "existing_dir");
   s.dir.write("result.txt", "a file, not a directory");
-  s.dir.write("out.h5", "an earlier result");
+  s.dir.write("notes.txt", "a user's notes");  // -o notes.txt replaced them with a dataset
+  s.dir.write("out.h5", "\x89HDF\r\n\x1a\nan earlier result");
   struct Case {
     std::string output, expected;
     std::string in_the_way = "";  // a directory where a file is written beside the output
@@ -86,6 +87,7 @@ TEST_CASE("An output path that cannot be written is refused before any work, in 
       {s / "out.h5", "out.h5.journal.new: is a directory", "out.h5.journal.new"},
       {s / "out.h5", "out.h5.lock: is a directory", "out.h5.lock"},
       {"/dev/null", "/dev/null: exists and is not a regular file"},
+      {s / "notes.txt", "notes.txt: exists and is not an HDF5 file", "", true},
   };
   for (const Case& c : cases) {
     if (!c.in_the_way.empty()) fs::create_directory(s.dir.path / c.in_the_way);
@@ -104,7 +106,8 @@ TEST_CASE("An output path that cannot be written is refused before any work, in 
     }
     if (!c.in_the_way.empty()) fs::remove(s.dir.path / c.in_the_way);
   }
-  CHECK(file_text(s / "out.h5") == "an earlier result");
+  CHECK(file_text(s / "out.h5") == "\x89HDF\r\n\x1a\nan earlier result");
+  CHECK(file_text(s / "notes.txt") == "a user's notes");
 }
 
 TEST_CASE("An output in a directory the program cannot write in is refused before any work", "[run][output]") {
@@ -132,7 +135,7 @@ TEST_CASE("convergence takes the output's lock as run does: neither can overwrit
   // of the file, as reading it for a snapshot would): the program finds the lock taken, names the
   // holder, and touches nothing.
   StudyDir s;
-  s.dir.write("out.h5", "an earlier result");
+  s.dir.write("out.h5", "\x89HDF\r\n\x1a\nan earlier result");
   int ready[2];
   REQUIRE(::pipe(ready) == 0);
   const pid_t holder = ::fork();

@@ -50,7 +50,7 @@ TEST_CASE("A pivoted study's e_a, bbcor, besr and bpf are the rig's at each poin
 TEST_CASE("A study asking bbcor, besr or bpf of a free bat is refused, e_a is not", "[certification][study]") {
   TempDir dir;
   for (const std::string pivot : {"", "pivot = false\n"}) {
-    dir.write("out.h5", "an earlier result");
+    dir.write("out.h5", "\x89HDF\r\n\x1a\nan earlier result");
     const ProgramRun run = run_program("run " + dir.write("free.toml", rig_study(pivot)).string() + " -o " + dir / "out.h5");
     require_refused(run, {"key 'output.variables[2]' = \"bbcor\" (string): needs a pivoted bat"});
   }

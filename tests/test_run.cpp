@@ -90,7 +90,7 @@ TEST_CASE("A run killed with SIGKILL resumes to the file of an uninterrupted run
 TEST_CASE("A bad study is refused before any work and leaves the output file alone", "[run]") {
   TempDir dir;
   const std::string out = dir / "out.h5";
-  dir.write("out.h5", "an earlier result");
+  dir.write("out.h5", "\x89HDF\r\n\x1a\nan earlier result");
   struct Case {
     std::string text, expected;
   };
@@ -107,7 +107,7 @@ TEST_CASE("A bad study is refused before any work and leaves the output file alo
       INFO(c.expected << ", " << ranks << " ranks\n" << run.output);
       CHECK(run.exit_code != 0);
       CHECK_THAT(run.output, Catch::Contains("bad.toml") && Catch::Contains(c.expected));
-      CHECK(read_file(out) == "an earlier result");
+      CHECK(read_file(out) == "\x89HDF\r\n\x1a\nan earlier result");
       CHECK_FALSE(std::filesystem::exists(out + ".journal"));
     }
   }

@@ -31,7 +31,7 @@ std::string text_of(const std::filesystem::path& path) {
 // result.
 ProgramRun run_study(const TempDir& dir, const std::string& lines, const std::string& axes = "",
                      const std::string& modes = "0") {
-  dir.write("out.h5", "an earlier result");
+  dir.write("out.h5", "\x89HDF\r\n\x1a\nan earlier result");
   const auto study = dir.write("study.toml", "[scene]\nbat = \"" + r161 + "\"\ncenter = 0.09\nomega = 51\n" +
                                                  (modes.empty() ? "" : "modes = " + modes + "\n") + lines +
                                                  "[axes]\nz = [0.7]\nball_speed = [40.0]\n" + axes);
@@ -94,9 +94,9 @@ TEST_CASE("impact refuses a step accuracy of 0, below 0 or NaN, and a total one 
   TempDir dir;
   require_refused(run_study(dir, "step_accuracy = 0\n"),
                   {"key 'scene.step_accuracy' = 0: expected a finite number > 0 (relative vf error the integration may add)"});
-  CHECK(text_of(dir / "out.h5") == "an earlier result");
+  CHECK(text_of(dir / "out.h5") == "\x89HDF\r\n\x1a\nan earlier result");
   require_refused(run_study(dir, "accuracy = 1e-9\n"), {"key 'scene.accuracy' = 1e-09: expected a number from 1e-7 to 0.1"});
-  CHECK(text_of(dir / "out.h5") == "an earlier result");
+  CHECK(text_of(dir / "out.h5") == "\x89HDF\r\n\x1a\nan earlier result");
   // So does a study's preset, unless modes is given beside it; convergence, which sets every step
   // and accuracy itself, refuses either accuracy.
   for (const auto& [scene, axes] : {std::pair<std::string, std::string>{"accuracy = 1e-3\n", ""},
@@ -115,19 +115,19 @@ TEST_CASE("impact refuses a step accuracy of 0, below 0 or NaN, and a total one 
                     {"key '" + key.substr(0, key.find(' ')) + "' = ",
                      ": convergence runs every integrator at its own steps"});
   }
-  CHECK(text_of(dir / "out.h5") == "an earlier result");
+  CHECK(text_of(dir / "out.h5") == "\x89HDF\r\n\x1a\nan earlier result");
 }
 
 TEST_CASE("A study refuses dt with step_accuracy, in [scene] or as an axis, naming both keys", "[study][accuracy]") {
   TempDir dir;
   require_refused(run_study(dir, "dt = 1e-5\nstep_accuracy = 1e-4\n"),
                   {"key 'scene.dt' = 1e-05: expected dt or step_accuracy, not both: key 'scene.step_accuracy' is also given"});
-  CHECK(text_of(dir / "out.h5") == "an earlier result");
+  CHECK(text_of(dir / "out.h5") == "\x89HDF\r\n\x1a\nan earlier result");
   CHECK_FALSE(std::filesystem::exists(dir / "out.h5.journal"));
   require_refused(run_study(dir, "step_accuracy = 1e-4\n", "dt = [1e-5, 2e-5]\n"),
                   {"key 'axes.dt' = [...]: expected dt or step_accuracy, not both: key 'scene.step_accuracy'"});
   require_refused(run_study(dir, "dt = 1e-5\n", "step_accuracy = [1e-4, 1e-5]\n"), {"'scene.dt'", "'axes.step_accuracy'"});
-  CHECK(text_of(dir / "out.h5") == "an earlier result");
+  CHECK(text_of(dir / "out.h5") == "\x89HDF\r\n\x1a\nan earlier result");
   // Either alone runs.
   for (const std::string alone : {"dt = 1e-5\n", "step_accuracy = 1e-4\n"}) {
     const ProgramRun run = run_study(dir, alone);
@@ -144,7 +144,7 @@ TEST_CASE("A study refuses accuracy beside what it chooses, naming both keys", "
     const std::string name = key.substr(0, key.find(' '));
     require_refused(run_study(dir, "accuracy = 1e-3\n" + key + "\n", "", "\"auto\""),
                     {"key 'scene." + name + "'", "expected " + name + " or accuracy, not both"});
-    CHECK(text_of(dir / "out.h5") == "an earlier result");
+    CHECK(text_of(dir / "out.h5") == "\x89HDF\r\n\x1a\nan earlier result");
   }
   require_refused(run_study(dir, "accuracy = 1e-3\n"), {"key 'scene.modes' = 0", "accuracy"});
 }
@@ -162,7 +162,7 @@ TEST_CASE("A tolerance beside a stated accuracy is refused, by impact and by a s
                   {"key 'scene.tolerance' = 1e-12: expected tolerance or accuracy, not both: key 'scene.accuracy'"});
   require_refused(run_study(dir, "accuracy = 1e-5\n", "tolerance = [1e-10, 1e-12]\n"),
                   {"key 'axes.tolerance' = [...]", "'scene.accuracy'"});
-  CHECK(text_of(dir / "out.h5") == "an earlier result");
+  CHECK(text_of(dir / "out.h5") == "\x89HDF\r\n\x1a\nan earlier result");
   CHECK_FALSE(std::filesystem::exists(dir / "out.h5.journal"));
 }
 
@@ -193,7 +193,7 @@ TEST_CASE("A tolerance no integrator reads, or a mode tolerance no mode choice r
                   {"key 'scene.mode_tolerance' = 1e-05: expected modes = \"auto\" beside it",
                    "(key 'scene.modes' keeps a fixed set)"});
   require_refused(run_study(dir, "mode_tolerance = 1e-5\n", "", "\"all\""), {"'scene.mode_tolerance'"});
-  CHECK(text_of(dir / "out.h5") == "an earlier result");
+  CHECK(text_of(dir / "out.h5") == "\x89HDF\r\n\x1a\nan earlier result");
   CHECK_FALSE(std::filesystem::exists(dir / "out.h5.journal"));
   // Where some point reads it (an axis of modes with auto among them), it is read there.
   const ProgramRun mixed = run_study(dir, "mode_tolerance = 1e-5\n", "modes = [10, \"auto\"]\n", "");

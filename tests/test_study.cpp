@@ -693,6 +693,12 @@ TEST_CASE("bad studies: outputs", "[study]") {
   SECTION("a history's window without a history") {
     require_error("e0 = 0.5", "e0 = 0.5\nhistory_window = 0.002", {"key 'scene.history_window'", "histories"});
   }
+  SECTION("the sweet spot's keys without its outputs") {
+    require_error("[\"vf\", \"e_eff\"]", "[\"vf\", \"e_eff\"]\nsweet_spot_of = \"vf\"",
+                  {"key 'output.sweet_spot_of' = \"vf\"", "sweet_spot_z, sweet_spot_vf, sweet_spot_width"});
+    require_error("[\"vf\", \"e_eff\"]", "[\"vf\", \"sweet_spot_z\"]\nsweet_spot_fraction = 0.02",
+                  {"key 'output.sweet_spot_fraction' = 0.02", "read by sweet_spot_width alone"});
+  }
   SECTION("e_a_speed without bbs_linear") {
     require_error("e0 = 0.5", "e0 = 0.5\ne_a_speed = 30", {"key 'scene.e_a_speed' = 30", "bbs_linear"});
   }

@@ -11,6 +11,8 @@
 #include <fstream>
 #include <memory>
 #include <optional>
+#include <string>
+#include <string_view>
 
 #include "sweetspot/bat/bat.hpp"
 #include "sweetspot/bat/bat_design_text.hpp"
@@ -106,6 +108,21 @@ std::vector<fs::path> inputs(const OptimizationProblem& p) {
 
 fs::path temporary(const fs::path& path) { return path.string() + ".tmp"; }
 
+// The first words of the comment a best bat file starts with (write_best_bat): the run replaces, or
+// removes when it finds no feasible design, only a file so marked, not one of the user's that has
+// the name (it did either without looking).
+constexpr std::string_view best_comment_start = "The best design of the optimisation ";
+
+void check_best_replaceable(const fs::path& best) {
+  std::ifstream in(best, std::ios::binary);
+  std::string first;
+  if (!in || !std::getline(in, first)) return;  // none there, or empty
+  if (!first.starts_with("# " + std::string(best_comment_start)))
+    throw InputError(best.string() + ": exists and is not a best design an earlier run wrote (its first line is not "
+                     "\"# " + std::string(best_comment_start) + "...\"); expected it moved away, or another output "
+                     "name (the run writes its best design to OUTPUT_best.toml)");
+}
+
 struct OutputClaim {
   OutputLock lock;
   // The best bat file is named after the output's stem, which outputs of other names share
@@ -127,6 +144,7 @@ struct OutputClaim {
                        {dataset_temporary_path(o.output), journal, Journal::rewrite_path(journal),
                         OutputLock::path_for(o.output), best, temporary(best), OutputLock::path_for(best)},
                        inputs(p));
+    check_best_replaceable(best);
   }
 };
 
@@ -255,9 +273,9 @@ void write_best_bat(const OptimizationProblem& p, const OptimizationHistory& h, 
   BatDesign design = design_at(p, best.x);
   design.name = p.base.name + " (optimised)";
   const std::string comment = fmt::format(
-      "The best design of the optimisation {} ({}): {} = {:.17g}, evaluation {} of {}.\n"
+      "{}{} ({}): {} = {:.17g}, evaluation {} of {}.\n"
       "Written by sweetspot {} ({}); the base bat is {}.",
-      p.file.string(), p.title, to_string(p.objective.kind), best.objective, h.best, h.evaluations.size(), version,
+      best_comment_start, p.file.string(), p.title, to_string(p.objective.kind), best.objective, h.best, h.evaluations.size(), version,
       git_commit, p.base_source.toml_file.string());
   {
     std::ofstream out(temporary(path), std::ios::binary);

@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstring>
@@ -127,9 +128,14 @@ void Journal::read_existing(const RowCheck& check) {
   const std::uint64_t size = fs::file_size(path_, error);
   if (!in || error) refuse(path_, "cannot read the journal (" + error.message() + ")");
 
-  std::array<char, header_size> header;
-  if (size < header_size || !in.read(header.data(), header.size()) || std::memcmp(header.data(), magic, sizeof magic))
+  std::array<char, header_size> header{};
+  in.read(header.data(), static_cast<std::streamsize>(std::min<std::uint64_t>(size, header_size)));
+  if (std::memcmp(header.data(), magic, sizeof magic))
     refuse(path_, "not a journal of this sweetspot (no \"SWSPJNL2\" header)");
+  // Its magic there but not the rest: a journal cut inside its header, not another file.
+  if (size < header_size || !in)
+    refuse(path_, "its header is cut short (" + std::to_string(size) + " of " + std::to_string(header_size) +
+                      " bytes)");
   const std::uint64_t sum = word_at(header.data() + header_size - sizeof sum);
   if (Checksum().add(header.data(), header_size - sizeof sum).value != sum) refuse(path_, "its header is damaged");
   JournalKey found;

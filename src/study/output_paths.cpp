@@ -5,7 +5,9 @@
 
 #include <cerrno>
 #include <cstring>
+#include <fstream>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <utility>
 
@@ -94,6 +96,21 @@ void check_not_a_side_file(const fs::path& output) {
                          "another output; expected an output name without it (e.g. a .h5 file)");
 }
 
+// An existing output is replaced only when it is an HDF5 file, as every dataset sweetspot writes
+// (an earlier run's, to run again): `-o notes.txt` replaced a user's text file with one. An empty
+// file (one a script made ready) is no one's work either.
+void check_replaceable(const fs::path& output) {
+  std::ifstream in(output, std::ios::binary);
+  char head[8] = {};
+  if (!in || !in.read(head, sizeof head)) {
+    if (in.gcount() == 0) return;  // none there, or empty
+  }
+  constexpr std::string_view hdf5_signature("\x89HDF\r\n\x1a\n", 8);
+  if (std::string_view(head, static_cast<std::size_t>(in.gcount())) != hdf5_signature)
+    refuse(output, "exists and is not an HDF5 file, as a dataset sweetspot writes is; expected a new name, or an "
+                   "earlier dataset to replace (nothing was written)");
+}
+
 }  // namespace
 
 std::vector<fs::path> study_inputs(const Study& study) {
@@ -133,6 +150,7 @@ void check_output_paths(const fs::path& output, const std::vector<fs::path>& bes
   }
   check_not_an_input(output, inputs);
   for (const fs::path& file : beside) check_not_an_input(file, inputs);
+  check_replaceable(output);
 }
 
 }  // namespace sweetspot

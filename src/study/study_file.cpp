@@ -84,6 +84,7 @@ Study load(const fs::path& file, std::string text, const SampledKeys* sampled) {
   study.outputs = read_outputs(top, doc, s, study.kind);
   study.sweet_spot_fraction = read_sweet_spot_fraction(top, doc);
   study.sweet_spot_of = read_sweet_spot_of(top, doc);
+  check_sweet_spot_keys_read(top, doc, study.outputs);
   // The sweet spot of the carry needs the carry at every point.
   if (study.sweet_spot_of == "distance" && !std::ranges::count(study.outputs, "distance") &&
       std::ranges::any_of(study.outputs, [](const std::string& o) { return o.starts_with("sweet_spot_"); }))

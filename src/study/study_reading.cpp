@@ -480,6 +480,22 @@ std::string read_sweet_spot_of(const Where& top, const toml::table& doc) {
   return *of;
 }
 
+void check_sweet_spot_keys_read(const Where& top, const toml::table& doc, const std::vector<std::string>& outputs) {
+  const toml::table* output = doc.get_as<toml::table>("output");
+  const auto asked = [&outputs](std::string_view prefix) {
+    return std::ranges::any_of(outputs, [prefix](const std::string& o) { return o.starts_with(prefix); });
+  };
+  // The fraction bounds the width alone; what the sweet spot is of shapes all three.
+  const std::pair<const char*, const char*> keys[] = {{"sweet_spot_fraction", "sweet_spot_width"},
+                                                      {"sweet_spot_of", "sweet_spot_"}};
+  for (const auto& [key, reader] : keys)
+    if (const toml::node* node = output ? output->get(key) : nullptr; node && !asked(reader))
+      reject(Where{top.file, "output", 0}.child(key, *node), describe(*node),
+             std::string("is read by ") + (std::string_view(reader) == "sweet_spot_" ?
+                 "the sweet spot's outputs (sweet_spot_z, sweet_spot_vf, sweet_spot_width)" : reader) +
+                 " alone, and the study asks none of them: add one to variables, or leave the key out");
+}
+
 double read_sweet_spot_fraction(const Where& top, const toml::table& doc) {
   const toml::table* output = doc.get_as<toml::table>("output");
   const toml::node* node = output ? output->get("sweet_spot_fraction") : nullptr;

@@ -88,6 +88,8 @@ StudyKind read_kind(const Where& top, const toml::table& doc);
 // The keys of [scene] or [axes] (`section`), in the order written.
 std::vector<Setting> read_settings(const Where& top, const toml::table& doc, std::string_view section, StudyKind kind);
 std::vector<std::string> read_outputs(const Where& top, const toml::table& doc, const Settings& s, StudyKind kind);
+// [output]'s sweet_spot_fraction and sweet_spot_of beside no sweet_spot_* output: refused, not ignored.
+void check_sweet_spot_keys_read(const Where& top, const toml::table& doc, const std::vector<std::string>& outputs);
 double read_sweet_spot_fraction(const Where& top, const toml::table& doc);
 // [output] sweet_spot_of: "vf" (the default) or "distance".
 std::string read_sweet_spot_of(const Where& top, const toml::table& doc);

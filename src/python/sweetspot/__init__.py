@@ -580,6 +580,9 @@ def scene_of(result):
     "certification"). Every value is the resolved one, so the defaults of a later version do not
     change what is computed."""
     attrs = _attrs_of(result)
+    if not any(str(name).startswith("scene_") for name in attrs):  # nothing to compute again from
+        raise ValueError(f"result (a {type(result).__name__} without scene_* attributes): expected what impacts(), "
+                         "impact() or certify() returned, their dataset, or its attributes")
     certification = attrs.get("kind") == "certification"
     kwargs = {}
     for name, value in attrs.items():
@@ -638,6 +641,9 @@ def bat_of(result, *, path=None):
                              name=str(attrs.get("bat_file", "bat_toml")))
     if path is not None:
         return Bat.load(path, slices=slices)
+    if "study" in attrs:  # a study's dataset keeps its study, not one bat's scene
+        raise ValueError("result: a dataset of `sweetspot run` (its study is attrs['study']): expected what impacts() "
+                         "returned; run a study again with sweetspot.run_study")
     raise ValueError(f"bat {attrs.get('bat', '?')!r}: the result stores no bat file's text (a bat made from knots); "
                      "expected path=, the bat's file")
 
