@@ -683,8 +683,8 @@ TEST_CASE("bad studies: outputs", "[study]") {
                   {"key 'output.variables[0]' = \"mode_energy\"", "fixed number of modes"});
   }
   // A key only some outputs read, in a study that asks none of them, ran and was recorded as if it
-  // had counted: the air without a flight, a history's window without a history, e_a_speed
-  // without bbs_linear.
+  // had counted: the air without a flight, a history's window without a history, the sweet
+  // spot's keys without its outputs, e_a_speed without bbs_linear.
   SECTION("the air without the flight") {
     require_error("e0 = 0.5", "e0 = 0.5\ntemperature = 300",
                   {"key 'scene.temperature' = 300", "read by the flight's outputs", "asks none of them"});

@@ -102,9 +102,8 @@ void check_not_a_side_file(const fs::path& output) {
 void check_replaceable(const fs::path& output) {
   std::ifstream in(output, std::ios::binary);
   char head[8] = {};
-  if (!in || !in.read(head, sizeof head)) {
-    if (in.gcount() == 0) return;  // none there, or empty
-  }
+  in.read(head, sizeof head);
+  if (in.gcount() == 0) return;  // none there, or empty
   constexpr std::string_view hdf5_signature("\x89HDF\r\n\x1a\n", 8);
   if (std::string_view(head, static_cast<std::size_t>(in.gcount())) != hdf5_signature)
     refuse(output, "exists and is not an HDF5 file, as a dataset sweetspot writes is; expected a new name, or an "
