@@ -11,6 +11,7 @@
 
 #include "json.hpp"
 #include "sweetspot/impact/standards.hpp"
+#include "sweetspot/study/input_kind.hpp"
 #include "sweetspot/input_error.hpp"
 #include "sweetspot/uncertainty/uncertainty_study.hpp"
 
@@ -105,9 +106,7 @@ void certify_under_uncertainty(const std::string& file, const std::string& outpu
   struct Finalize {
     ~Finalize() { MPI_Finalize(); }
   } finalize;
-  if (!is_uncertainty_study(file))
-    throw InputError(file + ": key 'kind' is not \"uncertainty\": certify --uncertainty takes an uncertainty study "
-                            "of model \"certification\"");
+  require_input_kind(file, {InputKind::uncertainty_study}, "certify --uncertainty", "study file");
   const UncertaintyStudy u = load_uncertainty_study(file);
   if (u.study.kind != StudyKind::certification)
     throw InputError(file + ": key 'model' = \"" + to_string(u.study.kind) +

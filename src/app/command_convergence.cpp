@@ -15,6 +15,7 @@
 #include "sweetspot/study/accuracy_sweep.hpp"
 #include "sweetspot/study/convergence.hpp"
 #include "sweetspot/study/dataset.hpp"
+#include "sweetspot/study/input_kind.hpp"
 #include "sweetspot/input_error.hpp"
 #include "sweetspot/study/output_lock.hpp"
 #include "sweetspot/study/output_paths.hpp"
@@ -97,6 +98,7 @@ void log_sweep(const AccuracySweep& sweep) {
 
 void run(const ConvergenceCommandOptions& o) {
   spdlog::set_pattern("[%H:%M:%S] %v");
+  require_input_kind(o.study, {InputKind::study}, "convergence", "study file");
   const Study study = load_study(o.study);
   if (study.kind != StudyKind::impact)
     throw InputError(o.study + ": kind = \"" + to_string(study.kind) +

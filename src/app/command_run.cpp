@@ -4,6 +4,7 @@
 
 #include "commands.hpp"
 #include "mpi_command.hpp"
+#include "sweetspot/study/input_kind.hpp"
 #include "sweetspot/study/parallel.hpp"
 #include "sweetspot/uncertainty/uncertainty_study.hpp"
 
@@ -19,7 +20,8 @@ void add_run_command(CLI::App& app) {
                    "dataset to write (default: the study's name .h5)",
                    "keep the points a killed run finished, compute the rest", "report progress after every chunk"},
                   [study, uncertainty](const std::string& file) {
-                    if (is_uncertainty_study(file))
+                    if (require_input_kind(file, {InputKind::study, InputKind::uncertainty_study}, "run",
+                                           "study file") == InputKind::uncertainty_study)
                       *uncertainty = load_uncertainty_study(file);
                     else
                       *study = load_study(file);

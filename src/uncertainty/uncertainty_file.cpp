@@ -248,12 +248,6 @@ SamplingPlan read_plan(const Where& top, const toml::table& doc, const std::vect
 
 }  // namespace
 
-bool is_uncertainty_study(const std::filesystem::path& file) {
-  const toml::table doc = parse_toml(file, read_text(file));
-  const toml::node* kind = doc.get("kind");
-  return kind && kind->value<std::string>() == std::string("uncertainty");
-}
-
 UncertaintyStudy load_uncertainty_study(const std::filesystem::path& file) {
   std::string text = read_text(file);
   const toml::table doc = parse_toml(file, text);

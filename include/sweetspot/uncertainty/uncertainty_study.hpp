@@ -39,9 +39,6 @@ struct UncertaintyStudy {
   SamplingPlan plan;
 };
 
-// Whether the study file says kind = "uncertainty" (InputError if it cannot be read or parsed).
-bool is_uncertainty_study(const std::filesystem::path& file);
-
 // Reads, checks and draws an uncertainty study: every distribution, the plan, the memory the
 // samples need (checked before they are drawn), then every drawn value as its key takes it.
 // Throws InputError with one line naming the file, the key, the value and what was expected.
