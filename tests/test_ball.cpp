@@ -217,12 +217,12 @@ TEST_CASE("sweetspot ball runs the standard tests and refuses a ball that is not
   refused("mass = 0.145\nradius = 0.0366\ncor = 0.5\n", {"stiffness one way", "0 given"});
   refused("k1 = 6e7\n", {"b.toml: [ball]: mass is missing"});  // not "mass = 0", which was not given
   refused("mass = 0.145\nk1 = 6e7\n", {"b.toml: [ball]: radius is missing"});
-  refused("", {"b.toml: [ball]: is empty", "preset"});
+  refused("", {"b.toml:1: [ball]: is empty", "preset"});
   refused("preset = \"mlb\"\na = 0\n", {"a = 0", "positive"});
   refused("preset = \"mlb\"\nk1 = 0\n", {"k1 = 0", "positive"});
   // Two stiffnesses: one would silently overrule the other.
   refused("mass = 0.145\nradius = 0.0366\ncor = 0.5\nk1 = 6.53e7\ndynamic_stiffness = 1.9e6\n",
-          {"b.toml: [ball]: dynamic_stiffness, k1 given together", "expected one stiffness"});
+          {"b.toml:5: [ball]: dynamic_stiffness, k1 given together", "expected one stiffness"});
   refused("preset = \"mlb\"\ndynamic_stiffness = 1.9e6\ncompression = 1500\n", {"dynamic_stiffness, compression"});
   // Stiffness that grows a thousandfold with speed: no power law of exponent 1 to 3 does that.
   refused("preset = \"mlb\"\ndynamic_stiffness = [[20, 1e6], [40, 1e9]]\n", {"exponent a = -1.5", "1 to 3"});
@@ -258,7 +258,7 @@ TEST_CASE("A [ball] table is the ball of a study's scene, a certification's rig 
   require_refused(run_program("run " + d.dir.write("bad.toml", "[ball]\npreset = \"nope\"\n[scene]\nbat = \"bats/r161.toml\"\n"
                                                               "ball_speed = 40\ncm_speed = 10\nomega = 0\nz = 0.7\n").string() +
                               " -o " + d / "bad.h5"),
-                  {"bad.toml: [ball]: preset = \"nope\"", "expected one of n2000"});
+                  {"bad.toml:2: [ball]: preset = \"nope\"", "expected one of n2000"});
 }
 
 TEST_CASE("The ball file of docs/balls.md gives its lab's CORs", "[ball]") {
@@ -325,7 +325,7 @@ TEST_CASE("Tiny but positive ball values are refused before any work, wherever a
   const auto ball_file = [&](const std::string& table) {
     return run_program("ball " + dir.write("b.toml", "[ball]\n" + table).string());
   };
-  require_refused(ball_file("preset = \"mlb\"\nmass = 1e-300\n"), {"b.toml: [ball]: mass = 1e-300", "[0.001, 10] kg"});
+  require_refused(ball_file("preset = \"mlb\"\nmass = 1e-300\n"), {"b.toml:3: [ball]: mass = 1e-300", "[0.001, 10] kg"});
   require_refused(ball_file("preset = \"mlb\"\nmass = \"0.001 oz\"\n"), {"mass = \"0.001 oz\"", "[0.001, 10] kg"});
   require_refused(ball_file("preset = \"mlb\"\nradius = 1e-300\n"), {"radius = 1e-300", "[0.001, 1] m"});
   require_refused(ball_file("mass = 0.145\nradius = 0.0366\ncor = 0.5\ncompression = 1500\n"

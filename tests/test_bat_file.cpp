@@ -268,7 +268,7 @@ TEST_CASE("bat file: non-positive length or material constant", "[bat_file]") {
   SECTION("density") {
     require_toml_error(
         "density = 649", "density = -3",
-        {"bat.toml: key 'material.density': value -3 must be a positive number (kg/m^3)"});
+        {"bat.toml:5: key 'material.density': value -3 must be a positive number (kg/m^3)"});
   }
   SECTION("youngs_modulus") {
     require_toml_error("youngs_modulus = 1.8e10", "youngs_modulus = -1.8e10",

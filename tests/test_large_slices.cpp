@@ -98,5 +98,5 @@ TEST_CASE("A bat length typed in millimetres is refused, not cut into slices", "
   std::string text = file_text(alloy_file);
   text.replace(text.find("length = 0.8382"), 15, "length = 838.2");
   require_refused(run_program("modes " + dir.write("mm.toml", text).string()),
-                  {"mm.toml: key 'length': value 838.2", "0.001 to 2 m"});
+                  {"mm.toml:8: key 'length': value 838.2", "0.001 to 2 m"});
 }

@@ -166,7 +166,7 @@ TEST_CASE("a bat file names the key and the value as written when it leaves a ra
   };
   BatSource source;
   CHECK_THROWS_WITH(load_bat_design(with("barrel_diameter = 0.0635", "barrel_diameter = 1e300"), source),
-                    Catch::Contains("bat.toml: key 'dimensions.barrel_diameter'") && Catch::Contains("1e+300") &&
+                    Catch::Contains("bat.toml:21: key 'dimensions.barrel_diameter'") && Catch::Contains("1e+300") &&
                         Catch::Contains("expected 0.001 to 1 m"));
   CHECK_THROWS_WITH(load_bat_design(with("barrel_diameter = 0.0635", "barrel_diameter = \"40 in\""), source),
                     Catch::Contains("key 'dimensions.barrel_diameter'") && Catch::Contains("\"40 in\"") &&

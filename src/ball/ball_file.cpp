@@ -27,7 +27,7 @@ BallFit load_ball(const std::string& preset_or_file, const std::string& option) 
   }
   const toml::table* table = file["ball"].as_table();
   if (!table) throw InputError(preset_or_file + ": [ball] is missing: expected a table stating the ball");
-  return detail::read_ball_table(*table, preset_or_file + ": [ball]");
+  return detail::read_ball_table(*table, preset_or_file);
 }
 
 }  // namespace sweetspot

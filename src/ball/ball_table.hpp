@@ -10,7 +10,8 @@
 
 namespace sweetspot::detail {
 
-// Throws InputError "`where`: key = value: expected ..." for an unknown key or a bad value.
-BallFit read_ball_table(const toml::table& table, const std::string& where);
+// Throws InputError "FILE:LINE: [ball]: key = value: expected ..." for an unknown key or a bad
+// value, `file` the file's name.
+BallFit read_ball_table(const toml::table& table, const std::string& file);
 
 }  // namespace sweetspot::detail

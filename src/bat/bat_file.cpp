@@ -112,8 +112,12 @@ struct Section {
   const toml::table& table;
   std::string prefix;
 
+  // "FILE:LINE: key 'material.density'", the key's line where the file gives it.
   std::string where(std::string_view key) const {
-    return file.string() + ": key '" + prefix + std::string(key) + "'";
+    const toml::node* node = table.get(key);
+    const auto line = node ? node->source().begin.line : 0;
+    return file.string() + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": key '" + prefix +
+           std::string(key) + "'";
   }
 
   const toml::node& require(std::string_view key, const std::string& expected) const {

@@ -128,7 +128,7 @@ Player read_player(const Where& top, const toml::table& doc, OptimizationProblem
   // The pitched ball: the file's [ball] table (README "Balls"), N2000's without one; e0 sets its COR.
   if (const toml::node* ball = doc.get("ball")) {
     if (!ball->is_table()) reject(top.child("ball", *ball), describe(*ball), "expected a table [ball]");
-    p.ball = detail::read_ball_table(*ball->as_table(), top.file->string() + ": [ball]").ball;
+    p.ball = detail::read_ball_table(*ball->as_table(), top.file->string()).ball;
   }
   p.ball.e0 = number_key(at, t, "e0", p.ball.e0, [](double v) { return in_range(ball_cor_range, v); },
                          range_text(ball_cor_range));

@@ -98,7 +98,7 @@ Study load(const fs::path& file, std::string text, const SampledKeys* sampled) {
   // [ball]: a preset or the ball's test values (README "Balls"); [scene] and axes keys override it.
   if (const toml::node* ball = doc.get("ball")) {
     if (!ball->is_table()) reject(top.child("ball", *ball), describe(*ball), "expected a table [ball]");
-    base.scene.ball = detail::read_ball_table(*ball->as_table(), file.string() + ": [ball]").ball;
+    base.scene.ball = detail::read_ball_table(*ball->as_table(), file.string()).ball;
     study.rig_ball = true;
   }
   for (const Setting& setting : s.scene)
