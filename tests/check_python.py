@@ -151,6 +151,10 @@ for call in [lambda: sweetspot.Bat.load(f"{source}/studies/bats/no_such_bat.toml
              lambda: sweetspot.impact(bat, z=0.7, ball_speed=40, cm_speed=1, dt=1e-15),
              lambda: sweetspot.impact(bat, z=0.7, ball_speed=40, cm_speed=1, integrator="euler"),
              lambda: sweetspot.impact(bat, z=math.nan, ball_speed=40, cm_speed=1),
+             # its section read before the scene was checked killed the interpreter (segfault)
+             lambda: sweetspot.impact(bat, z=math.nan, ball_speed=40, cm_speed=10, ball="ncaa"),
+             lambda: sweetspot.impacts(bat, z=[0.5, math.nan], ball_speed=40, cm_speed=10, ball="ncaa"),
+             lambda: sweetspot.impact(bat, z=0.7, ball_speed=40, center=-1000, omega=1000),
              lambda: bat.modes(theory="string")]:
     try:
         call()

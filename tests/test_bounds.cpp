@@ -108,6 +108,9 @@ TEST_CASE("A speed past 1000 m/s or a swing past 1000 rad/s is refused, on the c
   require_refused(run_program(impact + " --ball-speed 40 --center 0.09 --omega 1e7"),
                   {"--omega 10000000 rad/s", "at most 1000 rad/s"});
   CHECK(run_program(impact + " --ball-speed 1000 --center 0.09 --omega 1000 --modes 0").exit_code == 0);
+  // A centre far off the bat moved the struck point at 1e6 m/s (status ok, v_f 1e6 m/s).
+  require_refused(run_program(impact + " --ball-speed 40 --center -1000 --omega 1000"),
+                  {"center = -1000", "struck point at 1000700 m/s", "from -1000 to 1000 m/s"});
   TempDir dir;
   require_refused(run_study(dir, "", "[axes]\nz = [0.7]\nball_speed = [40, 1e5]\n"),
                   {"key 'axes.ball_speed[1]' = 100000", "from -1000 to 1000 m/s"});
@@ -233,4 +236,19 @@ TEST_CASE("A negative omega is refused wherever a swing is given, 0 taken", "[bo
   require_refused(run_study(dir, "ball_speed = 40\n", "[axes]\nz = [0.6, 0.7]\nomega = [51, \"-480 rpm\"]\n"),
                   {"key 'axes.omega[1]' = \"-480 rpm\"", ">= 0"});
   require_untouched(dir);
+}
+
+// A point given as NaN reached the ball's section (its curvature, a speed-dependent COR) before
+// the scene was checked, and an index made from it crashed the program and Python (exit 139).
+TEST_CASE("An impact point that is not a number is refused, whatever the ball", "[bounds]") {
+  for (const std::string ball : {"n2000", "ncaa", "mlb"})
+    for (const std::string extra : {"", " --undercut 0.01", " --integrator dopri"}) {
+      INFO(ball << extra);
+      require_refused(run_program("impact --bat " + r161 + " --z nan --ball-speed 40 --cm-speed 10 --ball " + ball +
+                                  extra),
+                      {"impact: z = nan: must lie on the bat"});
+    }
+  require_refused(run_program("impact --bat " + source_path("studies/bats/alloy_bbcor.toml") +
+                              " --z nan --ball-speed 40 --cm-speed 10 --ball ncaa"),
+                  {"z = nan"});
 }

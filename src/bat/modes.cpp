@@ -209,7 +209,7 @@ ModalBasis compute_modes(const Bat& bat, BeamTheory theory, ModeRequest request)
 }
 
 const WallMode* ModalBasis::wall_at(double z) const {
-  if (wall.empty()) return nullptr;
+  if (wall.empty() || std::isnan(z)) return nullptr;
   const int n = static_cast<int>(wall.size());
   const int slice = std::clamp(static_cast<int>(std::floor(z / length() * n)), 0, n - 1);
   return wall[slice].mass > 0 ? &wall[slice] : nullptr;
@@ -217,6 +217,7 @@ const WallMode* ModalBasis::wall_at(double z) const {
 
 double ModalBasis::section_radius_at(double z) const {
   if (section_radius.empty()) return 0;
+  if (std::isnan(z)) return z;  // no section: an index from it would be undefined
   // Linear between slice centres, so that what the ball meets varies continuously along a taper
   // (a certification's scan locates its maximum between points).
   const int n = static_cast<int>(section_radius.size());

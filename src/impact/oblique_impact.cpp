@@ -93,7 +93,7 @@ double contact_reach(const ModalBasis& basis, const ImpactScene& scene) {
 
 std::string miss_reason(const ModalBasis& basis, const ImpactScene& scene) {
   const double reach = contact_reach(basis, scene);
-  if (std::abs(scene.oblique.undercut) < reach) return "";
+  if (!(std::abs(scene.oblique.undercut) >= reach)) return "";  // a miss for sure; a z off the bat is validate's
   return "the ball misses the bat: undercut " + detail::format_number(scene.oblique.undercut) +
          " m is not less than the ball's and the bat's radii together, " + detail::format_number(reach) + " m at z = " +
          detail::format_number(scene.z) + " m";

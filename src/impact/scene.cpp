@@ -274,8 +274,15 @@ void validate(const ImpactScene& scene, const ModalBasis& basis) {
   if (!lies_on_bat(scene.z, length)) reject_off_bat("z", scene.z, length);
   if (!valid_speed(scene.ball_speed)) reject("ball_speed", scene.ball_speed, std::string("expected ") + speed_expected);
   if (!valid_omega(scene.swing.omega)) reject("omega", scene.swing.omega, std::string("expected ") + omega_expected);
-  if (scene.swing.about_center) require_finite("center", scene.swing.center);
-  else if (!valid_speed(scene.swing.cm_speed))
+  if (scene.swing.about_center) {
+    require_finite("center", scene.swing.center);
+    // A centre far off the bat moves the struck point past any batter's speed (-1000 m at
+    // 1000 rad/s: 1e6 m/s), which the speeds' own bound would not see.
+    if (const double point_speed = scene.swing.omega * (scene.z - scene.swing.center); !valid_speed(point_speed))
+      reject("center", scene.swing.center,
+             "the swing moves the struck point at " + detail::format_number(point_speed) + " m/s; expected " +
+                 speed_expected);
+  } else if (!valid_speed(scene.swing.cm_speed))
     reject("cm_speed", scene.swing.cm_speed, std::string("expected ") + speed_expected);
   // The ball's ranges, as a [ball] table and a study's keys take them (ball_tests.hpp).
   if (const auto outside = ball_out_of_range(scene.ball)) reject(outside->key, outside->value, outside->expected());
@@ -336,6 +343,9 @@ Ball struck_ball(const ImpactScene& scene, const ModalBasis& basis) {
 }
 
 ModeRequest auto_mode_request(const ImpactScene& scene, const ModalBasis& basis) {
+  // Asked before the scene is validated (a caller solves the bat first): a point off the bat (z
+  // NaN) has no section to meet, and validation refuses it.
+  if (!lies_on_bat(scene.z, basis.length())) return ModeRequest::all();
   const SceneGeometry g = rigid_geometry(scene, basis);
   const double pulse = pulse_duration(struck_ball(scene, basis), scene.ball_speed + g.bat_speed, g.recoil);
   const double reach = scene.pivoted ? held_reach : 1;
