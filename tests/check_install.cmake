@@ -6,7 +6,8 @@
 # - builds and runs the documentation's example, docs/examples/cpp, copied there (its bat from
 #   sweetspot_DATA_DIR): its exit speed is the program's (both print 6 digits);
 # - runs a shipped study from share/sweetspot/studies (its bats/... paths lead to the shipped bats);
-# - with PYTHON given, imports the installed Python module and loads the shipped bat by name.
+# - with PYTHON given, imports the installed Python module, loads the shipped bat by name and runs a
+#   study through run_study, which finds the installed program with none on PATH.
 #   cmake -DBUILD_DIR=... -DSOURCE_DIR=... [-DPYTHON=... -DPYTHON_INSTALL_DIR=...] -P check_install.cmake
 function(run)
   execute_process(COMMAND ${ARGN} WORKING_DIRECTORY ${work} RESULT_VARIABLE failed OUTPUT_VARIABLE out
@@ -91,5 +92,14 @@ if(PYTHON)
     fail("the installed Python module, from ${prefix}: ${out}")
   endif()
   message(STATUS "the installed Python module loads the shipped bat r161")
+  # run_study runs the program installed beside the module, with no sweetspot on PATH (it looked
+  # only in the build tree's layout, then on PATH).
+  set(ENV{PATH} /usr/bin:/bin)
+  run(${PYTHON} -c "import sweetspot\nprint(sweetspot._program())\nprint(sweetspot.run_study('${prefix}/share/sweetspot/studies/toy.toml').vf.size)")
+  file(REAL_PATH ${program} installed)
+  if(NOT out MATCHES "^${installed}\n[1-9][0-9]*\n$")
+    fail("run_study from the installed module, PATH without sweetspot: ${out} (expected ${installed})")
+  endif()
+  message(STATUS "the installed module's run_study runs the installed program")
 endif()
 file(REMOVE_RECURSE ${work})

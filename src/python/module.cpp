@@ -434,6 +434,7 @@ outer_diameter and inner_diameter (per slice, m).)");
     return scene_record(scene_args(scalars, per_point), per_point);
   });
   // The program's --version, and the commit it was built from: every result records both.
+  m.attr("_installed_program") = SWEETSPOT_PROGRAM_INSTALLED;  // relative to the package (run_study)
   m.attr("__version__") = version;
   m.attr("_git_commit") = git_commit;
   m.def("_ball", [](const std::string& name) {

@@ -28,8 +28,8 @@ from pathlib import Path
 import numpy as np
 
 from ._sweetspot import (_LATER, Bat, __version__, _ball, _certify, _describe, _flight, _git_commit, _impact,
-                         _impact_checked, _impacts, _max_slices, _max_threads, _min_slices, _point_arguments,
-                         _scene_arguments, _scene_record, _si, _status_names)
+                         _impact_checked, _impacts, _installed_program, _max_slices, _max_threads, _min_slices,
+                         _point_arguments, _scene_arguments, _scene_record, _si, _status_names)
 
 __all__ = ["Bat", "Result", "ball", "impact", "impacts", "run_study", "certify", "flight", "scene_of", "bat_of",
            "impacts_like", "__version__"]
@@ -677,10 +677,17 @@ def _same_attribute(a, b):
 
 
 def _program():
+    """The program run_study runs: SWEETSPOT_PROGRAM when set, else the one built or installed with
+    this module (the build tree's, or the prefix's bin), else the first on PATH."""
+    named = os.environ.get("SWEETSPOT_PROGRAM")
+    if named:
+        if Path(named).is_file() and os.access(named, os.X_OK):
+            return named
+        raise RuntimeError(f"run_study: SWEETSPOT_PROGRAM={named!r}: not an executable file")
     here = Path(__file__).resolve().parent
-    for candidate in (here.parent.parent / "sweetspot", Path(os.environ.get("SWEETSPOT_PROGRAM", ""))):
+    for candidate in (here.parent.parent / "sweetspot", here / _installed_program):
         if candidate.is_file() and os.access(candidate, os.X_OK):
-            return str(candidate)
+            return str(candidate.resolve())
     found = shutil.which("sweetspot")
     if not found:
         raise RuntimeError("run_study: the sweetspot program was not found (set SWEETSPOT_PROGRAM)")
@@ -696,10 +703,12 @@ def run_study(path, output=None):
     Raises ValueError with the program's message when it refuses the study."""
     import xarray as xr
 
+    path = _text("path", path, "a study file's path", path=True)
+    output = None if output is None else _text("output", output, "a dataset's path (or None)", path=True)
     with tempfile.TemporaryDirectory() as scratch:
         out = output if output is not None else os.path.join(scratch, "study.h5")
-        run = subprocess.run([_program(), "run", str(path), "-o", str(out), "--quiet"],
-                             capture_output=True, text=True)
+        # "--" ends the options: a study whose name starts with "-" is a file, not an option.
+        run = subprocess.run([_program(), "run", "-o", out, "--quiet", "--", path], capture_output=True, text=True)
         if run.returncode != 0:
             lines = (run.stderr or run.stdout).strip().splitlines()
             message = lines[-1] if lines else f"exit status {run.returncode}"
