@@ -127,6 +127,16 @@ try:
     check(False, "impacts_like on another bat: no ValueError")
 except ValueError as e:
     check("bat" in str(e), f"impacts_like on another bat: {e}")
+# A stored result that lacks a scene attribute is refused, naming it: its value would be taken at
+# the default (e0 0.5 for the stored 0.6), and the numbers would differ with no word said.
+for lost in ("scene_e0", "scene_omega", "scene_integrator", "scene_modes"):
+    tampered = ds.copy()
+    del tampered.attrs[lost]
+    try:
+        sweetspot.impacts_like(tampered)
+        check(False, f"impacts_like without {lost}: no ValueError")
+    except ValueError as e:
+        check(f"lacks {lost}" in str(e), f"impacts_like without {lost}: {e}")
 rod = sweetspot.Bat.from_knots("rod", 0.84, [0, 0.84], [0.06, 0.06])
 rod_ds = sweetspot.impacts(rod, z=0.7, ball_speed=40, cm_speed=10)
 check("bat_toml" not in rod_ds.attrs and rod_ds.attrs["bat"] == "rod", "a knot bat stores its name, no text")
