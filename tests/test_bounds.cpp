@@ -108,6 +108,10 @@ TEST_CASE("A speed past 1000 m/s or a swing past 1000 rad/s is refused, on the c
   require_refused(run_program(impact + " --ball-speed 40 --center 0.09 --omega 1e7"),
                   {"--omega 10000000 rad/s", "at most 1000 rad/s"});
   CHECK(run_program(impact + " --ball-speed 1000 --center 0.09 --omega 1000 --modes 0").exit_code == 0);
+  // A friction coefficient past 100 (1e20 sent the ball off at 8 km/s, its energy from a vanishing
+  // force's last step times mu).
+  require_refused(run_program(impact + " --ball-speed 40 --center 0.09 --omega 51 --undercut 0.02 --friction 1e20"),
+                  {"friction", "from 0 to 100"});
   // A centre far off the bat moved the struck point at 1e6 m/s (status ok, v_f 1e6 m/s).
   require_refused(run_program(impact + " --ball-speed 40 --center -1000 --omega 1000"),
                   {"center = -1000", "struck point at 1000700 m/s", "from -1000 to 1000 m/s"});

@@ -214,23 +214,38 @@ TEST_CASE("oblique: the energy balance closes with friction's loss on the flexib
     }
 }
 
-TEST_CASE("oblique: friction that gives the bodies energy is not ok", "[oblique]") {
-  // With mu = 5 the grip never slides, and its stiffness, growing with the normal force, pumps the
-  // ball's stretch: friction's loss came out at -2 J (R161 at 70 cm, 40 m/s, 1.9 cm undercut), with
-  // the balance closed. At 0.5, as at every ball-bat friction measured, it takes energy.
+TEST_CASE("oblique: friction takes energy, whatever its coefficient, the pitch's spin and the undercut", "[oblique]") {
+  // The grip's stiffness follows the normal force. A stretch held while the force grew was
+  // stiffened and sprang back with more than the bodies put in: with mu = 5 (the grip never
+  // sliding) friction's loss came out at -2 J, R161 at 70 cm, 40 m/s, 1.9 cm undercut; and a
+  // curveball's topspin under a small undercut gave energy at mu = 0.2, refused as unbalanced at
+  // 23 of 154 such points on alloy_bbcor. The grip now loads incrementally (tangential_contact.cpp).
   ImpactScene s = game_scene(0.75 * 0.0254, 0.5);
   s.oblique.swing_tilt = 0;
   s.z = 0.7;
   s.swing = {51, false, 24, 0};
-  const ImpactResult moderate = simulate_impact(r161(), s);
-  REQUIRE(moderate.status == CollisionStatus::ok);
-  CHECK(moderate.energy.friction > 0);
-  s.oblique.friction = 5;
-  const ImpactResult gripping = simulate_impact(r161(), s);
-  INFO(gripping.message);
-  CHECK(gripping.energy.friction < 0);
-  CHECK(gripping.status == CollisionStatus::unbalanced);
-  CHECK_THAT(gripping.message, Catch::Contains("friction gave the bodies"));
+  for (const double friction : {0.5, 5.0, 100.0}) {
+    s.oblique.friction = friction;
+    const ImpactResult r = simulate_impact(r161(), s);
+    INFO("mu " << friction << ": " << r.message);
+    CHECK(r.status == CollisionStatus::ok);
+    CHECK(r.energy.friction > 0);
+  }
+  static const ModalBasis alloy =
+      compute_modes(load_bat(source_path("studies/bats/alloy_bbcor.toml")), BeamTheory::timoshenko);
+  for (const ModalBasis* bat : {&r161(), &alloy})
+    for (const double z : {0.6, 0.7, 0.8})
+      for (const auto& [undercut, spin] : {std::pair{0.005, -1500.0}, {0.01, -2000.0}, {-0.01, 2000.0}})
+        for (const double friction : {0.2, 0.5, 1.0}) {
+          ImpactScene curve = game_scene(undercut, friction);
+          curve.z = z;
+          curve.oblique.swing_tilt = 0;
+          curve.oblique.pitch_spin = spin;
+          const ImpactResult r = simulate_impact(*bat, curve);
+          INFO("z " << z << ", undercut " << undercut << ", spin " << spin << ", mu " << friction << ": " << r.message);
+          CHECK(r.status == CollisionStatus::ok);
+          CHECK(r.energy.friction >= 0);
+        }
 }
 
 TEST_CASE("oblique: more undercut launches higher, and a compliant grip spins the ball past rolling", "[oblique]") {
