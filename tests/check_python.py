@@ -7,6 +7,7 @@ bat files' bats, and certify equals `sweetspot certify --json`.
 """
 import copy
 import json
+import pickle
 import math
 import os
 import shutil
@@ -82,12 +83,17 @@ readings = {"r[key]": lambda r: r["step_error"], "get": lambda r: r.get("total_e
             "values": lambda r: list(r.values()), "dict(r)": dict, "{**r}": lambda r: {**r}, "f(**r)": lambda r: (lambda **k: k)(**r),
             "update": lambda r: {}.update(r), "copy": lambda r: r.copy(), "json": lambda r: json.dumps(r, default=lambda v: v.tolist()),
             "repr": repr, "==": lambda r: r == {}, "|": lambda r: r | {}, "pop": lambda r: r.pop("contacts"),
-            "copy.copy": copy.copy, "copy.deepcopy": copy.deepcopy}
+            "copy.copy": copy.copy, "copy.deepcopy": copy.deepcopy, "pickle": lambda r: pickle.loads(pickle.dumps(r))}
 for name, read in readings.items():
     got = sweetspot.impact(bat, **kwargs)
     read(got)
     check(all(same(expected[k], dict.__getitem__(got, k)) for k in estimates),
           f"estimates after {name}: {[dict.__getitem__(got, k) for k in estimates]}")
+# A Result pickles (to a process pool, say) with its values and attrs as they read: the functions
+# that make them when first read could not be pickled.
+got = sweetspot.impact(bat, **kwargs)
+back = pickle.loads(pickle.dumps(got))
+check(type(back) is sweetspot.Result and repr(back) == repr(got) and back.attrs == got.attrs, "a Result through pickle")
 got = sweetspot.impact(bat, **kwargs)
 check(same(expected, json.loads(json.dumps({k: v for k, v in got.items() if k not in ("mode_energy", "modes_kept")}))
                        | {k: expected[k] for k in ("mode_energy", "modes_kept")}), "a Result through json")

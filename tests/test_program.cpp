@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "program.hpp"
+#include "refusal.hpp"
 
 TEST_CASE("modes --json prints the mass properties and Table II of the R161 bat", "[program]") {
   const ProgramRun run = run_program("modes " + source_path("studies/bats/r161.toml") + " --json --count 3");
@@ -32,6 +33,11 @@ TEST_CASE("wall and toy commands print JSON with their results", "[program]") {
   CHECK_THAT(toy.output, Catch::Contains("\"exit_ratio\": 0.71"));
   CHECK(run_program("wall --speed -3").exit_code == 2);
   CHECK(run_program("toy --omega-tau 0").exit_code == 2);
+  // Past the toy's fixed step nothing is computed: refused, where it printed v_f/v_i = 0 and NaN
+  // energies with exit status 0.
+  for (const char* json : {"", " --json"})
+    require_refused(run_program(std::string("toy --omega-tau 1e300") + json),
+                    {"toy: --omega-tau 1e+300", "beyond the toy model's fixed step"});
 }
 
 TEST_CASE("a shipped bat is found by name, and an unknown name is refused with the shipped names", "[program]") {

@@ -649,7 +649,7 @@ TEST_CASE("bad studies: bats", "[study]") {
     dir.write("bats/broken.toml", "name = \"broken\"\nlength = -1\n");
     const fs::path file = dir.write("study.toml", with(good_study, "bats/r161.toml", "bats/broken.toml"));
     CHECK_THROWS_WITH(load_study(file), Catch::Contains("key 'scene.bat' = \"bats/broken.toml\"") &&
-                                            Catch::Contains("broken.toml: key 'length'"));
+                                            Catch::Contains("broken.toml:2: key 'length'"));
   }
   SECTION("two bats of one name") {
     const StudyDir dir;

@@ -335,6 +335,11 @@ variables = ["bbcor", "status"]
   // A bat given as well is refused: the study names its bat. So is any of the rig's settings,
   // which the study sets (ignored, it would certify what was not asked).
   require_refused(run_program("certify r161 --uncertainty " + study.string()), "give one or the other");
+  // An empty output kept no dataset with exit status 0, and US units were taken and not used.
+  require_refused(run_program("certify --uncertainty " + study.string() + " -o \"\""),
+                  {"certify: --output \"\"", "the output path is empty"});
+  require_refused(run_program("certify --uncertainty " + study.string() + " --units us"),
+                  {"--units us with --uncertainty", "its report is in SI units"});
   for (const std::string option :
        {"--accuracy 5", "--accuracy 1e-3", "--modes 18", "--standard besr", "--ball-speed 93mph"}) {
     INFO(option);

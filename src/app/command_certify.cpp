@@ -189,6 +189,11 @@ void add_certify_command(CLI::App& app) {
   o->units.add_option(*cmd);
   cmd->callback([o, cmd] {
     o->units.check_text_output("certify", o->json);
+    if (cmd->count("--output") > 0 && o->output.empty())
+      throw InputError("certify: --output \"\": the output path is empty; expected the name of a file to write");
+    if (!o->uncertainty.empty() && o->units.us())
+      throw InputError("certify: --units us with --uncertainty " + o->uncertainty +
+                       ": its report is in SI units; expected no --units");
     // An uncertainty study sets the rig's settings itself: these would be silently ignored.
     if (!o->uncertainty.empty())
       for (const char* name : {"--standard", "--ball", "--e0", "--ball-speed", "--pivot-point", "--theory", "--slices",

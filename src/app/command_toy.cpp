@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <memory>
 
+#include <spdlog/fmt/fmt.h>
+
 #include "commands.hpp"
 #include "json.hpp"
 #include "sweetspot/input_error.hpp"
@@ -23,6 +25,9 @@ void add_toy_command(CLI::App& app) {
     if (!(o->omega_tau > 0) || !std::isfinite(o->omega_tau))
       throw InputError("toy: omega-tau = " + std::to_string(o->omega_tau) + ": must be a positive finite number");
     const ImpactResult r = toy_model(o->omega_tau);
+    // Past the model's fixed step nothing was computed: the value given is what is wrong.
+    if (r.status == CollisionStatus::refused_step)
+      throw InputError(fmt::format("toy: --omega-tau {:g}: {}", o->omega_tau, r.message));
     // v_i = 1 in the model's units: vf is the ratio v_f / v_i; energies as fractions of the initial.
     const ImpactEnergy& e = r.energy;
     const double ball = e.ball / e.initial, bat_cm = e.bat_translation / e.initial;

@@ -146,6 +146,11 @@ class Result(dict):
     __or__, __ror__ = _completing(dict.__or__), _completing(dict.__ror__)
     del _completing
 
+    def __reduce__(self):
+        """Pickled (for a process pool, say) with its values made and its attrs read: the functions
+        that make them when first read cannot be pickled."""
+        return (Result, (dict(self.items()), self.attrs))
+
     @property
     def attrs(self):
         if callable(self._attrs):
