@@ -238,7 +238,14 @@ for call, fragments in [
         (lambda: sweetspot.certify(bat, standard=None), ["standard", "None"]),
         (lambda: sweetspot.certify(bat, modes=10 ** 20), ["modes"]),
         (lambda: sweetspot.certify(bat, accuracy=0), ["accuracy 0", "1e-7 to 0.1"]),
-        (lambda: sweetspot.ball(5), ["name", "5"])]:
+        (lambda: sweetspot.ball(5), ["name", "5"]),
+        # pybind11's many-line TypeError, an OverflowError naming nothing, the library's field name:
+        (lambda: sweetspot.flight(40, None), ["angle None", "real number"]),
+        (lambda: sweetspot.flight(40, 30, direction=None), ["direction None"]),
+        (lambda: sweetspot.flight(40, 30, samples=-1), ["samples = -1", "0.001 s"]),
+        (lambda: sweetspot.impact(bat, 10**400, 40, cm_speed=10), ["z 1000", "a real number"]),
+        (lambda: sweetspot.scene_of(None), ["result None"]),
+        (lambda: sweetspot.bat_of("abc"), ["result 'abc'"])]:
     try:
         call()
         check(False, f"no ValueError for {fragments}")

@@ -64,6 +64,9 @@ void bind_flight(py::module_& m) {
         options.aerodynamics.spin_decay_time = spin_decay_time;
         options.drag = options.lift = !vacuum;
         options.sample_interval = samples;
+        // Named as this function's argument, not as the library's field.
+        if (auto problem = flight_options_problem(options); problem && problem->key == "sample_interval")
+          refuse({"samples", problem->value, problem->expected}, "");
         return run_flight(launch, air, options);
       },
       py::arg("speed"), py::arg("angle"), py::arg("direction"), py::arg("backspin"), py::arg("sidespin"),

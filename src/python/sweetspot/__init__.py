@@ -23,6 +23,7 @@ import shutil
 import subprocess
 import tempfile
 import warnings
+from collections.abc import Mapping
 from pathlib import Path
 
 import numpy as np
@@ -83,7 +84,10 @@ def _real(name, value, dimension=None, arrays=False):
         if any(isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, float, np.integer, np.floating))
                for v in array.flat):
             _refuse(name, value, expected)
-        array = array.astype(float)
+        try:
+            array = array.astype(float)
+        except OverflowError:  # an int past any float (10**400)
+            _refuse(name, value, expected)
     if array.dtype.kind not in "iuf" or (array.ndim > 0 and not arrays):
         _refuse(name, value, expected)
     return float(array) if array.ndim == 0 else array.astype(float)
@@ -362,6 +366,8 @@ def certify(bat, standard="bbcor", *, ball=None, e0=None, ball_speed=None, pivot
 def _degrees(name, value):
     # An angle: a plain number in deg, or a string with its unit ("0.48 rad", "27.5 deg").
     # (rad / (pi / 180): the program's conversion, so that both give the same bits.)
+    if value is None:
+        _refuse(name, value, "a real number (deg)")
     return _real(name, value, "angle") / (math.pi / 180) if isinstance(value, str) else _real(name, value)
 
 
@@ -572,7 +578,10 @@ _RECORD_ONLY = {"cor_slope", "cor_speed", "curved_contact"}
 
 def _attrs_of(result):
     """The attributes of a dataset, a Result or a dict of attributes."""
-    return dict(result.attrs if hasattr(result, "attrs") else result)
+    attrs = result.attrs if hasattr(result, "attrs") else result
+    if not isinstance(attrs, Mapping):
+        _refuse("result", result, "what impacts(), impact() or certify() returned, their dataset, or its attributes")
+    return dict(attrs)
 
 
 def scene_of(result):
@@ -640,7 +649,7 @@ def bat_of(result, *, path=None):
     Returns: a Bat with the stored slices: from the stored text (bat_toml, with bat_profile) if
     there is one, else from `path`. Raises ValueError when neither is there."""
     attrs = _attrs_of(result)
-    slices = int(attrs["bat_slices"]) if "bat_slices" in attrs else None
+    slices = _whole("bat_slices", attrs["bat_slices"], _min_slices, _max_slices) if "bat_slices" in attrs else None
     if "bat_toml" in attrs:
         return Bat.from_text(attrs["bat_toml"], attrs.get("bat_profile"), slices=slices,
                              name=str(attrs.get("bat_file", "bat_toml")))
