@@ -8,6 +8,8 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <exception>
 #include <set>
@@ -157,6 +159,29 @@ py::tuple impact_call(const std::shared_ptr<BatHandle>& bat, const SceneArgs& sc
   return py::make_tuple(std::move(result), r.u_max, scene.scene.ball.radius);
 }
 
+// Ctrl-C (or any signal Python handles) during a long impacts(): the calling thread, OpenMP's
+// thread 0, takes the GIL every tenth of a second to let Python run its signal handlers; when one
+// raises, every thread leaves its remaining points and the call raises that exception.
+class SignalWatch {
+ public:
+  bool interrupted() {
+    if (omp_get_thread_num() == 0 && !raised_.load(std::memory_order_relaxed)) {
+      const auto now = std::chrono::steady_clock::now();
+      if (now - last_ >= std::chrono::milliseconds(100)) {
+        last_ = now;
+        py::gil_scoped_acquire gil;
+        if (PyErr_CheckSignals() != 0) raised_ = true;
+      }
+    }
+    return raised_.load(std::memory_order_relaxed);
+  }
+  bool raised() const { return raised_; }
+
+ private:
+  std::atomic<bool> raised_ = false;
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
 // The scalar outputs of a study dataset that `impacts` gives, in the order of its variables.
 const std::vector<std::string> impacts_outputs = {
     "vf",     "e_eff",       "bat_speed",      "e_a",         "bbcor",      "besr",
@@ -259,6 +284,7 @@ py::dict run_impacts(BatHandle& bat, const py::dict& scalars, const py::dict& ar
   int* const contacts = contacts_column.mutable_data();
   int* const kept = kept_column.mutable_data();
   std::vector<std::string> errors(n);
+  SignalWatch signals;
   {
     py::gil_scoped_release release;
     if (threads == 0) threads = omp_get_max_threads();
@@ -267,6 +293,7 @@ py::dict run_impacts(BatHandle& bat, const py::dict& scalars, const py::dict& ar
       SceneArgs args = base;  // each thread's; every point sets the same fields
 #pragma omp for schedule(dynamic)
       for (py::ssize_t i = 0; i < n; ++i) {
+        if (signals.interrupted()) continue;  // the rest are left, the loop cannot break
         try {
           for (const auto& [which, values] : data) set_point_argument(args.scene, which, values[i]);
           const ImpactResult r = run_impact(bat, args);
@@ -285,6 +312,7 @@ py::dict run_impacts(BatHandle& bat, const py::dict& scalars, const py::dict& ar
       }
     }
   }
+  if (signals.raised()) throw py::error_already_set();  // KeyboardInterrupt, say
   for (const std::string& e : errors)
     if (!e.empty()) throw InputError(e);
   out["status"] = std::move(status_column);
