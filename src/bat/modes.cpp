@@ -208,11 +208,38 @@ ModalBasis compute_modes(const Bat& bat, BeamTheory theory, ModeRequest request)
   return basis;
 }
 
-const WallMode* ModalBasis::wall_at(double z) const {
-  if (wall.empty() || std::isnan(z)) return nullptr;
+namespace {
+
+// The mode a fraction t of the way from a to b, each quantity linear (a itself at t = 0).
+WallMode between(const WallMode& a, const WallMode& b, double t) {
+  const auto at = [t](double x, double y) { return x + t * (y - x); };
+  WallMode w = a;
+  w.omega = at(a.omega, b.omega);
+  w.stiffness = at(a.stiffness, b.stiffness);
+  w.mass = at(a.mass, b.mass);
+  w.loss_factor = at(a.loss_factor, b.loss_factor);
+  w.spread = at(a.spread, b.spread);
+  w.outer_radius = at(a.outer_radius, b.outer_radius);
+  w.radius = at(a.radius, b.radius);
+  w.thickness = at(a.thickness, b.thickness);
+  w.hoop_modulus = at(a.hoop_modulus, b.hoop_modulus);
+  w.axial_modulus = at(a.axial_modulus, b.axial_modulus);
+  return w;
+}
+
+}  // namespace
+
+std::optional<WallMode> ModalBasis::wall_at(double z) const {
+  if (wall.empty() || std::isnan(z)) return std::nullopt;
   const int n = static_cast<int>(wall.size());
   const int slice = std::clamp(static_cast<int>(std::floor(z / length() * n)), 0, n - 1);
-  return wall[slice].mass > 0 ? &wall[slice] : nullptr;
+  if (!(wall[slice].mass > 0)) return std::nullopt;
+  if (n == 1) return wall[slice];
+  // Between slice centres as section_radius_at: past the first and last centres, the end slice's.
+  const double x = std::clamp(z / length() * n - 0.5, 0.0, n - 1.0);
+  const int i = std::min(static_cast<int>(x), n - 2);
+  if (!(wall[i].mass > 0 && wall[i + 1].mass > 0)) return wall[slice];  // where the wall ends
+  return between(wall[i], wall[i + 1], x - i);
 }
 
 double ModalBasis::section_radius_at(double z) const {

@@ -130,7 +130,7 @@ Certification certify_at_slices(const BatDesign& design, const Standard& standar
   // modes' and step's error estimates.
   const ImpactResult hit = rig_impact(basis, rig, peak.x);
   c.at_max = hit.rig;
-  if (const WallMode* wall = basis.wall_at(peak.x)) {
+  if (const std::optional<WallMode> wall = basis.wall_at(peak.x)) {
     c.hoop_frequency = wall->frequency_hz();
     c.barrel_compression = barrel_compression(*wall);
   }

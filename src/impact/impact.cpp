@@ -230,7 +230,7 @@ constexpr int max_patch_runs = 6;
 
 Collision collide_with_patch(const ImpactScene& scene, const ModalBasis& basis, SceneGeometry& g,
                              CaughtAgain caught_again = CaughtAgain::check) {
-  const WallMode* wall = g.wall >= 0 ? basis.wall_at(g.z) : nullptr;
+  const std::optional<WallMode> wall = g.wall >= 0 ? basis.wall_at(g.z) : std::nullopt;
   if (!wall || wall->load == WallLoad::point) return collide_scene(scene, g, caught_again);
   // Each run's largest compression, over all its contacts, sets the next run's patch.
   if (caught_again == CaughtAgain::stop) caught_again = CaughtAgain::return_unchecked;

@@ -224,7 +224,7 @@ void validate_history(const HistoryRequest& h, double length) {
 // residual compliance (impact.cpp, at the impact's effective compression). A bat kept rigid (no
 // vibrational mode) has no wall either, though its section has a hoop frequency.
 void add_wall_mode(const ImpactScene& scene, const ModalBasis& basis, SceneGeometry& g) {
-  const WallMode* wall = basis.wall_at(g.z);
+  const std::optional<WallMode> wall = basis.wall_at(g.z);
   if (!wall) return;
   g.hoop_frequency = wall->frequency_hz();
   g.barrel_compression = barrel_compression(*wall);

@@ -75,8 +75,11 @@ struct ModalBasis {
   // omega_n^2, the displacement at a under a unit load at b (0 for a complete basis). At a = b,
   // unsolved_compliance_at(a) to round-off.
   double unsolved_cross_compliance(double a, double b) const;
-  // The wall mode of the slice holding z, or nullptr where that slice is solid.
-  const WallMode* wall_at(double z) const;
+  // The wall's hoop mode at z: linear between the slice centres around z where both slices are
+  // hollow, as the section's radius is (an impact's result then varies continuously along a
+  // taper: the slice's own mode jumped v_f by 1 % at every slice boundary), else its slice's;
+  // nothing where that slice is solid.
+  std::optional<WallMode> wall_at(double z) const;
   // The outer radius at z, m, linear between slice centres; 0 when the basis has no slices.
   double section_radius_at(double z) const;
   // Vibrational frequencies in Hz (modes 2, 3, ...), ascending.
