@@ -95,7 +95,9 @@ if(PYTHON)
   # run_study runs the program installed beside the module, with no sweetspot on PATH (it looked
   # only in the build tree's layout, then on PATH).
   set(ENV{PATH} /usr/bin:/bin)
-  run(${PYTHON} -c "import sweetspot\nprint(sweetspot._program())\nprint(sweetspot.run_study('${prefix}/share/sweetspot/studies/toy.toml').vf.size)")
+  string(CONCAT code "import sweetspot\nprint(sweetspot._program())\n"
+         "print(sweetspot.run_study('${prefix}/share/sweetspot/studies/toy.toml').vf.size)")
+  run(${PYTHON} -c "${code}")
   file(REAL_PATH ${program} installed)
   if(NOT out MATCHES "^${installed}\n[1-9][0-9]*\n$")
     fail("run_study from the installed module, PATH without sweetspot: ${out} (expected ${installed})")

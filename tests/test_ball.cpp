@@ -325,7 +325,8 @@ TEST_CASE("Tiny but positive ball values are refused before any work, wherever a
   const auto ball_file = [&](const std::string& table) {
     return run_program("ball " + dir.write("b.toml", "[ball]\n" + table).string());
   };
-  require_refused(ball_file("preset = \"mlb\"\nmass = 1e-300\n"), {"b.toml:3: [ball]: mass = 1e-300", "[0.001, 10] kg"});
+  require_refused(ball_file("preset = \"mlb\"\nmass = 1e-300\n"),
+                  {"b.toml:3: [ball]: mass = 1e-300", "[0.001, 10] kg"});
   require_refused(ball_file("preset = \"mlb\"\nmass = \"0.001 oz\"\n"), {"mass = \"0.001 oz\"", "[0.001, 10] kg"});
   require_refused(ball_file("preset = \"mlb\"\nradius = 1e-300\n"), {"radius = 1e-300", "[0.001, 1] m"});
   require_refused(ball_file("mass = 0.145\nradius = 0.0366\ncor = 0.5\ncompression = 1500\n"

@@ -138,8 +138,8 @@ TEST_CASE("A bat file refuses a dimension of the wrong kind with one line naming
     FAIL("not refused");
   } catch (const InputError& e) {
     const std::string message = e.what();
-    CHECK(message == bat.string() + ":2: key 'length': value \"33 oz\" must be a positive, finite length (a number in m, or "
-                                    "a string such as \"28 in\"; units m, cm, mm, in, ft)");
+    CHECK(message == bat.string() + ":2: key 'length': value \"33 oz\" must be a positive, finite length (a number in "
+                                    "m, or a string such as \"28 in\"; units m, cm, mm, in, ft)");
   }
   const auto hoop = dir.write("hoop.toml", alloy_bat({"0.8382", "0.045", "0.01", "0.0238", "0.25", "0.55",
                                                       "0.066675", "0.0026"}) + "[barrel]\nhoop_frequency = \"1.5 kg\"\n");

@@ -105,8 +105,8 @@ void print_text(const ImpactResult& r, const DisplayUnits& u, bool oblique) {
                 r.launch.backspin, r.launch.sidespin);
   std::printf("e_eff           %.6g\n", r.e_eff);
   // Along the line of centres: in an oblique impact, the struck point's speed toward the ball.
-  std::printf("bat speed       %s toward the ball at the impact point; e_a %.6g\n", u.speed(r.bat_speed, "%.6g").c_str(),
-              r.rig.e_a);
+  std::printf("bat speed       %s toward the ball at the impact point; e_a %.6g\n",
+              u.speed(r.bat_speed, "%.6g").c_str(), r.rig.e_a);
   if (std::isfinite(r.rig.bbcor))
     std::printf("held at the pivot: bbcor %.6g, besr %.6g, bpf %.6g\n", r.rig.bbcor, r.rig.besr, r.rig.bpf);
   std::printf("contact time    %.4g ms (%d contact%s)\n", 1e3 * r.contact_time, r.contacts, r.contacts == 1 ? "" : "s");

@@ -19,8 +19,9 @@ constexpr std::array<std::string_view, 14> known_keys = {
 
 // Where a message about `node` starts: "FILE:LINE: [ball]", its line as the file gives it.
 std::string at(const std::string& file, const toml::node& node) {
-  const auto line = node.source().begin.line;
-  return file + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": [ball]";
+  std::string where = file;
+  if (const auto line = node.source().begin.line; line > 0) (where += ':') += std::to_string(line);
+  return where + ": [ball]";
 }
 
 [[noreturn]] void reject(const std::string& file, std::string_view key, const toml::node& node,
@@ -110,14 +111,15 @@ BallFit read_ball_table(const toml::table& table, const std::string& file) {
     t = find_ball_preset(node.as_string()->get(), at(file, node)).tests;
   }
   if (table.empty())
-    throw InputError(at(file, table) + ": is empty: expected a preset or the ball's test values (" + join(known_keys) + ")");
+    throw InputError(at(file, table) + ": is empty: expected a preset or the ball's test values (" + join(known_keys) +
+                     ")");
   // One stiffness: two of them given would have one silently overrule the other.
   std::vector<std::string> stiffnesses;
   for (const char* key : {"dynamic_stiffness", "compression", "k1"})
     if (table.contains(key)) stiffnesses.emplace_back(key);
   if (stiffnesses.size() > 1)
-    throw InputError(at(file, *table.get(stiffnesses.back())) + ": " + join(stiffnesses) + " given together: expected one stiffness (dynamic_stiffness, " +
-                     "compression or k1)");
+    throw InputError(at(file, *table.get(stiffnesses.back())) + ": " + join(stiffnesses) +
+                     " given together: expected one stiffness (dynamic_stiffness, compression or k1)");
   if (table.contains("mass")) t.mass = ranged_quantity(table, "mass", Dimension::mass, ball_mass_range, file);
   if (table.contains("radius"))
     t.radius = ranged_quantity(table, "radius", Dimension::length, ball_radius_range, file);

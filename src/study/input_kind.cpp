@@ -18,7 +18,8 @@ constexpr std::array<std::string_view, 4> optimisation_tables = {"free", "object
 std::string described(InputKind kind) {
   switch (kind) {
     case InputKind::study: return "a study: run it with `sweetspot run`";
-    case InputKind::uncertainty_study: return "an uncertainty study (kind = \"uncertainty\"): run it with `sweetspot run`";
+    case InputKind::uncertainty_study:
+      return "an uncertainty study (kind = \"uncertainty\"): run it with `sweetspot run`";
     case InputKind::optimisation: return "an optimisation file (it has [free]): run it with `sweetspot optimize`";
   }
   return {};

@@ -674,7 +674,8 @@ def impacts_like(result, bat=None, *, threads=None):
         bat = bat_of(result)
     again = impacts(bat, threads=threads, **scene_of(result))
     stored = _attrs_of(result)
-    recorded = [k for k in again.attrs if k.startswith("scene_") or k in ("bat", "bat_slices", "bat_toml", "bat_profile")]
+    recorded = [k for k in again.attrs
+                if k.startswith("scene_") or k in ("bat", "bat_slices", "bat_toml", "bat_profile")]
     # An attribute the stored result lacks was computed at its default, which may not be what it
     # was computed at (scene_e0 deleted: v_f 4.5 m/s off, and no word said).
     missing = [k for k in recorded if k not in stored]
