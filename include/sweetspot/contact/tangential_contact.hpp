@@ -8,11 +8,12 @@
 // with the ball's tangential compliance (Cross, Am. J. Phys. 73, 914 (2005); Cross & Nathan, Am.
 // J. Phys. 74, 896 (2006); Kensrud, Nathan & Smith, Am. J. Phys. 85, 503 (2017)): the contact
 // grips and the ball's surface stretches like a spring of stiffness k_t (with a damper, as lossy
-// as the ball is normally) while |F| < mu N, and slides at |F| = mu N otherwise. k_t follows the normal contact stiffness at the same force,
-// k_t = grip_stiffness * dN/du of the loading law N = k1 u^a (Mindlin's ratio 2 (1 - nu) / (2 - nu)
-// of tangential to normal stiffness is 2/3 for an incompressible ball, nu = 1/2). An infinite
-// grip_stiffness is the rigid-body model of the textbooks: slide until the contact point comes to
-// rest, then roll.
+// as the ball is normally) while |F| < mu N, and slides at |F| = mu N otherwise, until the
+// sliding stops (the stretch moving as fast as the slip). k_t follows the normal contact stiffness
+// at the same force, k_t = grip_stiffness * dN/du of the loading law N = k1 u^a (Mindlin's ratio
+// 2 (1 - nu) / (2 - nu) of tangential to normal stiffness is 2/3 for an incompressible ball,
+// nu = 1/2). An infinite grip_stiffness is the rigid-body model of the textbooks: slide until the
+// contact point comes to rest, then roll.
 //
 // Signs: t is the tangent of the contact in the plane of the swing; the slip s is the velocity of
 // the ball's contact point relative to the bat's along t, s = v - R w - (V + R_b W) with v the

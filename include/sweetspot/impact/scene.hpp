@@ -97,8 +97,8 @@ inline constexpr double max_pitch_spin = 1e5;  // rpm
 inline constexpr const char* pitch_spin_expected =
     "a spin from -1e5 to 1e5 rpm (positive: the pitch's backspin)";
 // Ball-bat friction is measured at about 0.2-0.5; past 100 the grip hardly slides (R161's backspin
-// within 0.1 % from 100 to 1e6). 1e20 let the last sliding step before separation take mu times a
-// vanishing force for a whole step: the ball left at 8 km/s.
+// within 0.2 % from 100 to 1e6: tests/test_oblique.cpp). 1e20 let the last sliding step before
+// separation take mu times a vanishing force for a whole step: the ball left at 8 km/s.
 inline constexpr double max_friction = 100;
 inline constexpr const char* friction_expected = "a coefficient of friction from 0 to 100";
 inline bool valid_undercut(double x) { return std::isfinite(x); }
