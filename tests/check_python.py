@@ -235,6 +235,8 @@ for call, fragments in [
         (lambda: bat.modes(count="4"), ["count", "'4'"]),
         (lambda: bat.modes(count=10 ** 20), ["count"]),
         (lambda: bat.moment_of_inertia_about(1j), ["z", "1j"]),
+        (lambda: bat.moment_of_inertia_about(float("nan")), ["z nan", "a finite point"]),  # returned nan
+        (lambda: sweetspot.scene_of({"scene_pivot": 0.5, "scene_z": 0.7}), ["scene_pivot 0.5", "0 or 1"]),  # was True
         (lambda: sweetspot.certify(bat, e0="0.5"), ["e0", "'0.5'"]),
         (lambda: sweetspot.certify(bat, standard=None), ["standard", "None"]),
         (lambda: sweetspot.certify(bat, modes=10 ** 20), ["modes"]),

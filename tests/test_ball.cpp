@@ -195,6 +195,9 @@ TEST_CASE("sweetspot ball runs the standard tests and refuses a ball that is not
   CHECK_THAT(run.output, Catch::Contains("\"flat_wall\""));
   require_refused(run_program("ball nope"), {"preset = \"nope\"", "n2000, mlb, ncaa, softball_44_375"});
   require_refused(run_program("ball mlb --speeds 0"), {"ball: --speeds 0: expected"});  // not 0.000000
+  // A speed so slow the ball never leaves the wall in the collision's time failed after the work.
+  require_refused(run_program("ball mlb --speeds 1e-300"), {"ball: --speeds 1e-300: expected speeds from 0.01"});
+  CHECK(run_program("ball mlb --speeds 0.01 --cylinder-speed 0.01").exit_code == 0);
   // An e0 whose COR law, with the ball's slope, passes 1 at rest: named as the user gave it.
   require_refused(run_program("impact --bat " + source_path("studies/bats/r161.toml") +
                               " --z 0.7 --ball-speed 40 --cm-speed 20 --ball mlb --e0 1.0"),

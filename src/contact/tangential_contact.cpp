@@ -53,12 +53,22 @@ class GripRun {
   GripRun(const GripLaw& grip, double inverse_mass, double slip)
       : grip_(grip), inverse_mass_(inverse_mass), mass_(1 / inverse_mass), slip_(slip) {}
 
-  // A piece of duration h over which the normal force goes linearly from n0 to n1.
-  void advance(double h, double n0, double n1, int halvings = 0) {
-    if (!(h > 0)) return;
-    if (std::isinf(grip_.grip_stiffness)) return roll(h, n0, n1);
-    if (sliding_) return slide(h, n0, n1, halvings);
-    grip(h, n0, n1, halvings);
+  // A piece of the sample interval p..q (its normal force the collision's cubic Hermite there),
+  // from t0 for h, with the normal force at its ends and middle.
+  struct Piece {
+    double t0, h, n0, n_mid, n1;
+    // The impulse of the normal force over the piece: Simpson's rule, exact for the cubic.
+    double normal_impulse() const { return h / 6 * (n0 + 4 * n_mid + n1); }
+  };
+  Piece piece(const ForceSample& p, const ForceSample& q, double t0, double h, double n0, double n1) const {
+    return {t0, h, n0, normal_at(p, q, t0 + h / 2), n1};
+  }
+
+  void advance(const ForceSample& p, const ForceSample& q, const Piece& piece, int halvings = 0) {
+    if (!(piece.h > 0)) return;
+    if (std::isinf(grip_.grip_stiffness)) return roll(piece);
+    if (sliding_) return slide(p, q, piece, halvings);
+    grip(p, q, piece, halvings);
   }
   // Apart: the grip lets go of its stretch.
   void release() { stretch_ = 0, held_ = 0, sliding_ = false; }
@@ -78,8 +88,8 @@ class GripRun {
   }
 
   // The rigid grip of the textbooks: bring the slip to rest if friction can, then roll.
-  void roll(double h, double n0, double n1) {
-    const double limit = grip_.friction * 0.5 * (n0 + n1) * h, stop = -slip_ / inverse_mass_;
+  void roll(const Piece& piece) {
+    const double limit = grip_.friction * piece.normal_impulse(), stop = -slip_ / inverse_mass_;
     const bool slides = std::abs(stop) > limit;
     take(slides ? std::copysign(limit, stop) : stop);
     slid_ = slid_ || (slides && limit > 0);
@@ -88,11 +98,12 @@ class GripRun {
   double damper(double k) const { return 2 * grip_.damping_ratio * std::sqrt(k * mass_); }
 
   // Gripping: the spring and damper take the slip, exact over the piece, at the stiffness of the
-  // piece's mean normal force. Where their force ends past mu N the piece is halved, each half made
-  // in turn, until the switch to sliding is found.
-  void grip(double h, double n0, double n1, int halvings) {
-    const double k = grip_.stiffness(0.5 * (n0 + n1)), x = stretch_at(stretch_, held_, k), s = slip_;
-    double s1 = s - k * x * h * inverse_mass_, x1 = x + s * h;  // no stiffness: no force at all
+  // normal force at its middle. Where their force ends past mu N the piece is halved, each half
+  // made in turn, until the switch to sliding is found.
+  void grip(const ForceSample& p, const ForceSample& q, const Piece& piece, int halvings) {
+    const double h = piece.h, n1 = piece.n1;
+    const double k = grip_.stiffness(0.5 * (piece.n0 + piece.n1)), x = stretch_at(stretch_, held_, k), s = slip_;
+    double s1 = s, x1 = 0;  // no normal force: no force, and no stretch held
     if (k > 0) {
       const double w0 = std::sqrt(k * inverse_mass_), zeta = grip_.damping_ratio;
       const double a = zeta * w0, w = w0 * std::sqrt(1 - zeta * zeta);
@@ -109,19 +120,20 @@ class GripRun {
       stretch_ = x1, held_ = k;
       return;
     }
-    if (halvings < max_switch_halvings) return halve(h, n0, n1, halvings);
+    if (halvings < max_switch_halvings) return halve(p, q, piece, halvings);
     slide_sign_ = force > 0 ? 1.0 : -1.0;  // found: the slider starts, against the force
     sliding_ = true;
-    slide(h, n0, n1, halvings);
+    slide(p, q, piece, halvings);
   }
 
   // Sliding: the force on the ball sign * mu N(t). The stretch follows k x + c x' = -sign mu N(t)
-  // from where it is (without a damper, at once). Where the slider's motion s - x' has turned by the
-  // piece's end (it moves against the force while it slides), the piece is halved until the
-  // switch to gripping is found.
-  void slide(double h, double n0, double n1, int halvings) {
+  // (N linear over the piece) from where it is (without a damper, at once). Where the slider's
+  // motion s - x' has turned by the piece's end (it moves against the force while it slides), the
+  // piece is halved until the switch to gripping is found.
+  void slide(const ForceSample& p, const ForceSample& q, const Piece& piece, int halvings) {
+    const double h = piece.h, n0 = piece.n0, n1 = piece.n1;
     const double k = grip_.stiffness(0.5 * (n0 + n1)), x0 = stretch_at(stretch_, held_, k), c = damper(k);
-    const double j = slide_sign_ * grip_.friction * 0.5 * (n0 + n1) * h, s1 = slip_ + j * inverse_mass_;
+    const double j = slide_sign_ * grip_.friction * piece.normal_impulse(), s1 = slip_ + j * inverse_mass_;
     double x1 = 0, rate1 = 0;  // the stretch and its rate at the end
     if (k > 0) {
       // x relaxes toward the moving target a + b t (-sign mu N / k) with the time constant c / k.
@@ -133,17 +145,17 @@ class GripRun {
       rate1 = c_end > 0 ? (-slide_sign_ * grip_.friction * n1 - k_end * stretch_at(x1, k, k_end)) / c_end : b;
     }
     const bool held = (s1 - rate1) * slide_sign_ >= 0;
-    if (held && halvings < max_switch_halvings) return halve(h, n0, n1, halvings);
+    if (held && halvings < max_switch_halvings) return halve(p, q, piece, halvings);
     slid_ = true;
     take(j);
     stretch_ = x1, held_ = k;
     if (held) sliding_ = false;  // found: the slider stops, and the contact grips again
   }
 
-  void halve(double h, double n0, double n1, int halvings) {
-    const double n_mid = 0.5 * (n0 + n1);
-    advance(0.5 * h, n0, n_mid, halvings + 1);
-    advance(0.5 * h, n_mid, n1, halvings + 1);
+  void halve(const ForceSample& p, const ForceSample& q, const Piece& whole, int halvings) {
+    const double h = whole.h / 2;
+    advance(p, q, piece(p, q, whole.t0, h, whole.n0, whole.n_mid), halvings + 1);
+    advance(p, q, piece(p, q, whole.t0 + h, h, whole.n_mid, whole.n1), halvings + 1);
   }
 
   const GripLaw& grip_;
@@ -221,7 +233,7 @@ TangentialResult tangential_contact(const std::vector<ForceSample>& normal_force
     double n0 = normal_at(p, q, p.t);
     for (int sub = 1; sub <= substeps_per_interval; ++sub) {
       const double n1 = normal_at(p, q, sub == substeps_per_interval ? q.t : p.t + sub * h);
-      run.advance(h, n0, n1);
+      run.advance(p, q, run.piece(p, q, p.t + (sub - 1) * h, h, n0, n1));
       n0 = n1;
     }
   }

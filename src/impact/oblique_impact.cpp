@@ -197,18 +197,22 @@ double doubling_estimate(const ImpactResult& fine, const ImpactResult& coarse, d
 // moves at the tangential contact's second order in the step: the normal collision's estimates
 // and its model of the step do not see it. Without a stated accuracy, step doubling of the whole
 // impact at twice and four times the step (the larger: two runs can agree by chance), never
-// below the normal collision's own estimate.
+// below the normal collision's own estimate; Dormand-Prince at 32 and 1024 times its tolerance,
+// which double and quadruple its steps (its step goes as the fifth root of the tolerance). Where
+// the coarser run fails (RK4 past its stability), from a run at half the step.
 double oblique_step_error(const ModalBasis& basis, const ImpactScene& scene, const ImpactResult& r) {
-  if (scene.integrator.method == Method::dopri || !std::isfinite(r.step_error)) return r.step_error;
-  ImpactScene coarser = scene;
-  coarser.error_estimates = false;
-  coarser.integrator.dt *= 2;
-  const ImpactResult twice = oblique_impact(basis, coarser);
-  coarser.integrator.dt *= 2;
-  const ImpactResult four_times = oblique_impact(basis, coarser);
+  if (!std::isfinite(r.step_error)) return r.step_error;
+  const auto at = [&](double factor) {
+    ImpactScene other = scene;
+    other.error_estimates = false;
+    if (other.integrator.method == Method::dopri) other.integrator.tolerance *= std::pow(32.0, std::log2(factor));
+    else other.integrator.dt *= factor;
+    return oblique_impact(basis, other);
+  };
+  const ImpactResult twice = at(2);
   double estimate = doubling_estimate(r, twice, scene.ball_speed);
-  if (std::isfinite(estimate) && four_times.status == CollisionStatus::ok)
-    estimate = std::max(estimate, doubling_estimate(twice, four_times, scene.ball_speed, 4));
+  if (std::isfinite(estimate)) estimate = std::max(estimate, doubling_estimate(twice, at(4), scene.ball_speed, 4));
+  else estimate = 4 * doubling_estimate(at(0.5), r, scene.ball_speed);  // the error at h is 4x that at h / 2
   return std::max(r.step_error, estimate);
 }
 
@@ -225,14 +229,16 @@ double step_share(const ImpactScene& scene) {
 constexpr int max_oblique_halvings = 8;
 
 ImpactResult within_step_share(const ModalBasis& basis, const ImpactScene& scene, ImpactResult r, double share) {
-  ImpactScene at = scene;
-  if (at.step_accuracy == 0) at.step_accuracy = share;  // what accuracy's budget would set
   for (int halvings = 0;; ++halvings) {
     const double h = r.step_used;
-    ImpactScene coarser = at;
-    coarser.checked_step = 2 * h;
+    ImpactScene coarser = scene;
     coarser.error_estimates = false;
-    const double estimate = doubling_estimate(r, oblique_impact(basis, coarser), scene.ball_speed);
+    coarser.checked_step = 2 * h;
+    const ImpactResult twice = oblique_impact(basis, coarser);
+    coarser.checked_step = 4 * h;
+    double estimate = doubling_estimate(r, twice, scene.ball_speed);
+    if (std::isfinite(estimate))  // as without an accuracy: two runs can agree by chance
+      estimate = std::max(estimate, doubling_estimate(twice, oblique_impact(basis, coarser), scene.ball_speed, 4));
     if (estimate <= share || halvings == max_oblique_halvings) {
       if (scene.error_estimates || scene.accuracy > 0) {
         r.step_error = std::max(std::isnan(r.step_error) ? share : r.step_error, estimate);
@@ -240,7 +246,7 @@ ImpactResult within_step_share(const ModalBasis& basis, const ImpactScene& scene
       }
       return r;
     }
-    ImpactScene finer = at;
+    ImpactScene finer = scene;
     finer.checked_step = h / 2;
     ImpactResult next = oblique_impact(basis, finer);
     if (next.status != CollisionStatus::ok) return next;

@@ -325,7 +325,10 @@ def _modes(self, count=None, theory="timoshenko"):
 
 def _moment_of_inertia_about(self, z):
     """kg m^2 about the point z (m from the knob, or a string with a unit, "6 in")"""
-    return self._moment_of_inertia_about(_real("z", z, "length"))
+    point = _real("z", z, "length")
+    if not math.isfinite(point):
+        _refuse("z", z, "a finite point (m from the knob)")
+    return self._moment_of_inertia_about(point)
 
 
 Bat.from_knots = staticmethod(_from_knots)
@@ -607,8 +610,10 @@ def scene_of(result):
             kwargs[key] = value.decode() if isinstance(value, bytes) else value
         elif key == "modes":
             kwargs[key] = int(value)  # a count (netCDF gives numpy integers back)
-        elif key == "pivot" and not certification:
-            kwargs[key] = bool(value)  # the swing's flag; the rig's pivot is a point (m)
+        elif key == "pivot" and not certification:  # the swing's flag; the rig's pivot is a point (m)
+            if value not in (0, 1):
+                _refuse(name, value, "0 or 1 (the swing held at its centre or not)")
+            kwargs[key] = bool(value)
         else:
             kwargs[key] = float(value)
     # An accuracy of 0 records none stated. A stated one chose what it excludes: the step (scene_dt,
