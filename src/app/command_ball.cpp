@@ -57,11 +57,14 @@ std::string shown(double x) {
 // within the collision's 50 ms, and never left it at 1e-300 mph (the test failed after the work).
 constexpr double slowest_test_mph = 0.01;
 
-bool valid_test_speed(double mph_value) { return mph_value >= slowest_test_mph && mph_value * mph <= max_cor_law_speed; }
+bool valid_test_speed(double mph_value) {
+  return mph_value >= slowest_test_mph && mph_value * mph <= max_cor_law_speed;
+}
 
 void run_ball(const BallCommand& o) {
   for (const double v : o.speeds_mph)
-    if (!valid_test_speed(v)) throw InputError("ball: --speeds " + shown(v) + ": expected speeds from 0.01 to 223.7 mph");
+    if (!valid_test_speed(v))
+      throw InputError("ball: --speeds " + shown(v) + ": expected speeds from 0.01 to 223.7 mph");
   if (!(o.cylinder_diameter > 0 && o.cylinder_diameter < 1))
     throw InputError("ball: --cylinder-diameter " + shown(o.cylinder_diameter) + ": expected (0, 1) m");
   if (!valid_test_speed(o.cylinder_speed_mph))

@@ -97,9 +97,9 @@ class GripRun {
 
   double damper(double k) const { return 2 * grip_.damping_ratio * std::sqrt(k * mass_); }
 
-  // Gripping: the spring and damper take the slip, exact over the piece, at the stiffness of the
-  // normal force at its middle. Where their force ends past mu N the piece is halved, each half
-  // made in turn, until the switch to sliding is found.
+  // Gripping: the spring and damper take the slip, exact over the piece, at the stiffness of its
+  // mean normal force. Where their force ends past mu N the piece is halved, each half made in
+  // turn, until the switch to sliding is found.
   void grip(const ForceSample& p, const ForceSample& q, const Piece& piece, int halvings) {
     const double h = piece.h, n1 = piece.n1;
     const double k = grip_.stiffness(0.5 * (piece.n0 + piece.n1)), x = stretch_at(stretch_, held_, k), s = slip_;
