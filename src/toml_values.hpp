@@ -1,5 +1,6 @@
 #pragma once
 // Internal: how bat and study files quote the values they reject, the same in every message.
+#include <cstdio>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -34,7 +35,16 @@ inline std::pair<std::string, std::string> format_apart(double value, double bou
 // A string as TOML writes it in basic form.
 inline std::string quote(std::string_view text) {
   std::string out = "\"";
-  for (const char c : text) out += c == '"' || c == '\\' ? std::string("\\") + c : std::string(1, c);
+  for (const char c : text) {
+    const auto code = static_cast<unsigned char>(c);
+    if (code < 0x20 || code == 0x7f) {  // as TOML escapes it: the message stays one printable line
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\u%04X", code);
+      out += escaped;
+    } else {
+      out += c == '"' || c == '\\' ? std::string("\\") + c : std::string(1, c);
+    }
+  }
   return out + "\"";
 }
 

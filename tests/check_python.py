@@ -236,6 +236,10 @@ for call, fragments in [
         (lambda: bat.modes(count=10 ** 20), ["count"]),
         (lambda: bat.moment_of_inertia_about(1j), ["z", "1j"]),
         (lambda: bat.moment_of_inertia_about(float("nan")), ["z nan", "a finite point"]),  # returned nan
+        (lambda: sweetspot.Bat.from_knots("rod\x00b", *rod_args[1:]), ["name", "without NUL"]),  # a dataset refused it late
+        # A masked array's masked points were computed all the same.
+        (lambda: sweetspot.impacts(bat, z=np.ma.array([0.6, 0.7], mask=[False, True]), ball_speed=40, cm_speed=10),
+         ["z masked_array", "without a mask"]),
         (lambda: sweetspot.scene_of({"scene_pivot": 0.5, "scene_z": 0.7}), ["scene_pivot 0.5", "0 or 1"]),  # was True
         (lambda: sweetspot.certify(bat, e0="0.5"), ["e0", "'0.5'"]),
         (lambda: sweetspot.certify(bat, standard=None), ["standard", "None"]),

@@ -250,6 +250,9 @@ TEST_CASE("bat file: wrong type", "[bat_file]") {
   SECTION("empty name") {
     require_toml_error("name = \"test\"", "name = \"\"", {"key 'name'", "non-empty string"});
   }
+  SECTION("a NUL character in the name") {  // a dataset could not store it (h5py refused it late)
+    require_toml_error("name = \"test\"", "name = \"a\\u0000b\"", {"key 'name'", "without NUL characters"});
+  }
   SECTION("number for profile") {
     require_toml_error("profile = \"profile.csv\"", "profile = 3",
                        {"key 'profile'", "3", "string"});

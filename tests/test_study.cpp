@@ -476,6 +476,9 @@ TEST_CASE("bad studies: the file and its syntax", "[study]") {
   }
   SECTION("syntax error") { require_error("omega = 51", "omega = = 51", {"study.toml:7:", "TOML syntax error"}); }
   SECTION("title not a string") { require_error("title = \"test\"", "title = 3", {"key 'title' = 3", "string"}); }
+  SECTION("title with a NUL character") {  // the dataset's title stopped at it: "a"
+    require_error("title = \"test\"", "title = \"a\\u0000b\"", {"key 'title'", "without NUL characters"});
+  }
   SECTION("section not a table") {
     require_error(
         with(with(good_study, "[output]\nvariables = [\"vf\", \"e_eff\"]", ""), "title = \"test\"", "output = 3"),

@@ -134,10 +134,12 @@ struct Section {
     }
   }
 
+  // A NUL character would cut the name short where a dataset stores it (an HDF5 string ends there).
   std::string text(std::string_view key) const {
     const toml::node& node = require(key, "a non-empty string");
-    if (node.is_string() && !node.as_string()->get().empty()) return node.as_string()->get();
-    fail(where(key), "value " + describe(node) + " must be a non-empty string");
+    const std::string* value = node.is_string() ? &node.as_string()->get() : nullptr;
+    if (value && !value->empty() && value->find('\0') == std::string::npos) return *value;
+    fail(where(key), "value " + describe(node) + " must be a non-empty string without NUL characters");
   }
 
   // A positive, finite number; `fallback` makes the key optional.

@@ -65,9 +65,13 @@ Profile knot_profile(const std::vector<double>& z, const std::vector<double>& ou
 }
 
 // The name of a bat made in Python, under a bat file's rule for its key 'name' (bat_file.cpp):
-// a non-empty string, since results and datasets tell bats apart by it.
+// a non-empty string, since results and datasets tell bats apart by it, without a NUL character,
+// which would cut it short where a dataset stores it.
 const std::string& bat_name(const std::string& name) {
   if (name.empty()) throw InputError("name '': expected a non-empty string (a bat file's 'name')");
+  if (name.find('\0') != std::string::npos)
+    throw InputError("name " + py::repr(py::str(name)).cast<std::string>() +
+                     ": expected a string without NUL characters (a bat file's 'name')");
   return name;
 }
 

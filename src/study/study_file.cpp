@@ -66,7 +66,9 @@ Study load(const fs::path& file, std::string text, const SampledKeys* sampled) {
   else
     reject_unknown(top, doc, {"title", "kind", "scene", "axes", "output", "ball"});
   if (const toml::node* title = doc.get("title")) {
-    if (!title->is_string()) reject(top.child("title", *title), describe(*title), "expected a string");
+    // A NUL character would cut the title short in the dataset (an HDF5 string ends there).
+    if (!title->is_string() || title->as_string()->get().find('\0') != std::string::npos)
+      reject(top.child("title", *title), describe(*title), "expected a string without NUL characters");
     study.title = title->as_string()->get();
   }
   study.kind = sampled ? sampled->model : read_kind(top, doc);

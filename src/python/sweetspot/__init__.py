@@ -63,7 +63,8 @@ def _whole(name, value, low, high, why=""):
 def _real(name, value, dimension=None, arrays=False):
     """A real number as float (a string with its unit where the argument has a dimension, "28 in"),
     or with arrays=True also an array of real numbers as a float array. Complex numbers (their
-    imaginary part would be lost), bools, other strings and objects are refused."""
+    imaginary part would be lost), bools, other strings and objects are refused, and so are masked
+    arrays (their masked values would be computed all the same)."""
     if value is None:
         return None
     if type(value) is float:  # the common cases, at once
@@ -76,6 +77,8 @@ def _real(name, value, dimension=None, arrays=False):
         if isinstance(si, str):
             _refuse(name, value, expected)
         return float(si)
+    if np.ma.isMaskedArray(value):
+        _refuse(name, value, expected + " without a mask (its filled() or compressed() values)")
     try:
         array = np.asarray(value)
     except (TypeError, ValueError):  # ragged nested lists
