@@ -225,7 +225,8 @@ double step_share(const ImpactScene& scene) {
 
 // Under a stated accuracy the normal collision's model chooses the step for the normal collision
 // alone (at 1e-5 the tangential contact erred up to 25x its share there): the step is halved
-// until a run at twice it agrees within the share, and the result states the larger of the two.
+// until the runs at twice and four times it agree within the share (doubling_estimate), and the
+// result states the larger of the share and the estimate.
 constexpr int max_oblique_halvings = 8;
 
 ImpactResult within_step_share(const ModalBasis& basis, const ImpactScene& scene, ImpactResult r, double share) {
