@@ -67,9 +67,12 @@ inline std::string string_key(const Where& table, const toml::table& t, std::str
                        const std::string& expected) {
   const toml::node* node = child(t, key);
   if (!node) return fallback;
-  if (!node->is_string() || node->as_string()->get().empty())
-    reject(table.child(key, *node), describe(*node), "expected " + expected);
-  return node->as_string()->get();
+  // A NUL character would cut the text short where a dataset stores it (an HDF5 string ends there).
+  const std::string* value = node->is_string() ? &node->as_string()->get() : nullptr;
+  if (!value || value->empty()) reject(table.child(key, *node), describe(*node), "expected " + expected);
+  if (value->find('\0') != std::string::npos)
+    reject(table.child(key, *node), describe(*node), "expected " + expected + " without NUL characters");
+  return *value;
 }
 
 inline const toml::table& table_key(const Where& parent, const toml::table& t, std::string_view key, bool required) {
