@@ -193,13 +193,23 @@ double doubling_estimate(const ImpactResult& fine, const ImpactResult& coarse, d
   return 2 * std::abs(fine.vf - coarse.vf) / (3 * further) / error_scale(fine.vf, ball_speed);
 }
 
+// The estimate of `r`'s error from runs of its scene at twice and four times its step (`at`
+// makes them): the larger of the two doublings, since two runs can agree by chance. Infinite where
+// the run at twice the step fails.
+template <class RunAt>
+double doubling_pair(const ImpactResult& r, const RunAt& at, double ball_speed) {
+  const ImpactResult twice = at(2.0);
+  const double estimate = doubling_estimate(r, twice, ball_speed);
+  return std::isfinite(estimate) ? std::max(estimate, doubling_estimate(twice, at(4.0), ball_speed, 4)) : estimate;
+}
+
 // An oblique impact's exit speed takes the motion across the line of centres, which friction
 // moves at the tangential contact's second order in the step: the normal collision's estimates
 // and its model of the step do not see it. Without a stated accuracy, step doubling of the whole
-// impact at twice and four times the step (the larger: two runs can agree by chance), never
-// below the normal collision's own estimate; Dormand-Prince at 32 and 1024 times its tolerance,
-// which double and quadruple its steps (its step goes as the fifth root of the tolerance). Where
-// the coarser run fails (RK4 past its stability), from a run at half the step.
+// impact (doubling_pair), never below the normal collision's own estimate; Dormand-Prince at 32
+// and 1024 times its tolerance, which double and quadruple its steps (its step goes as the fifth
+// root of the tolerance). Where the coarser run fails (RK4 past its stability), from a run at half
+// the step.
 double oblique_step_error(const ModalBasis& basis, const ImpactScene& scene, const ImpactResult& r) {
   if (!std::isfinite(r.step_error)) return r.step_error;
   const auto at = [&](double factor) {
@@ -209,10 +219,9 @@ double oblique_step_error(const ModalBasis& basis, const ImpactScene& scene, con
     else other.integrator.dt *= factor;
     return oblique_impact(basis, other);
   };
-  const ImpactResult twice = at(2);
-  double estimate = doubling_estimate(r, twice, scene.ball_speed);
-  if (std::isfinite(estimate)) estimate = std::max(estimate, doubling_estimate(twice, at(4), scene.ball_speed, 4));
-  else estimate = 4 * doubling_estimate(at(0.5), r, scene.ball_speed);  // the error at h is 4x that at h / 2
+  double estimate = doubling_pair(r, at, scene.ball_speed);
+  // The error at h from a run at h / 2: 4 times its own.
+  if (!std::isfinite(estimate)) estimate = 4 * doubling_estimate(at(0.5), r, scene.ball_speed);
   return std::max(r.step_error, estimate);
 }
 
@@ -225,21 +234,20 @@ double step_share(const ImpactScene& scene) {
 
 // Under a stated accuracy the normal collision's model chooses the step for the normal collision
 // alone (at 1e-5 the tangential contact erred up to 25x its share there): the step is halved
-// until the runs at twice and four times it agree within the share (doubling_estimate), and the
+// until the runs at twice and four times it agree within the share (doubling_pair), and the
 // result states the larger of the share and the estimate.
 constexpr int max_oblique_halvings = 8;
 
 ImpactResult within_step_share(const ModalBasis& basis, const ImpactScene& scene, ImpactResult r, double share) {
   for (int halvings = 0;; ++halvings) {
     const double h = r.step_used;
-    ImpactScene coarser = scene;
-    coarser.error_estimates = false;
-    coarser.checked_step = 2 * h;
-    const ImpactResult twice = oblique_impact(basis, coarser);
-    coarser.checked_step = 4 * h;
-    double estimate = doubling_estimate(r, twice, scene.ball_speed);
-    if (std::isfinite(estimate))  // as without an accuracy: two runs can agree by chance
-      estimate = std::max(estimate, doubling_estimate(twice, oblique_impact(basis, coarser), scene.ball_speed, 4));
+    const auto at = [&](double factor) {
+      ImpactScene coarser = scene;
+      coarser.error_estimates = false;
+      coarser.checked_step = factor * h;
+      return oblique_impact(basis, coarser);
+    };
+    const double estimate = doubling_pair(r, at, scene.ball_speed);
     if (estimate <= share || halvings == max_oblique_halvings) {
       if (scene.error_estimates || scene.accuracy > 0) {
         r.step_error = std::max(std::isnan(r.step_error) ? share : r.step_error, estimate);
