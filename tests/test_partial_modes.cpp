@@ -11,6 +11,7 @@
 
 #include "bat/banded_eigensolver.hpp"
 #include "bat/beam_system.hpp"
+#include "contact/mode_kernels.hpp"
 #include "n2000_scenes.hpp"
 #include "program.hpp"
 #include "selection_scale.hpp"
@@ -332,4 +333,38 @@ TEST_CASE("The Sturm counts find as many eigenvalues below a shift as the dense 
     CHECK(count_below(system, timoshenko, 2 * top * top) == full.count());
     CHECK(count_below(system, timoshenko, full.omega(2) * full.omega(2) / 2) == 2);
   }
+}
+
+TEST_CASE("Every vector path solves a partial basis bit for bit as SSE2 does", "[partial_modes]") {
+  // The Sturm counts (src/bat/sturm_kernels.inc) steer every bisection: a count one off on a path
+  // would move a bracket, its shift and so the mode. The tridiagonal form's counts (Timoshenko at
+  // its own slices; Euler-Bernoulli, whose mass is not diagonal) and the pencil's (many slices,
+  // few modes).
+  struct Solve {
+    std::string bat;
+    BeamTheory theory;
+    int slices, modes;
+  };
+  using detail::VectorPath;
+  const VectorPath chosen = detail::vector_path();
+  int compared = 0;
+  for (const Solve& c : {Solve{"r161", BeamTheory::timoshenko, 84, 60}, Solve{"r161", BeamTheory::timoshenko, 336, 30},
+                         Solve{"aluminium", BeamTheory::euler_bernoulli, 84, 40}}) {
+    INFO(c.bat << ", " << to_string(c.theory) << ", N = " << c.slices << ", " << c.modes << " modes");
+    const Bat bat = resample(load_bat(source_path("studies/bats/" + c.bat + ".toml")), c.slices);
+    const auto solve = [&] { return compute_modes(bat, c.theory, ModeRequest::lowest(c.modes)); };
+    REQUIRE(detail::use_vector_path(VectorPath::sse2));
+    const ModalBasis reference = solve();
+    REQUIRE_FALSE(reference.complete());
+    for (const VectorPath path : {VectorPath::avx2, VectorPath::avx512}) {
+      if (!detail::use_vector_path(path)) continue;
+      INFO("path " << detail::to_string(path));
+      const ModalBasis basis = solve();
+      CHECK(basis.omega == reference.omega);
+      CHECK(basis.vectors == reference.vectors);
+      ++compared;
+    }
+  }
+  detail::use_vector_path(chosen);
+  WARN(compared << " solves on wider paths compared with SSE2 on this processor");
 }

@@ -3,13 +3,14 @@
 #include <lapacke.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <random>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "bat/sturm_kernels.hpp"
 
 namespace sweetspot {
 
@@ -65,12 +66,11 @@ Tridiagonal tridiagonal(const BeamSystem& s, bool diagonal_mass) {
 
 // Sturm counts: how many eigenvalues lie below x (Sylvester's law of inertia, the count LAPACK's
 // bisection is built on). count(x) for one shift, counts(x) for eight in one pass: independent
-// recurrences, in SIMD registers, so that eight cost 1.3 times what one does (one is bound by its
-// divisions' latency). bound() is Gershgorin's bound on the eigenvalues' size.
-constexpr int shifts = 8;
+// recurrences, in the widest vector registers the processor has (sturm_kernels.inc), so that eight
+// cost little more than one does (one is bound by its divisions' latency). bound() is Gershgorin's
+// bound on the eigenvalues' size.
+constexpr int shifts = detail::sturm_shifts;
 using Shifts = Eigen::Array<double, shifts, 1>;
-
-Shifts negative(const Shifts& pivot) { return (pivot < 0).cast<double>(); }
 
 // On the tridiagonal T: the negative pivots of T - x I. In count, a zero pivot is made -tiny; in
 // counts it is left to IEEE arithmetic, as LAPACK's dlaneg does: its successor is -inf (counted) and
@@ -79,7 +79,10 @@ Shifts negative(const Shifts& pivot) { return (pivot < 0).cast<double>(); }
 // off-diagonal is kept above the underflow, so that 0 / 0 never happens.
 class TridiagonalCounts {
  public:
-  explicit TridiagonalCounts(const Tridiagonal& t) : t_(t) {}
+  explicit TridiagonalCounts(const Tridiagonal& t) : t_(t), e2_(t.e.size()) {
+    for (Eigen::Index i = 0; i < t.e.size(); ++i)
+      e2_[i] = std::max(t.e(i) * t.e(i), std::numeric_limits<double>::min());
+  }
   int count(double x) const {
     const int n = static_cast<int>(t_.d.size());
     const double tiny = std::numeric_limits<double>::min();
@@ -93,13 +96,8 @@ class TridiagonalCounts {
     return count;
   }
   Shifts counts(const Shifts& x) const {
-    Shifts pivot = t_.d(0) - x;
-    Shifts count = negative(pivot);
-    for (Eigen::Index i = 1; i < t_.d.size(); ++i) {
-      const double e2 = std::max(t_.e(i - 1) * t_.e(i - 1), std::numeric_limits<double>::min());
-      pivot = (t_.d(i) - x) - e2 / pivot;
-      count += negative(pivot);
-    }
+    Shifts count;
+    detail::tridiagonal_counts(t_.d.data(), e2_.data(), static_cast<int>(t_.d.size()), x.data(), count.data());
     return count;
   }
   double bound() const {
@@ -113,6 +111,7 @@ class TridiagonalCounts {
 
  private:
   const Tridiagonal& t_;
+  std::vector<double> e2_;  // the squared off-diagonal, kept above the underflow
 };
 
 // On Timoshenko's pencil itself: the negative eigenvalues of the pivots of the block LDL^T
@@ -132,34 +131,16 @@ class PencilCounts {
       Block& b = blocks_[i];
       const int y = 2 * i, phi = y + 1;
       b = {k(y, y), k(y, phi), k(phi, phi), s.mass.coeff(y, y), s.mass.coeff(phi, phi), {}};
-      if (i > 0)
-        b.coupling = {k(y - 2, y), k(y - 2, phi), k(y - 1, y), k(y - 1, phi)};
+      if (i > 0) {
+        const double coupling[4] = {k(y - 2, y), k(y - 2, phi), k(y - 1, y), k(y - 1, phi)};
+        std::copy(coupling, coupling + 4, b.coupling);
+      }
     }
   }
   int count(double x) const { return static_cast<int>(counts(Shifts::Constant(x))(0)); }
   Shifts counts(const Shifts& x) const {
-    const double tiny = std::numeric_limits<double>::min(), eps = std::numeric_limits<double>::epsilon();
-    Shifts p = Shifts::Zero(), q = Shifts::Zero(), r = Shifts::Zero(), inverse_det = Shifts::Zero();
-    Shifts count = Shifts::Zero();
-    for (const Block& b : blocks_) {
-      // S_(i-1)^(-1) = [r -q; -q p] / det, against B = [b00 b01; b10 b11] (rows: the previous
-      // slice's y and phi).
-      const auto& c = b.coupling;
-      const Shifts t00 = r * c[0] - q * c[2], t01 = r * c[1] - q * c[3];
-      const Shifts t10 = p * c[2] - q * c[0], t11 = p * c[3] - q * c[1];
-      const Shifts s00 = (c[0] * t00 + c[2] * t10) * inverse_det;
-      const Shifts s01 = (c[0] * t01 + c[2] * t11) * inverse_det;
-      const Shifts s11 = (c[1] * t01 + c[3] * t11) * inverse_det;
-      p = (b.yy - x * b.mass) - s00;
-      q = b.yphi - s01;
-      r = (b.phiphi - x * b.inertia) - s11;
-      Shifts det = p * r - q * q;
-      det += (det == 0).cast<double>() * (eps * (p * p + 2 * q * q + r * r) + tiny);
-      // A 2 x 2 pivot has one negative eigenvalue when its determinant is negative, two when it is
-      // positive and its trace negative.
-      count += negative(det) + 2 * ((det > 0) && (p + r < 0)).cast<double>();
-      inverse_det = det.inverse();
-    }
+    Shifts count;
+    detail::pencil_counts(blocks_.data(), slices_, x.data(), count.data());
     return count;
   }
   // Gershgorin's bound on M^(-1/2) K M^(-1/2): each row's diagonal and its entries' sizes.
@@ -183,10 +164,7 @@ class PencilCounts {
   }
 
  private:
-  struct Block {
-    double yy, yphi, phiphi, mass, inertia;
-    std::array<double, 4> coupling;  // K between the previous slice's (y, phi) and this one's
-  };
+  using Block = detail::PencilBlock;
   double mass(int dof) const { return dof % 2 ? blocks_[dof / 2].inertia : blocks_[dof / 2].mass; }
   int slices_;
   std::vector<Block> blocks_;

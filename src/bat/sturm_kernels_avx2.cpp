@@ -1,0 +1,6 @@
+// The kernels of sturm_kernels.inc for the avx2 path: compiled with its instruction set
+// (CMakeLists.txt) where the compiler builds for x86-64, left empty elsewhere.
+#ifdef SWEETSPOT_X86_DISPATCH
+#define SWEETSPOT_KERNEL_PATH avx2
+#include "bat/sturm_kernels.inc"
+#endif
