@@ -355,6 +355,10 @@ class MassProduct {
   VectorXd operator*(const Vector& x) const {
     return diagonal_.size() ? VectorXd(diagonal_.cwiseProduct(x)) : VectorXd(mass_ * x);
   }
+  template <class Matrix>
+  MatrixXd times(const Matrix& x) const {
+    return diagonal_.size() ? MatrixXd(diagonal_.asDiagonal() * x) : MatrixXd(mass_ * x);
+  }
 
  private:
   const Eigen::SparseMatrix<double>& mass_;
@@ -409,18 +413,19 @@ VectorXd eigenvector(ShiftedPencil& pencil, const MassProduct& mass, const Vecto
 }
 
 // Inverse iteration leaves two modes M-orthogonal only to eps w_max^2 over their gap, 5e-10 for
-// Euler-Bernoulli at N = 168 (its w_max grows as N^2): one Gram-Schmidt pass in the M inner
-// product, O(n k^2), makes the basis orthonormal to round-off.
-void orthonormalise(const MassProduct& mass, MatrixXd& vectors) {
-  // Modified Gram-Schmidt, each projection against M x_j (formed once per column).
-  MatrixXd mx(vectors.rows(), vectors.cols());
-  for (int k = 2; k < vectors.cols(); ++k) {
-    for (int j = 2; j < k; ++j) vectors.col(k) -= mx.col(j).dot(vectors.col(k)) * vectors.col(j);
-    mx.col(k) = mass * vectors.col(k);
-    const double norm = std::sqrt(vectors.col(k).dot(mx.col(k)));
-    vectors.col(k) /= norm;
-    mx.col(k) /= norm;
-  }
+// Euler-Bernoulli at N = 168 (its w_max grows as N^2). Cholesky QR in the M inner product makes
+// the basis orthonormal to round-off: X <- X R^(-1), R^T R = X^T M X. For a basis already that
+// close to orthonormal its Gram matrix is within 5e-10 of the identity, and one pass leaves an
+// error of order eps times its condition number squared (Y. Yamamoto et al., "Roundoff error
+// analysis of the CholeskyQR2 algorithm", ETNA 44, 306 (2015)). It is made of matrix products,
+// not Gram-Schmidt's column at a time. False if the Gram matrix is not positive definite (a basis
+// not close to orthonormal).
+bool orthonormalise(const MassProduct& mass, MatrixXd& vectors) {
+  auto modes = vectors.rightCols(vectors.cols() - 2);  // the rigid columns are set apart (modes.cpp)
+  const Eigen::LLT<MatrixXd> gram(modes.transpose() * mass.times(modes));
+  if (gram.info() != Eigen::Success) return false;
+  gram.matrixU().solveInPlace<Eigen::OnTheRight>(modes);
+  return true;
 }
 
 // The request's `count` eigenpairs (rigid ones included), bracketed by `counts`.
@@ -439,8 +444,7 @@ bool solve_lowest(const Counts& counts, int count, const BeamSystem& s, const Ei
   const VectorXd start = start_vector(dofs);
   for (int k = 2; k < count; ++k)
     vectors.col(k) = eigenvector(pencil, m, start, brackets[k - 2], k, omega_squared, vectors);
-  orthonormalise(m, vectors);
-  return true;
+  return orthonormalise(m, vectors);
 }
 
 // How many eigenpairs a request covers: the two rigid ones always (they lie at 0 however low the
@@ -451,15 +455,16 @@ int request_count(const Counts& counts, BandedRequest request) {
 }
 
 // Whether Timoshenko's counts on the pencil itself cost less than the tridiagonal reduction and its
-// counts. Each count on the pencil costs about three times one on the tridiagonal form, and
-// bracketing k eigenvalues takes about 3k passes, while the reduction costs O(n^2): the pencil
-// pays for few modes over many degrees of freedom. bench_partial_modes against the reduction alone
-// (c5b5f9c), in turns: 18 modes at N = 336 in 1.9 against 2.8-2.9 ms, at 1024 slices 6 against
-// 20; 29 and 40 modes at N = 336 2.9 and 3.9 against 3.5 and 4.1-4.6; for auto's 94 modes there
-// the reduction is as fast or faster. At N = 84 the two cost the same for 18 modes, and there the
-// results stay those of the reduction, bit for bit (both studies' datasets at their defaults).
+// counts. On the AVX2 path a count on the pencil costs about four times one on the tridiagonal
+// form, and bracketing k eigenvalues takes about 4k passes, while the reduction costs O(n^2): the
+// pencil pays for up to one mode per four degrees of freedom. Maple 271 in turns (medians of 7,
+// Zen 3): 90 modes at N = 336 in 8.8 against 12.8 ms, 120 in 12.2 against 14.2, 20 in 2.2 against
+// 4.1; at N = 168, 90 modes about even (4.6-5.8 against 5.0-6.1), 120 in 6.5-8.4 against 7.1-7.2;
+// at N = 84 the two cost about the same, and there the results stay those of the reduction. The
+// choice is the same on every vector path, so that all solve the same modes bit for bit (SSE2's
+// pencil counts cost more, and there the reduction would pay from about one mode in eight).
 constexpr int pencil_counts_from = 300;  // degrees of freedom
-bool pencil_counts_pay(int dofs, int count) { return dofs >= pencil_counts_from && dofs >= 8 * (count - 2); }
+bool pencil_counts_pay(int dofs, int count) { return dofs >= pencil_counts_from && dofs >= 4 * (count - 2); }
 
 }  // namespace
 
