@@ -119,8 +119,9 @@ struct ModeRequest {
 // What an eigen-solve may cost. The full (dense) solve's time grows as the cube of the slices
 // (Timoshenko, one core: 0.6 s at 512 slices, about 7 s at 1024, about 60 s at 2048 and 8 min at
 // 4096): every mode is solved up to max_full_solve_slices. A partial solve of K modes over n
-// degrees of freedom costs about n K^2 (its Gram-Schmidt pass; 8.9 s for 1000 modes at 4096
-// slices), so it may ask for as many as costs the full solve at that limit, (2 * 1024)^3 = n K^2.
+// degrees of freedom costs about n K^2 (its orthonormalisation; 3.3 s for 1000 modes at 4096
+// slices on a Zen 3 core, 9.0 s with the Gram-Schmidt pass it had when this limit was set), so it
+// may ask for as many as costs the full solve at that limit, (2 * 1024)^3 = n K^2.
 inline constexpr int max_full_solve_slices = 1024;
 // The most modes (rigid included) a solve over `dofs` degrees of freedom may ask: all of them
 // while the full solve is practical.
