@@ -38,9 +38,10 @@ inline constexpr double max_banded_share = 0.75;
 
 // Ascending eigenvalues and M-normalised eigenvectors (columns) of the request. The two rigid
 // modes come out as round-off; the caller replaces them by the exact ones. False, with nothing
-// solved, when the request covers more than max_banded_share of the modes (the dense solve is
-// then the cheaper) or more than request.most, or when the bisection cannot bracket an
-// eigenvalue apart from the others (eigenvalues equal to round-off): the dense solve then serves.
+// usable solved, when the request covers more than max_banded_share of the modes (the dense solve
+// is then the cheaper) or more than request.most, when the bisection cannot bracket an eigenvalue
+// apart from the others (eigenvalues equal to round-off), or when the vectors found cannot be
+// made M-orthonormal: the dense solve then serves.
 // `counted`, when given, receives how many eigenpairs the request covers (rigid ones included),
 // solved or not.
 bool solve_lowest(const BeamSystem& s, const Eigen::SparseMatrix<double>& mass, BandedRequest request,
