@@ -345,19 +345,17 @@ class ShiftedPencil {
   std::vector<int> pivots_;
 };
 
-// M applied to a vector: Timoshenko's lumped M by its diagonal, the same products as the sparse
-// product's (0 + m x) without its per-entry bookkeeping; Euler-Bernoulli's consistent M sparse.
+// M applied to a vector or a matrix's columns: Timoshenko's lumped M by its diagonal, the same
+// products as the sparse product's (0 + m x) without its per-entry bookkeeping; Euler-Bernoulli's
+// consistent M sparse.
 class MassProduct {
  public:
   MassProduct(const Eigen::SparseMatrix<double>& mass, bool diagonal)
       : mass_(mass), diagonal_(diagonal ? VectorXd(mass.diagonal()) : VectorXd()) {}
-  template <class Vector>
-  VectorXd operator*(const Vector& x) const {
-    return diagonal_.size() ? VectorXd(diagonal_.cwiseProduct(x)) : VectorXd(mass_ * x);
-  }
-  template <class Matrix>
-  MatrixXd times(const Matrix& x) const {
-    return diagonal_.size() ? MatrixXd(diagonal_.asDiagonal() * x) : MatrixXd(mass_ * x);
+  template <class Derived>
+  typename Derived::PlainObject operator*(const Eigen::MatrixBase<Derived>& x) const {
+    using Plain = typename Derived::PlainObject;
+    return diagonal_.size() ? Plain(diagonal_.asDiagonal() * x) : Plain(mass_ * x);
   }
 
  private:
@@ -422,7 +420,7 @@ VectorXd eigenvector(ShiftedPencil& pencil, const MassProduct& mass, const Vecto
 // not close to orthonormal).
 bool orthonormalise(const MassProduct& mass, MatrixXd& vectors) {
   auto modes = vectors.rightCols(vectors.cols() - 2);  // the rigid columns are set apart (modes.cpp)
-  const Eigen::LLT<MatrixXd> gram(modes.transpose() * mass.times(modes));
+  const Eigen::LLT<MatrixXd> gram(modes.transpose() * (mass * modes));
   if (gram.info() != Eigen::Success) return false;
   gram.matrixU().solveInPlace<Eigen::OnTheRight>(modes);
   return true;
